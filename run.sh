@@ -7,7 +7,9 @@ cd "$(dirname "${BASH_SOURCE[0]}")"
 
 BUILD_DIR=${BUILD_DIR:-build}
 JOBS=${JOBS:-$(nproc 2>/dev/null || echo 2)}
-PACKAGES=(cmake g++ libcgal-dev libeigen3-dev libsuitesparse-dev libboost-dev libbenchmark-dev ccache doxygen)
+# libopenblas0-pthread: CHOLMOD's supernodal factorisation runs its dense blocks through BLAS;
+# Debian's reference BLAS is several times slower.
+PACKAGES=(cmake g++ libcgal-dev libeigen3-dev libsuitesparse-dev libboost-dev libbenchmark-dev ccache doxygen python3 libopenblas0-pthread)
 
 usage() {
   echo "usage: $0 example|test" >&2

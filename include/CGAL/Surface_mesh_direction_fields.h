@@ -14,5 +14,7 @@
 #include <CGAL/Surface_mesh_direction_fields/homology_generators.h>
 #include <CGAL/Surface_mesh_direction_fields/holonomy.h>
 #include <CGAL/Surface_mesh_direction_fields/read_triangle_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/trivial_connection.h>
+#include <CGAL/Surface_mesh_direction_fields/field_singularities.h>
 
 #endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_H

@@ -28,6 +28,7 @@ public:
     DEGENERATE_FACE,     ///< a face with a zero-length edge or zero area, or lengths violating the triangle inequality
     INVALID_GEOMETRY,    ///< non-finite coordinates or lengths
     INVALID_CYCLE,       ///< a halfedge sequence that is not a cycle of the expected kind
+    INCONSISTENT_INDICES, ///< singularity indices of a closed component do not sum to its Euler characteristic
     INVALID_ARGUMENT,    ///< any other argument out of its documented range
     FILE_ERROR           ///< a file that cannot be read or parsed
   };
@@ -50,6 +51,7 @@ public:
       case DEGENERATE_FACE: return "degenerate_face";
       case INVALID_GEOMETRY: return "invalid_geometry";
       case INVALID_CYCLE: return "invalid_cycle";
+      case INCONSISTENT_INDICES: return "inconsistent_indices";
       case INVALID_ARGUMENT: return "invalid_argument";
       case FILE_ERROR: return "file_error";
     }

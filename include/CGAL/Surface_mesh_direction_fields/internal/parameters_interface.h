@@ -3,9 +3,8 @@
 // Each line: CGAL_SMDF_add_named_parameter(tag_type, tag_value, function_name)
 
 CGAL_SMDF_add_named_parameter(edge_length_t, edge_length, edge_length_map)
-CGAL_SMDF_add_named_parameter(holonomy_tolerance_t, holonomy_tolerance, holonomy_tolerance)
 CGAL_SMDF_add_named_parameter(symmetry_order_t, symmetry_order, symmetry_order)
 CGAL_SMDF_add_named_parameter(connection_weights_t, connection_weights, connection_weights)
 CGAL_SMDF_add_named_parameter(generator_turning_numbers_t, generator_turning_numbers, generator_turning_numbers)
-CGAL_SMDF_add_named_parameter(reference_solver_t, reference_solver, reference_solver)
-CGAL_SMDF_add_named_parameter(check_geometry_t, check_geometry, check_geometry)
+CGAL_SMDF_add_named_parameter(solver_t, solver, solver)
+CGAL_SMDF_add_named_parameter(cotangent_clamp_t, cotangent_clamp, cotangent_clamp)

@@ -1,0 +1,143 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_FIELD_SINGULARITIES_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_FIELD_SINGULARITIES_H
+
+#include <CGAL/Surface_mesh_direction_fields/errors.h>
+#include <CGAL/Surface_mesh_direction_fields/parameters.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Mesh_arrays.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/development.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/topology.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/tree_cotree.h>
+
+#include <cmath>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsTrivialConnections
+/// Topology of a face-based N-RoSy field, see field_singularities().
+template <typename TriangleMesh>
+struct Field_topology
+{
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  /// interior vertices with a non-zero index, with the index (a multiple of \f$1/N\f$)
+  std::vector<std::pair<vertex_descriptor, double>> singularities;
+  /// turning number of the field around each generator of tree_cotree_generators()
+  std::vector<double> generator_turning_numbers;
+  /// largest distance of a computed index or turning number to the nearest multiple of
+  /// \f$1/N\f$ before rounding (about \f$10^{-12}\f$ for a consistent field)
+  double max_rounding_error = 0;
+};
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsTrivialConnections
+/// Reads back the singularities of any face-based N-RoSy field given by one angle per face in
+/// the face frames (counterclockwise from `halfedge(f)`; the field's directions are that angle
+/// plus multiples of \f$2\pi/N\f$).
+///
+/// Across each edge the field's rotation relative to Levi-Civita transport is taken as the
+/// smallest one modulo \f$2\pi/N\f$, \f$\Delta_h \in (-\pi/N, \pi/N]\f$. The index of an interior
+/// vertex \f$v\f$ is \f$(K_v + \sum \Delta_h)/2\pi\f$ over its dual cell traversed
+/// counterclockwise, so a counterclockwise rotation of the field around \f$v\f$ counts
+/// positively (a source or a center has index +1, a saddle -1), and the turning number of a
+/// generator is \f$(\mathrm{hol}_{LC} + \sum \Delta_h)/2\pi\f$ with \f$\mathrm{hol}_{LC}\f$ in
+/// \f$(-\pi, \pi]\f$ — the conventions of `Trivial_connection`. The indices sum to \f$\chi\f$
+/// on closed components. A field can only show rotations below \f$\pi/N\f$ per edge, so an index
+/// whose connection turns more than that across some edge (e.g. index +20 on a coarse mesh)
+/// is visible in the connection (`Trivial_connection::holonomy()`) but not in the field.
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{symmetry_order}
+///     \cgalParamDescription{\f$N\f$} \cgalParamType{`int`} \cgalParamDefault{1}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_length_map}
+///     \cgalParamDescription{the intrinsic metric} \cgalParamType{readable edge property map}
+///     \cgalParamDefault{Euclidean lengths from `vertex_point_map`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+template <typename TriangleMesh, typename FaceAngleMap,
+          typename NamedParameters = parameters::Default_named_parameters>
+Field_topology<TriangleMesh> field_singularities(const TriangleMesh& tm, const FaceAngleMap& angles,
+                                                 const NamedParameters& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const int N = choose_parameter(get_parameter(np, internal_np::symmetry_order), 1);
+  if(N < 1)
+    throw Input_error(Input_error::INVALID_ARGUMENT, "symmetry order N must be at least 1");
+  internal::Mesh_arrays<TriangleMesh> m(tm, np);
+  internal::Topology_arrays topo(m);
+  std::vector<double> beta(m.number_of_faces());
+  for(std::size_t f = 0; f < beta.size(); ++f) {
+    beta[f] = double(get(angles, m.faces[f]));
+    if(!std::isfinite(beta[f]))
+      throw Input_error(Input_error::INVALID_ARGUMENT, "field angle of face " + std::to_string(f) + " is not finite");
+  }
+  const double period = 2 * CGAL_PI / N;
+  auto delta = [&](int h) {
+    return std::remainder(beta[m.face[h]] - beta[m.face[h ^ 1]] - internal::transport_increment(m, h), period);
+  };
+  std::vector<double> K;
+  internal::vertex_curvatures(m, K);
+  Field_topology<TriangleMesh> r;
+  auto round_to = [&](double s) {
+    const double k = s / (2 * CGAL_PI) * N;
+    r.max_rounding_error = (std::max)(r.max_rounding_error, std::abs(k - std::round(k)) / N);
+    return std::round(k) / N;
+  };
+  for(std::size_t v = 0; v < m.number_of_vertices(); ++v) {
+    if(m.is_isolated(int(v)) || m.is_boundary_vertex(int(v))) continue;
+    double s = K[v];
+    const int h0 = m.vertex_out[v];
+    int h = h0;
+    do { s += delta(h); h = m.ccw_out(h); } while(h != h0);
+    const double k = round_to(s);
+    if(k != 0) r.singularities.push_back(std::make_pair(m.vertices[v], k));
+  }
+  for(const auto& g : internal::tree_cotree(m, topo)) {
+    double s = internal::wrap_angle(internal::transport_along(m, g.dual));
+    for(int h : g.dual) s += delta(h);
+    r.generator_turning_numbers.push_back(round_to(s));
+  }
+  return r;
+}
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsTrivialConnections
+/// Converts 3D tangent vectors (one per face) to angles in the face frames: the angle of the
+/// projection of the vector on the face plane, counterclockwise from `halfedge(f)`, in
+/// \f$[0, 2\pi)\f$. Named parameter `vertex_point_map` (default: the mesh's points).
+template <typename TriangleMesh, typename FaceVectorMap, typename FaceAngleMap,
+          typename NamedParameters = parameters::Default_named_parameters>
+void vectors_to_face_angles(const TriangleMesh& tm, const FaceVectorMap& vectors, FaceAngleMap angles,
+                            const NamedParameters& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                              get_const_property_map(CGAL::vertex_point, tm));
+  for(auto f : faces(tm)) {
+    const auto h = halfedge(f, tm);
+    const auto& p0 = get(vpm, source(h, tm));
+    const auto& p1 = get(vpm, target(h, tm));
+    const auto& p2 = get(vpm, target(next(h, tm), tm));
+    const double e1[3] = {p1.x() - p0.x(), p1.y() - p0.y(), p1.z() - p0.z()};
+    const double e2[3] = {p2.x() - p0.x(), p2.y() - p0.y(), p2.z() - p0.z()};
+    const double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+    const double b[3] = {n[1] * e1[2] - n[2] * e1[1], n[2] * e1[0] - n[0] * e1[2], n[0] * e1[1] - n[1] * e1[0]};
+    const auto& v = get(vectors, f);
+    const double le = std::sqrt(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]);
+    const double lb = std::sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
+    const double x = (v[0] * e1[0] + v[1] * e1[1] + v[2] * e1[2]) / le;
+    const double y = (v[0] * b[0] + v[1] * b[1] + v[2] * b[2]) / lb;
+    double a = std::atan2(y, x);
+    if(a < 0) a += 2 * CGAL_PI;
+    put(angles, f, a);
+  }
+}
+
+} // namespace Surface_mesh_direction_fields
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_FIELD_SINGULARITIES_H

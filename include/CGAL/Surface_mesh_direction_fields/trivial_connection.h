@@ -1,0 +1,680 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_TRIVIAL_CONNECTION_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_TRIVIAL_CONNECTION_H
+
+#include <CGAL/Surface_mesh_direction_fields/errors.h>
+#include <CGAL/Surface_mesh_direction_fields/parameters.h>
+#include <CGAL/Surface_mesh_direction_fields/homology_generators.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Mesh_arrays.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/development.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/topology.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/tree_cotree.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/sparse_solvers.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Kernel_traits.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsTrivialConnections
+/// Weights of the objective \f$\|D x\|^2 = \sum_e x_e^2 / w_e\f$ of the trivial-connection solve.
+enum Connection_weights {
+  /// \f$w_e = \frac{1}{2}(\cot\alpha_e + \cot\beta_e)\f$ (Crane et al., section 2.5), computed from
+  /// the edge lengths; weights below `cotangent_clamp` times the mean positive weight are
+  /// raised to that floor.
+  COTAN_WEIGHTS,
+  /// \f$w_e = 1\f$ (\f$D = I\f$).
+  UNIT_WEIGHTS
+};
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsTrivialConnections
+/// Linear solver of the trivial-connection problem.
+enum Connection_solver {
+  /// Production path: CHOLMOD Cholesky factorisation of \f$A W A^\top\f$, kept for edits.
+  CHOLMOD_NORMAL_EQUATIONS,
+  /// Reference path: SuiteSparseQR minimum-norm solution of \f$(A W^{1/2})\,y = -b\f$ at every
+  /// solve (slow; for validation).
+  SPQR_MINIMUM_NORM
+};
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsTrivialConnections
+/// Outcome of `Trivial_connection::solve()`.
+struct Trivial_connection_status
+{
+  bool success = false;          ///< `false` if the factorisation or solve failed (see `message`)
+  std::string message;           ///< empty on success
+  double energy = 0;             ///< \f$\|Dx\|^2 = \sum_e x_e^2/w_e\f$
+  double residual = 0;           ///< \f$\max_i |(Ax + b)_i|\f$ over all constraint rows
+  double max_holonomy_error = 0; ///< max over all interior-vertex cycles and generators of the distance between the connection's holonomy and \f$2\pi\f$ times the prescribed index / turning number
+  double factor_seconds = 0;     ///< time spent building and factoring the system in this call (0 when reused)
+  double solve_seconds = 0;      ///< time of the solve in this call
+};
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsTrivialConnections
+/// Trivial connections with prescribed singularities (Crane, Desbrun, Schröder 2010), with a
+/// factorisation kept for real-time editing.
+///
+/// The unknown is one adjustment angle \f$x_e\f$ per interior edge. Carrying a direction across
+/// the edge of halfedge `h`, from `face(opposite(h))` into `face(h)`, changes its angle in the
+/// face frames by the Levi-Civita increment plus \f$\sigma_h x_e\f$, where \f$\sigma_h = +1\f$
+/// if `h == halfedge(edge(h))` and \f$-1\f$ otherwise (see `Intrinsic_holonomy` for the frames).
+/// The holonomy of the connection around a dual cycle \f$c\f$ is therefore
+/// \f$\mathrm{hol}_{LC}(c) + (Ax)_c\f$. The constraints \f$Ax = -b\f$ make it equal to
+/// \f$2\pi k_v\f$ around the dual cell of every interior vertex \f$v\f$, where
+/// \f$\mathrm{hol}_{LC}\f$ is the angle defect \f$K_v\f$ and \f$k_v\f$ the prescribed index, and
+/// \f$2\pi t_g\f$ around every generator \f$g\f$ of `tree_cotree_generators()`, where
+/// \f$\mathrm{hol}_{LC}\f$ is taken in \f$(-\pi, \pi]\f$ and \f$t_g\f$ is the prescribed turning
+/// number (default 0). Among all solutions the one closest to Levi-Civita,
+/// \f$\min \|Dx\|^2\f$, is returned: \f$x = W A^\top y\f$ with \f$(A W A^\top)\,y = -b\f$.
+///
+/// Indices and turning numbers must be multiples of \f$1/N\f$ for the symmetry order \f$N\f$
+/// (N-RoSy fields). On every closed component the indices must sum to the Euler
+/// characteristic. On a component with boundary no such condition applies: the dual cells of
+/// boundary vertices are left free and the boundary takes the remaining curvature (the "free
+/// boundary" of Crane et al., section 2.6 and Figure 8); the turning numbers of all boundary
+/// loops but one are generator turning numbers.
+///
+/// Only \f$b\f$ depends on indices, turning numbers and constraint angles, so after the first
+/// solve, changing them costs two triangular solves. Changing the set of constrained faces
+/// rebuilds and refactors the system at the next solve.
+/// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
+template <typename TriangleMesh>
+class Trivial_connection
+{
+public:
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::vertex_descriptor vertex_descriptor;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef typename GT::edge_descriptor edge_descriptor;
+  typedef typename GT::face_descriptor face_descriptor;
+
+  /// Precomputes the metric, topology, generators and their Levi-Civita holonomy.
+  /// Throws `Input_error` for invalid meshes or parameters.
+  /// \cgalNamedParamsBegin
+  ///   \cgalParamNBegin{edge_length_map}
+  ///     \cgalParamDescription{the intrinsic metric}
+  ///     \cgalParamType{a readable property map with `edge_descriptor` keys and `double` values}
+  ///     \cgalParamDefault{Euclidean lengths from `vertex_point_map`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{vertex_point_map}
+  ///     \cgalParamDescription{vertex positions: the default metric and the embedding of field_vectors()}
+  ///     \cgalParamType{a readable property map with `vertex_descriptor` keys and 3D point values}
+  ///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{symmetry_order}
+  ///     \cgalParamDescription{\f$N\f$: directions are identified up to rotations by \f$2\pi/N\f$}
+  ///     \cgalParamType{`int`, at least 1}
+  ///     \cgalParamDefault{1 (vector / direction fields); 2 line fields, 4 cross fields}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{connection_weights}
+  ///     \cgalParamDescription{the weights \f$w_e\f$ of the objective}
+  ///     \cgalParamType{`Connection_weights`}
+  ///     \cgalParamDefault{`COTAN_WEIGHTS`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{cotangent_clamp}
+  ///     \cgalParamDescription{cotan weights below this fraction of the mean positive weight are raised to it (non-positive cotangent sums occur on non-Delaunay edges)}
+  ///     \cgalParamType{`double` in (0, 1]}
+  ///     \cgalParamDefault{`1e-3`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{solver}
+  ///     \cgalParamDescription{the linear solver}
+  ///     \cgalParamType{`Connection_solver`}
+  ///     \cgalParamDefault{`CHOLMOD_NORMAL_EQUATIONS`}
+  ///   \cgalParamNEnd
+  /// \cgalNamedParamsEnd
+  template <typename NamedParameters = parameters::Default_named_parameters>
+  explicit Trivial_connection(const TriangleMesh& tm,
+                              const NamedParameters& np = parameters::default_values())
+    : tm_(tm), m_(tm, np), topo_(m_)
+  {
+    using parameters::choose_parameter;
+    using parameters::get_parameter;
+    N_ = choose_parameter(get_parameter(np, internal_np::symmetry_order), 1);
+    if(N_ < 1)
+      throw Input_error(Input_error::INVALID_ARGUMENT,
+                        "symmetry order N must be at least 1, got " + std::to_string(N_));
+    weights_ = choose_parameter(get_parameter(np, internal_np::connection_weights), COTAN_WEIGHTS);
+    clamp_ = choose_parameter(get_parameter(np, internal_np::cotangent_clamp), 1e-3);
+    if(!(clamp_ > 0 && clamp_ <= 1))
+      throw Input_error(Input_error::INVALID_ARGUMENT, "cotangent_clamp must be in (0, 1]");
+    solver_kind_ = choose_parameter(get_parameter(np, internal_np::solver), CHOLMOD_NORMAL_EQUATIONS);
+
+    typedef typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
+    VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                               get_const_property_map(CGAL::vertex_point, tm));
+    store_embedding(vpm);
+
+    gens_ = internal::tree_cotree(m_, topo_);
+    for(const auto& g : gens_) {
+      Homology_generator<TriangleMesh> r;
+      r.kind = g.handle ? HANDLE_GENERATOR : BOUNDARY_GENERATOR;
+      r.component = std::size_t(g.component);
+      for(int h : g.dual) r.dual_cycle.push_back(m_.halfedge_descriptor_of(h, tm));
+      for(int h : g.primal) r.primal_loop.push_back(m_.halfedge_descriptor_of(h, tm));
+      public_gens_.push_back(std::move(r));
+      z_.push_back(internal::wrap_angle(internal::transport_along(m_, g.dual)));
+    }
+    internal::vertex_curvatures(m_, K_);
+    index_.assign(m_.number_of_vertices(), 0.);
+    turning_.assign(gens_.size(), 0.);
+    x_.assign(m_.number_of_edges(), 0.);
+    compute_weights();
+  }
+
+  /// The symmetry order \f$N\f$.
+  int symmetry_order() const { return N_; }
+
+  /// The homology generators whose turning numbers can be prescribed, in the order of
+  /// `tree_cotree_generators()`.
+  const std::vector<Homology_generator<TriangleMesh>>& generators() const { return public_gens_; }
+
+  /// The Levi-Civita holonomy in \f$(-\pi,\pi]\f$ of generator `i`.
+  double generator_levi_civita_holonomy(std::size_t i) const { return z_.at(i); }
+
+  /// Prescribes the index of the interior vertex `v` (0 removes a singularity). Throws
+  /// `Input_error` if `v` is on the boundary or isolated, or if `index` is not a finite
+  /// multiple of \f$1/N\f$.
+  void set_singularity(vertex_descriptor v, double index)
+  {
+    const int vi = m_.vertex_index(v);
+    if(m_.is_isolated(vi) || m_.is_boundary_vertex(vi)) {
+      std::ostringstream os;
+      os << "vertex " << vi << " is " << (m_.is_isolated(vi) ? "isolated" : "on the boundary")
+         << "; singularities must be placed at interior vertices";
+      throw Input_error(Input_error::INVALID_ARGUMENT, os.str());
+    }
+    index_[vi] = check_fraction(index, "index of vertex " + std::to_string(vi));
+  }
+
+  /// Sets every vertex index to 0.
+  void clear_singularities() { std::fill(index_.begin(), index_.end(), 0.); }
+
+  /// The prescribed index of `v`.
+  double singularity_index(vertex_descriptor v) const { return index_[m_.vertex_index(v)]; }
+
+  /// Prescribes the turning number of generator `i` (a multiple of \f$1/N\f$; default 0).
+  void set_generator_turning_number(std::size_t i, double t)
+  {
+    if(i >= gens_.size())
+      throw Input_error(Input_error::INVALID_ARGUMENT,
+                        "generator " + std::to_string(i) + " does not exist (there are " +
+                        std::to_string(gens_.size()) + ")");
+    turning_[i] = check_fraction(t, "turning number of generator " + std::to_string(i));
+  }
+
+  /// Fixes the field direction in the given faces: pairs (face, angle in the face frame, in
+  /// radians, measured counterclockwise from `halfedge(f)`), satisfied exactly modulo
+  /// \f$2\pi/N\f$ (Crane et al., section 2.8). An empty range removes all constraints. If the
+  /// set of faces differs from the current one, the next solve() refactors the system.
+  template <typename FaceAngleRange>
+  void set_directional_constraints(const FaceAngleRange& constraints)
+  {
+    std::vector<int> faces;
+    std::vector<double> angles;
+    std::vector<char> seen(m_.number_of_faces(), 0);
+    for(const auto& c : constraints) {
+      const int f = m_.face_index(c.first);
+      const double a = double(c.second);
+      if(!std::isfinite(a))
+        throw Input_error(Input_error::INVALID_ARGUMENT,
+                          "constraint angle of face " + std::to_string(f) + " is not finite");
+      if(seen[f]++)
+        throw Input_error(Input_error::INVALID_ARGUMENT,
+                          "face " + std::to_string(f) + " is constrained twice");
+      faces.push_back(f);
+      angles.push_back(a);
+    }
+    if(faces != constrained_faces_) { constrained_faces_ = faces; factored_ = false; }
+    constraint_angles_ = angles;
+  }
+
+  /// Solves for the trivial connection closest to Levi-Civita. Throws `Input_error` with kind
+  /// `INCONSISTENT_INDICES` if the indices of a closed component do not sum to its Euler
+  /// characteristic; numerical failure is reported in the status.
+  Trivial_connection_status solve()
+  {
+    check_index_sums();
+    Trivial_connection_status st;
+    const auto t0 = std::chrono::steady_clock::now();
+    if(!factored_) {
+      build_system();
+      if(solver_kind_ == CHOLMOD_NORMAL_EQUATIONS) {
+        Sparse_matrix_int L = normal_matrix();
+        if(!chol_.factor(L, st.message)) return st;
+      }
+      factored_ = true;
+      st.factor_seconds = seconds_since(t0);
+    }
+    const auto t1 = std::chrono::steady_clock::now();
+    Eigen::VectorXd b = rhs();
+    Eigen::VectorXd xc;
+    if(solver_kind_ == CHOLMOD_NORMAL_EQUATIONS) {
+      const Eigen::VectorXd y = chol_.solve(-b);
+      xc = W_.asDiagonal() * (A_.transpose() * y);
+    } else {
+      const Eigen::VectorXd sw = W_.cwiseSqrt();
+      internal::Sparse_matrix M = (A_ * sw.asDiagonal()).template cast<double>();
+      Eigen::VectorXd y;
+      if(!internal::spqr_minimum_norm(M, -b, y, st.message)) return st;
+      xc = sw.asDiagonal() * y;
+    }
+    std::fill(x_.begin(), x_.end(), 0.);
+    for(std::size_t c = 0; c < edge_of_col_.size(); ++c) x_[edge_of_col_[c]] = xc[Eigen::Index(c)];
+    st.solve_seconds = seconds_since(t1);
+    st.energy = xc.cwiseProduct(xc).cwiseQuotient(W_).sum();
+    st.residual = rows_ ? (A_ * xc + b).cwiseAbs().maxCoeff() : 0.;
+    st.max_holonomy_error = holonomy_error();
+    st.success = std::isfinite(st.energy) && std::isfinite(st.residual);
+    if(!st.success) st.message = "the solve produced non-finite values";
+    solved_ = st.success;
+    return st;
+  }
+
+  /// The adjustment angle \f$\sigma_h x_e\f$ added when crossing the edge of `h` from
+  /// `face(opposite(h))` into `face(h)` (0 on boundary edges).
+  double adjustment_angle(halfedge_descriptor h) const
+  {
+    const int hi = m_.halfedge_index(h, tm_);
+    return (hi & 1) ? -x_[hi >> 1] : x_[hi >> 1];
+  }
+
+  /// The angle of the connection across the edge of `h`: the total rotation, in the face frames,
+  /// of a direction carried from `face(opposite(h))` into `face(h)` (Levi-Civita increment plus
+  /// adjustment angle).
+  double connection_angle(halfedge_descriptor h) const
+  {
+    const int hi = m_.halfedge_index(h, tm_);
+    return internal::transport_increment(m_, hi) + ((hi & 1) ? -x_[hi >> 1] : x_[hi >> 1]);
+  }
+
+  /// Holonomy of the computed connection around a dual cycle: its Levi-Civita holonomy taken in
+  /// \f$(-\pi, \pi]\f$ plus the sum of the adjustment angles (not wrapped). Around a generator it
+  /// is \f$2\pi\f$ times the prescribed turning number, and around the dual cell of an interior
+  /// vertex with \f$|K_v| < \pi\f$ it is \f$2\pi\f$ times the prescribed index.
+  template <typename HalfedgeRange>
+  double holonomy(const HalfedgeRange& dual_cycle) const
+  {
+    std::vector<int> c;
+    for(auto h : dual_cycle) c.push_back(m_.halfedge_index(h, tm_));
+    internal::check_dual_path(m_, c, true);
+    double s = internal::wrap_angle(internal::transport_along(m_, c));
+    for(int h : c) s += (h & 1) ? -x_[h >> 1] : x_[h >> 1];
+    return s;
+  }
+
+  /// Writes the face-based N-RoSy field that is parallel for the connection: one angle per face
+  /// in the face's frame (counterclockwise from `halfedge(f)`, in radians; the N directions are
+  /// this angle plus multiples of \f$2\pi/N\f$). Each component starts at its first constrained
+  /// face with the constraint angle, or at its first face with `start_angle`, and the field is
+  /// propagated along a breadth-first spanning tree of the faces by
+  /// \f$\beta_j = \beta_i + \text{increment} + \sigma_h x_e\f$ (Eq. 3); because the connection
+  /// is trivial the result does not depend on the tree. Linear time.
+  /// \pre solve() succeeded.
+  template <typename FaceAngleMap>
+  void field_angles(FaceAngleMap angles, double start_angle = 0) const
+  {
+    std::vector<double> beta;
+    propagate(beta, start_angle, -1);
+    for(std::size_t f = 0; f < beta.size(); ++f) put(angles, m_.faces[f], beta[f]);
+  }
+
+  /// As field_angles(), but the field of the component of `start` is propagated from `start`
+  /// with angle `start_angle` along a breadth-first tree rooted there (for other components as
+  /// in field_angles()). Directional constraints are ignored for that component.
+  template <typename FaceAngleMap>
+  void field_angles_from(face_descriptor start, double start_angle, FaceAngleMap angles) const
+  {
+    std::vector<double> beta;
+    propagate(beta, start_angle, m_.face_index(start));
+    for(std::size_t f = 0; f < beta.size(); ++f) put(angles, m_.faces[f], beta[f]);
+  }
+
+  /// Converts face angles (in the face frames) to unit 3D vectors in the plane of each face of the
+  /// embedding given by `vertex_point_map`: \f$\cos\beta\,e_1 + \sin\beta\,e_2\f$ with \f$e_1\f$
+  /// along `halfedge(f)` and \f$e_2 = n \times e_1\f$. When the metric is not the embedding's,
+  /// angles are mapped as they are.
+  /// \tparam FaceVectorMap writable, `face_descriptor` keys, values constructible from three doubles
+  template <typename FaceAngleMap, typename FaceVectorMap>
+  void angles_to_vectors(const FaceAngleMap& angles, FaceVectorMap vectors) const
+  {
+    typedef typename boost::property_traits<FaceVectorMap>::value_type Vector;
+    for(std::size_t f = 0; f < m_.number_of_faces(); ++f) {
+      const double beta = double(get(angles, m_.faces[f]));
+      const auto& fr = frames_[f];
+      const double c = std::cos(beta), s = std::sin(beta);
+      put(vectors, m_.faces[f], Vector(c * fr[0] + s * fr[3], c * fr[1] + s * fr[4], c * fr[2] + s * fr[5]));
+    }
+  }
+
+private:
+  typedef internal::Sparse_matrix_int Sparse_matrix_int;
+
+  static double seconds_since(std::chrono::steady_clock::time_point t)
+  {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  }
+
+  double check_fraction(double k, const std::string& what) const
+  {
+    const double kn = k * N_;
+    if(!std::isfinite(k) || std::abs(kn - std::round(kn)) > 1e-9 * std::max(1., std::abs(kn))) {
+      std::ostringstream os;
+      os.precision(17);
+      os << what << " is " << k << ", not a multiple of 1/N = 1/" << N_;
+      throw Input_error(Input_error::INVALID_ARGUMENT, os.str());
+    }
+    return std::round(kn) / N_;
+  }
+
+  template <typename VPM>
+  void store_embedding(VPM vpm)
+  {
+    frames_.resize(m_.number_of_faces());
+    for(std::size_t f = 0; f < m_.number_of_faces(); ++f) {
+      const int h0 = m_.face_halfedge[f], h1 = m_.next[h0];
+      double p[3][3];
+      const int vs[3] = {m_.source(h0), m_.target[h0], m_.target[h1]};
+      for(int i = 0; i < 3; ++i) {
+        const auto& q = get(vpm, m_.vertices[vs[i]]);
+        p[i][0] = CGAL::to_double(q.x()); p[i][1] = CGAL::to_double(q.y()); p[i][2] = CGAL::to_double(q.z());
+      }
+      double e1[3] = {p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]};
+      double e2[3] = {p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]};
+      double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+      auto normalize = [](double* v) {
+        const double l = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+        if(l > 0) { v[0] /= l; v[1] /= l; v[2] /= l; }
+      };
+      normalize(e1);
+      normalize(n);
+      const double b[3] = {n[1] * e1[2] - n[2] * e1[1], n[2] * e1[0] - n[0] * e1[2], n[0] * e1[1] - n[1] * e1[0]};
+      frames_[f] = {{e1[0], e1[1], e1[2], b[0], b[1], b[2]}};
+    }
+  }
+
+  void compute_weights()
+  {
+    col_of_edge_.assign(m_.number_of_edges(), -1);
+    edge_of_col_.clear();
+    std::vector<double> w;
+    for(std::size_t e = 0; e < m_.number_of_edges(); ++e) {
+      if(m_.is_border_edge(int(e))) continue;
+      col_of_edge_[e] = int(edge_of_col_.size());
+      edge_of_col_.push_back(int(e));
+      if(weights_ == UNIT_WEIGHTS) { w.push_back(1.); continue; }
+      double c = 0;
+      for(int h : {int(2 * e), int(2 * e + 1)}) {
+        const int hn = m_.next[h];
+        c += 0.5 * corner_cotangent(m_.edge_length(h), m_.edge_length(hn), m_.edge_length(m_.next[hn]));
+      }
+      w.push_back(c);
+    }
+    if(weights_ == COTAN_WEIGHTS) {
+      double sum = 0;
+      std::size_t count = 0;
+      for(double c : w) if(c > 0 && std::isfinite(c)) { sum += c; ++count; }
+      const double floor = clamp_ * (count ? sum / double(count) : 1.);
+      for(double& c : w) if(!(c >= floor)) c = floor;
+    }
+    W_ = Eigen::Map<Eigen::VectorXd>(w.data(), Eigen::Index(w.size()));
+  }
+
+  // Rows: interior vertices (minus one per closed component), generators, constraint paths.
+  void build_system()
+  {
+    row_of_vertex_.assign(m_.number_of_vertices(), -1);
+    std::vector<char> dropped(topo_.components.size(), 0);
+    int r = 0;
+    std::vector<Eigen::Triplet<double, int>> trip;
+    for(std::size_t v = 0; v < m_.number_of_vertices(); ++v) {
+      if(m_.is_isolated(int(v)) || m_.is_boundary_vertex(int(v))) continue;
+      const int c = topo_.vertex_component[v];
+      if(topo_.components[c].boundary_loops == 0 && !dropped[c]) { dropped[c] = 1; continue; }
+      row_of_vertex_[v] = r;
+      const int h0 = m_.vertex_out[v];
+      int h = h0;
+      do {
+        trip.emplace_back(r, col_of_edge_[h >> 1], (h & 1) ? -1. : 1.);
+        h = m_.ccw_out(h);
+      } while(h != h0);
+      ++r;
+    }
+    first_generator_row_ = r;
+    for(const auto& g : gens_) {
+      for(int h : g.dual) trip.emplace_back(r, col_of_edge_[h >> 1], (h & 1) ? -1. : 1.);
+      ++r;
+    }
+    first_constraint_row_ = r;
+    build_field_tree();
+    constraint_paths_.clear();
+    constraint_targets_.clear();
+    std::vector<int> constrained(m_.number_of_faces(), -1);
+    for(std::size_t i = 0; i < constrained_faces_.size(); ++i) constrained[constrained_faces_[i]] = int(i);
+    for(std::size_t i = 0; i < constrained_faces_.size(); ++i) {
+      int f = constrained_faces_[i];
+      if(parent_cross_[f] < 0) continue;   // a root
+      std::vector<int> path;
+      do {
+        const int up = parent_cross_[f] ^ 1;   // enters the parent
+        path.push_back(up);
+        f = m_.face[up];
+      } while(constrained[f] < 0);
+      for(int h : path) trip.emplace_back(r, col_of_edge_[h >> 1], (h & 1) ? -1. : 1.);
+      constraint_paths_.push_back(path);
+      constraint_targets_.push_back(std::make_pair(int(i), constrained[f]));
+      ++r;
+    }
+    rows_ = r;
+    A_.resize(r, Eigen::Index(edge_of_col_.size()));
+    A_.setFromTriplets(trip.begin(), trip.end());
+    A_.makeCompressed();
+  }
+
+  Sparse_matrix_int normal_matrix() const
+  {
+    Sparse_matrix_int AW = A_ * W_.asDiagonal();
+    Sparse_matrix_int L = AW * Sparse_matrix_int(A_.transpose());
+    return L.template triangularView<Eigen::Lower>();
+  }
+
+  Eigen::VectorXd rhs() const
+  {
+    Eigen::VectorXd b(rows_);
+    for(std::size_t v = 0; v < row_of_vertex_.size(); ++v)
+      if(row_of_vertex_[v] >= 0) b[row_of_vertex_[v]] = K_[v] - 2 * CGAL_PI * index_[v];
+    for(std::size_t g = 0; g < gens_.size(); ++g)
+      b[first_generator_row_ + Eigen::Index(g)] = z_[g] - 2 * CGAL_PI * turning_[g];
+    const double period = 2 * CGAL_PI / N_;
+    for(std::size_t i = 0; i < constraint_paths_.size(); ++i) {
+      const double gm = constraint_angles_[constraint_targets_[i].first];
+      const double gn = constraint_angles_[constraint_targets_[i].second];
+      const double wanted = gn - gm - internal::transport_along(m_, constraint_paths_[i]);
+      const double rot = std::remainder(wanted, period);   // smallest rotation mod 2pi/N
+      b[first_constraint_row_ + Eigen::Index(i)] = -rot;
+    }
+    return b;
+  }
+
+  void check_index_sums() const
+  {
+    std::vector<double> sum(topo_.components.size(), 0.);
+    for(std::size_t v = 0; v < index_.size(); ++v)
+      if(topo_.vertex_component[v] >= 0) sum[topo_.vertex_component[v]] += index_[v];
+    for(std::size_t c = 0; c < sum.size(); ++c) {
+      if(topo_.components[c].boundary_loops != 0) continue;
+      const double chi = double(topo_.components[c].euler_characteristic());
+      if(std::abs(sum[c] - chi) > 1e-9 * std::max(1., std::abs(chi))) {
+        std::ostringstream os;
+        os.precision(15);
+        os << "singularity indices sum to " << sum[c] << " but the Euler characteristic of component "
+           << c << " is " << chi;
+        throw Input_error(Input_error::INCONSISTENT_INDICES, os.str());
+      }
+    }
+  }
+
+  double connection_angle_index(int h) const
+  {
+    return internal::transport_increment(m_, h) + ((h & 1) ? -x_[h >> 1] : x_[h >> 1]);
+  }
+
+  // Independent check of the result: holonomy around every interior vertex and generator.
+  double holonomy_error() const
+  {
+    double err = 0;
+    for(std::size_t v = 0; v < m_.number_of_vertices(); ++v) {
+      if(m_.is_isolated(int(v)) || m_.is_boundary_vertex(int(v))) continue;
+      double s = K_[v];
+      const int h0 = m_.vertex_out[v];
+      int h = h0;
+      do { s += (h & 1) ? -x_[h >> 1] : x_[h >> 1]; h = m_.ccw_out(h); } while(h != h0);
+      err = std::max(err, std::abs(s - 2 * CGAL_PI * index_[v]));
+    }
+    for(std::size_t g = 0; g < gens_.size(); ++g) {
+      double s = z_[g];
+      for(int h : gens_[g].dual) s += (h & 1) ? -x_[h >> 1] : x_[h >> 1];
+      err = std::max(err, std::abs(s - 2 * CGAL_PI * turning_[g]));
+    }
+    return err;
+  }
+
+  // Breadth-first spanning forest of the faces, rooted at the first constrained face of each
+  // component (else its first face).
+  void build_field_tree()
+  {
+    const int nf = int(m_.number_of_faces());
+    parent_cross_.assign(nf, -1);
+    roots_.clear();
+    order_.clear();
+    order_.reserve(nf);
+    std::vector<char> visited(nf, 0);
+    auto grow = [&](int root) {
+      std::size_t head = order_.size();
+      visited[root] = 1;
+      order_.push_back(root);
+      roots_.push_back(root);
+      while(head < order_.size()) {
+        const int f = order_[head++];
+        int h = m_.face_halfedge[f];
+        for(int k = 0; k < 3; ++k, h = m_.next[h]) {
+          const int g = m_.face[h ^ 1];
+          if(g < 0 || visited[g]) continue;
+          visited[g] = 1;
+          parent_cross_[g] = h ^ 1;
+          order_.push_back(g);
+        }
+      }
+    };
+    for(int f : constrained_faces_) if(!visited[f]) grow(f);
+    for(int f = 0; f < nf; ++f) if(!visited[f]) grow(f);
+  }
+
+  void propagate(std::vector<double>& beta, double start_angle, int special_root) const
+  {
+    CGAL_precondition(solved_);
+    const int nf = int(m_.number_of_faces());
+    beta.assign(nf, 0.);
+    std::vector<int> constraint_of(nf, -1);
+    for(std::size_t i = 0; i < constrained_faces_.size(); ++i) constraint_of[constrained_faces_[i]] = int(i);
+    if(special_root < 0) {
+      // order_ lists parents before children
+      for(int f : order_) {
+        if(parent_cross_[f] < 0) {
+          beta[f] = constraint_of[f] >= 0 ? constraint_angles_[constraint_of[f]] : start_angle;
+          continue;
+        }
+        const int h = parent_cross_[f];
+        beta[f] = beta[m_.face[h ^ 1]] + connection_angle_index(h);
+      }
+      wrap_field(beta);
+      return;
+    }
+    propagate(beta, start_angle, -1);
+    const int comp = topo_.face_component[special_root];
+    std::vector<int> queue = {special_root};
+    std::vector<char> visited(nf, 0);
+    visited[special_root] = 1;
+    beta[special_root] = start_angle;
+    for(std::size_t head = 0; head < queue.size(); ++head) {
+      const int f = queue[head];
+      int h = m_.face_halfedge[f];
+      for(int k = 0; k < 3; ++k, h = m_.next[h]) {
+        const int g = m_.face[h ^ 1];
+        if(g < 0 || visited[g]) continue;
+        visited[g] = 1;
+        beta[g] = beta[f] + connection_angle_index(h ^ 1);
+        queue.push_back(g);
+      }
+    }
+    CGAL_USE(comp);
+    wrap_field(beta);
+  }
+
+  static void wrap_field(std::vector<double>& beta)
+  {
+    for(double& b : beta) { b = std::fmod(b, 2 * CGAL_PI); if(b < 0) b += 2 * CGAL_PI; }
+  }
+
+  const TriangleMesh& tm_;
+  internal::Mesh_arrays<TriangleMesh> m_;
+  internal::Topology_arrays topo_;
+  std::vector<internal::Generator_arrays> gens_;
+  std::vector<Homology_generator<TriangleMesh>> public_gens_;
+  std::vector<double> z_, K_, index_, turning_, x_;
+  std::vector<std::array<double, 6>> frames_;
+  int N_ = 1;
+  Connection_weights weights_ = COTAN_WEIGHTS;
+  double clamp_ = 1e-3;
+  Connection_solver solver_kind_ = CHOLMOD_NORMAL_EQUATIONS;
+
+  std::vector<int> col_of_edge_, edge_of_col_, row_of_vertex_;
+  Eigen::VectorXd W_;
+  Sparse_matrix_int A_;
+  Eigen::Index rows_ = 0, first_generator_row_ = 0, first_constraint_row_ = 0;
+  internal::Cholmod_factor chol_;
+  bool factored_ = false, solved_ = false;
+
+  std::vector<int> constrained_faces_;
+  std::vector<double> constraint_angles_;
+  std::vector<std::vector<int>> constraint_paths_;
+  std::vector<std::pair<int, int>> constraint_targets_;
+  std::vector<int> parent_cross_, order_, roots_;
+};
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsTrivialConnections
+/// Computes the trivial connection with the given singularities in one call (see
+/// `Trivial_connection`) and writes the adjustment angle of each edge, for crossing in the
+/// direction of `halfedge(e)` (0 on boundary edges), to `adjustment`.
+/// \tparam SingularityRange a range of `std::pair<vertex_descriptor, double>` (vertex, index)
+/// \tparam EdgeAngleMap a writable property map, `edge_descriptor` keys, `double` values
+/// Named parameters: those of the `Trivial_connection` constructor. Throws as
+/// `Trivial_connection::set_singularity()` and `Trivial_connection::solve()` do.
+template <typename TriangleMesh, typename SingularityRange, typename EdgeAngleMap,
+          typename NamedParameters = parameters::Default_named_parameters>
+Trivial_connection_status compute_trivial_connection(const TriangleMesh& tm,
+                                                     const SingularityRange& singularities,
+                                                     EdgeAngleMap adjustment,
+                                                     const NamedParameters& np = parameters::default_values())
+{
+  Trivial_connection<TriangleMesh> tc(tm, np);
+  for(const auto& s : singularities) tc.set_singularity(s.first, s.second);
+  Trivial_connection_status st = tc.solve();
+  if(st.success)
+    for(auto e : edges(tm)) put(adjustment, e, tc.adjustment_angle(halfedge(e, tm)));
+  return st;
+}
+
+} // namespace Surface_mesh_direction_fields
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_TRIVIAL_CONNECTION_H
