@@ -1,1 +1,785 @@
-int main(){return 0;}
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// smdf: command-line front end of the Surface_mesh_direction_fields package.
+//
+//   smdf <command> [options] MESH      one JSON object on stdout, or one error line on stderr
+//
+// Exit codes: 0 success, 1 the input cannot be processed, 2 usage error.
+// Vertex and face indices are 0-based in file order (read_triangle_mesh() keeps it).
+//
+// Adding a subcommand: write `Json run_<name>(const Args&)` and add one entry to `commands()`
+// (name, positional arguments, options, help text); parsing, --help and error reporting are
+// shared. Throw `Usage_error` for bad invocations and `Error` (or let `SMDF::Input_error`
+// escape, wrapped by `on_file()`) for bad input.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CGAL/Surface_mesh_direction_fields/errors.h>
+#include <CGAL/Surface_mesh_direction_fields/holonomy.h>
+#include <CGAL/Surface_mesh_direction_fields/homology_generators.h>
+#include <CGAL/Surface_mesh_direction_fields/intrinsic_geometry.h>
+#include <CGAL/Surface_mesh_direction_fields/parameters.h>
+#include <CGAL/Surface_mesh_direction_fields/read_triangle_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/topology.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <locale>
+#include <map>
+#include <new>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#ifndef SMDF_VERSION
+#define SMDF_VERSION "unknown"
+#endif
+
+namespace SMDF = CGAL::Surface_mesh_direction_fields;
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+typedef boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+typedef boost::graph_traits<Mesh>::halfedge_descriptor halfedge_descriptor;
+typedef boost::graph_traits<Mesh>::edge_descriptor edge_descriptor;
+typedef boost::graph_traits<Mesh>::face_descriptor face_descriptor;
+
+namespace {
+
+// ---- JSON ---------------------------------------------------------------------------------
+
+// A JSON value with insertion-ordered objects. Reals are written with 17 significant digits;
+// non-finite reals, which JSON cannot represent, are written as null.
+class Json
+{
+public:
+  Json() : type_(NUL) {}
+  Json(bool b) : type_(BOOL), bool_(b) {}
+  template <typename T,
+            typename std::enable_if<std::is_integral<T>::value && !std::is_same<T, bool>::value,
+                                    int>::type = 0>
+  Json(T v) : type_(std::is_signed<T>::value ? INT : UINT), int_(static_cast<long long>(v)),
+              uint_(static_cast<unsigned long long>(v)) {}
+  Json(double d) : type_(REAL), real_(d) {}
+  Json(const char* s) : type_(STRING), string_(s) {}
+  Json(std::string s) : type_(STRING), string_(std::move(s)) {}
+
+  static Json array() { Json j; j.type_ = ARRAY; return j; }
+  static Json object() { Json j; j.type_ = OBJECT; return j; }
+  // [a, b]: vertex pairs, 2D vectors, ...
+  template <typename A, typename B>
+  static Json pair(const A& a, const B& b) { Json j = array(); j.push_back(a); j.push_back(b); return j; }
+
+  // Appends to an array.
+  Json& push_back(Json v)
+  {
+    require(ARRAY);
+    items_.push_back(std::move(v));
+    return items_.back();
+  }
+  // Member of an object, appended (null) if absent.
+  Json& operator[](const std::string& key)
+  {
+    require(OBJECT);
+    for(std::size_t i = 0; i < keys_.size(); ++i)
+      if(keys_[i] == key) return items_[i];
+    keys_.push_back(key);
+    items_.emplace_back();
+    return items_.back();
+  }
+
+  void write(std::ostream& os) const
+  {
+    switch(type_) {
+      case NUL: os << "null"; break;
+      case BOOL: os << (bool_ ? "true" : "false"); break;
+      case INT: os << int_; break;
+      case UINT: os << uint_; break;
+      case REAL: write_real(os, real_); break;
+      case STRING: write_string(os, string_); break;
+      case ARRAY:
+        os << '[';
+        for(std::size_t i = 0; i < items_.size(); ++i) {
+          if(i) os << ',';
+          items_[i].write(os);
+        }
+        os << ']';
+        break;
+      case OBJECT:
+        os << '{';
+        for(std::size_t i = 0; i < items_.size(); ++i) {
+          if(i) os << ',';
+          write_string(os, keys_[i]);
+          os << ':';
+          items_[i].write(os);
+        }
+        os << '}';
+        break;
+    }
+  }
+
+  std::string str() const
+  {
+    std::ostringstream os;
+    os.imbue(std::locale::classic());
+    write(os);
+    return os.str();
+  }
+
+private:
+  enum Type { NUL, BOOL, INT, UINT, REAL, STRING, ARRAY, OBJECT };
+  Type type_;
+  bool bool_ = false;
+  long long int_ = 0;
+  unsigned long long uint_ = 0;
+  double real_ = 0;
+  std::string string_;
+  std::vector<Json> items_;        // array elements or object values
+  std::vector<std::string> keys_;  // object keys
+
+  void require(Type t) const
+  {
+    if(type_ != t) throw std::logic_error("Json: wrong value type for this operation");
+  }
+
+  static void write_real(std::ostream& os, double d)
+  {
+    if(!std::isfinite(d)) { os << "null"; return; }
+    const std::streamsize old = os.precision(17);
+    os << d;
+    os.precision(old);
+  }
+
+  // Length of the valid UTF-8 sequence starting at s[i], or 0 if it is not valid.
+  static std::size_t utf8_length(const std::string& s, std::size_t i)
+  {
+    const unsigned char c = static_cast<unsigned char>(s[i]);
+    std::size_t n;
+    unsigned int cp;
+    if(c < 0x80) return 1;
+    else if((c & 0xE0) == 0xC0) { n = 2; cp = c & 0x1F; }
+    else if((c & 0xF0) == 0xE0) { n = 3; cp = c & 0x0F; }
+    else if((c & 0xF8) == 0xF0) { n = 4; cp = c & 0x07; }
+    else return 0;
+    if(i + n > s.size()) return 0;
+    for(std::size_t k = 1; k < n; ++k) {
+      const unsigned char d = static_cast<unsigned char>(s[i + k]);
+      if((d & 0xC0) != 0x80) return 0;
+      cp = (cp << 6) | (d & 0x3F);
+    }
+    static const unsigned int min_cp[5] = {0, 0, 0x80, 0x800, 0x10000};
+    if(cp < min_cp[n] || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) return 0;
+    return n;
+  }
+
+  // Quotes and escapes a string; bytes that are not valid UTF-8 become U+FFFD.
+  static void write_string(std::ostream& os, const std::string& s)
+  {
+    os << '"';
+    for(std::size_t i = 0; i < s.size();) {
+      const unsigned char c = static_cast<unsigned char>(s[i]);
+      switch(c) {
+        case '"': os << "\\\""; ++i; continue;
+        case '\\': os << "\\\\"; ++i; continue;
+        case '\b': os << "\\b"; ++i; continue;
+        case '\f': os << "\\f"; ++i; continue;
+        case '\n': os << "\\n"; ++i; continue;
+        case '\r': os << "\\r"; ++i; continue;
+        case '\t': os << "\\t"; ++i; continue;
+        default: break;
+      }
+      if(c < 0x20 || c == 0x7F) {
+        static const char* hex = "0123456789abcdef";
+        os << "\\u00" << hex[c >> 4] << hex[c & 15];
+        ++i;
+        continue;
+      }
+      const std::size_t n = utf8_length(s, i);
+      if(n == 0) { os << "\\ufffd"; ++i; continue; }
+      os.write(s.data() + i, std::streamsize(n));
+      i += n;
+    }
+    os << '"';
+  }
+};
+
+// ---- Errors -------------------------------------------------------------------------------
+
+// Bad invocation: exit code 2.
+struct Usage_error : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+// Input that cannot be processed: exit code 1. The message is the whole error line without
+// the "smdf: error: " prefix, e.g. "mesh.off: face 3 ... [degenerate_face]".
+struct Error : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+Error file_error(const std::string& file, const std::string& message, const char* kind)
+{
+  return Error(file + ": " + message + " [" + kind + "]");
+}
+
+// Runs f(), turning a library Input_error into an Error that names `file`.
+template <typename F>
+auto on_file(const std::string& file, F f) -> decltype(f())
+{
+  try {
+    return f();
+  } catch(const SMDF::Input_error& e) {
+    std::string message = e.what();
+    const std::string quoted = "'" + file + "' ";   // "'f.obj' line 3: ..." -> "line 3: ..."
+    if(message.compare(0, quoted.size(), quoted) == 0) message.erase(0, quoted.size());
+    throw file_error(file, message, SMDF::Input_error::kind_name(e.kind()));
+  }
+}
+
+// Silences std::cerr while alive: CGAL's readers may print diagnostics of their own, and the
+// tool promises exactly one error line.
+class Silence_cerr
+{
+public:
+  Silence_cerr() : old_(std::cerr.rdbuf(sink_.rdbuf())) {}
+  ~Silence_cerr() { std::cerr.rdbuf(old_); }
+  Silence_cerr(const Silence_cerr&) = delete;
+  Silence_cerr& operator=(const Silence_cerr&) = delete;
+
+private:
+  std::ostringstream sink_;
+  std::streambuf* old_;
+};
+
+// ---- Command-line arguments ---------------------------------------------------------------
+
+struct Option_spec
+{
+  std::string name;        // without the leading "--"
+  std::string value_name;  // e.g. "FILE"; empty for a flag
+  std::string help;
+};
+
+// The parsed arguments of one subcommand.
+struct Args
+{
+  std::string command;
+  std::vector<std::string> positional;
+  std::map<std::string, std::string> options;  // name -> value ("" for flags)
+  bool help = false;
+
+  bool has(const std::string& name) const { return options.count(name) != 0; }
+
+  std::string value(const std::string& name, const std::string& fallback = "") const
+  {
+    auto it = options.find(name);
+    return it == options.end() ? fallback : it->second;
+  }
+
+  // A real option value; malformed or non-finite values are usage errors.
+  double real(const std::string& name, double fallback) const
+  {
+    if(!has(name)) return fallback;
+    const std::string& s = options.at(name);
+    char* end = nullptr;
+    const double d = s.empty() ? 0 : std::strtod(s.c_str(), &end);
+    if(s.empty() || *end != '\0' || !std::isfinite(d))
+      throw Usage_error("option --" + name + " expects a finite number, got '" + s + "'");
+    return d;
+  }
+
+  // An integer option value; malformed or out-of-range values are usage errors.
+  long integer(const std::string& name, long fallback) const
+  {
+    if(!has(name)) return fallback;
+    const std::string& s = options.at(name);
+    char* end = nullptr;
+    errno = 0;
+    const long v = s.empty() ? 0 : std::strtol(s.c_str(), &end, 10);
+    if(s.empty() || *end != '\0' || errno == ERANGE)
+      throw Usage_error("option --" + name + " expects an integer, got '" + s + "'");
+    return v;
+  }
+};
+
+// One subcommand: its name, arguments, help text and the function that runs it.
+struct Command
+{
+  std::string name;
+  std::vector<std::string> positionals;  // names; "[NAME]" marks an optional trailing one
+  std::vector<Option_spec> options;
+  std::string summary;                   // one line, for `smdf --help`
+  std::string description;               // for `smdf <command> --help`
+  Json (*run)(const Args&);
+};
+
+const std::vector<Command>& commands();
+
+std::string see_help(const std::string& command)
+{
+  return command.empty() ? " (see 'smdf --help')" : " (see 'smdf " + command + " --help')";
+}
+
+Args parse_args(const Command& cmd, const std::vector<std::string>& argv)
+{
+  Args a;
+  a.command = cmd.name;
+  bool only_positionals = false;
+  for(std::size_t i = 0; i < argv.size(); ++i) {
+    const std::string& arg = argv[i];
+    if(only_positionals || arg.size() < 2 || arg[0] != '-') {
+      a.positional.push_back(arg);
+      continue;
+    }
+    if(arg == "--") { only_positionals = true; continue; }
+    if(arg == "-h" || arg == "--help") { a.help = true; return a; }
+    if(arg.compare(0, 2, "--") != 0)
+      throw Usage_error("unknown option '" + arg + "'" + see_help(cmd.name));
+    const std::size_t eq = arg.find('=');
+    const std::string name = arg.substr(2, eq == std::string::npos ? std::string::npos : eq - 2);
+    auto spec = std::find_if(cmd.options.begin(), cmd.options.end(),
+                             [&](const Option_spec& o) { return o.name == name; });
+    if(spec == cmd.options.end())
+      throw Usage_error("unknown option '--" + name + "'" + see_help(cmd.name));
+    if(a.has(name))
+      throw Usage_error("option --" + name + " given twice");
+    if(spec->value_name.empty()) {
+      if(eq != std::string::npos)
+        throw Usage_error("option --" + name + " takes no value");
+      a.options[name] = "";
+    } else {
+      if(eq == std::string::npos && i + 1 >= argv.size())
+        throw Usage_error("option --" + name + " needs a value " + spec->value_name + see_help(cmd.name));
+      const std::string value = eq != std::string::npos ? arg.substr(eq + 1) : argv[++i];
+      if(value.empty())
+        throw Usage_error("option --" + name + " needs a non-empty value " + spec->value_name);
+      a.options[name] = value;
+    }
+  }
+  for(std::size_t k = 0; k < a.positional.size() && k < cmd.positionals.size(); ++k)
+    if(a.positional[k].empty())
+      throw Usage_error("empty argument " + cmd.positionals[k] + see_help(cmd.name));
+  std::size_t required = 0;
+  for(const std::string& p : cmd.positionals)
+    if(p.empty() || p[0] != '[') ++required;
+  if(a.positional.size() < required)
+    throw Usage_error("missing argument " + cmd.positionals[a.positional.size()] + see_help(cmd.name));
+  if(a.positional.size() > cmd.positionals.size())
+    throw Usage_error("unexpected argument '" + a.positional[cmd.positionals.size()] + "'" + see_help(cmd.name));
+  return a;
+}
+
+std::string synopsis(const Command& cmd)
+{
+  std::string s = "smdf " + cmd.name;
+  for(const std::string& p : cmd.positionals) s += " " + p;
+  for(const Option_spec& o : cmd.options)
+    s += " [--" + o.name + (o.value_name.empty() ? "" : " " + o.value_name) + "]";
+  return s;
+}
+
+void print_usage(std::ostream& os)
+{
+  os << "usage: smdf <command> [options] MESH\n"
+        "       smdf <command> --help\n"
+        "       smdf --version\n\n"
+        "Reads a triangle mesh (OFF, OBJ or PLY; it must be an orientable 2-manifold, possibly\n"
+        "with boundary and several components) and prints one JSON object on stdout. Vertex and\n"
+        "face indices are 0-based in file order. On failure prints one line to stderr and exits\n"
+        "with 1 (input that cannot be processed) or 2 (usage error).\n\n"
+        "commands:\n";
+  for(const Command& c : commands())
+    os << "  " << std::left << std::setw(14) << c.name << c.summary << "\n";
+}
+
+void print_command_usage(const Command& cmd, std::ostream& os)
+{
+  os << "usage: " << synopsis(cmd) << "\n\n" << cmd.description;
+  os << "\noptions:\n";
+  for(const Option_spec& o : cmd.options) {
+    const std::string head = "--" + o.name + (o.value_name.empty() ? "" : " " + o.value_name);
+    os << "  " << std::left << std::setw(18) << head << o.help << "\n";
+  }
+  os << "  " << std::left << std::setw(18) << "-h, --help" << "print this help and exit\n";
+}
+
+// ---- Helpers shared by subcommands --------------------------------------------------------
+
+class Stopwatch
+{
+public:
+  Stopwatch() : start_(clock::now()), lap_(start_) {}
+  // Seconds since the previous lap (or the start).
+  double lap()
+  {
+    const clock::time_point now = clock::now();
+    const double s = std::chrono::duration<double>(now - lap_).count();
+    lap_ = now;
+    return s;
+  }
+  double total() const { return std::chrono::duration<double>(clock::now() - start_).count(); }
+
+private:
+  typedef std::chrono::steady_clock clock;
+  clock::time_point start_, lap_;
+};
+
+std::size_t index(vertex_descriptor v) { return std::size_t(v); }
+
+// Reads and validates a mesh; errors name the file.
+SMDF::Polygon_soup_report load_mesh(const std::string& file, Mesh& mesh)
+{
+  return on_file(file, [&] {
+    Silence_cerr quiet;
+    return SMDF::read_triangle_mesh(file, mesh);
+  });
+}
+
+const char* kind_name(SMDF::Generator_kind k)
+{
+  return k == SMDF::HANDLE_GENERATOR ? "handle" : "boundary";
+}
+
+// Faces whose Euclidean edge lengths do not form a proper triangle: the same test as the
+// library's metric validation (is_valid_triangle() and relative area above 1e-14).
+std::size_t count_degenerate_faces(const Mesh& mesh)
+{
+  const auto len = SMDF::get_edge_length_map(mesh);
+  std::size_t n = 0;
+  for(face_descriptor f : faces(mesh)) {
+    const halfedge_descriptor h0 = halfedge(f, mesh), h1 = next(h0, mesh), h2 = next(h1, mesh);
+    const double l0 = get(len, edge(h0, mesh)), l1 = get(len, edge(h1, mesh)),
+                 l2 = get(len, edge(h2, mesh));
+    const double lmax = (std::max)(l0, (std::max)(l1, l2));
+    if(!SMDF::is_valid_triangle(l0, l1, l2) || SMDF::triangle_area(l0, l1, l2) <= 1e-14 * lmax * lmax)
+      ++n;
+  }
+  return n;
+}
+
+std::string shorten(const std::string& s, std::size_t n = 40)
+{
+  return s.size() <= n ? s : s.substr(0, n) + "...";
+}
+
+// A non-negative decimal integer without sign, or false.
+bool parse_index(const std::string& s, std::size_t& out)
+{
+  if(s.empty() || s.size() > 18 || !std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; }))
+    return false;
+  out = std::size_t(std::stoull(s));
+  return true;
+}
+
+typedef Mesh::Property_map<edge_descriptor, double> Edge_length_property;
+
+// Reads an edge-length file: one line `i j length` per edge of `mesh` (vertex indices in
+// either order); blank lines and lines starting with '#' are ignored. Every problem is an
+// Error naming the file and the line.
+Edge_length_property read_edge_lengths(const std::string& file, Mesh& mesh)
+{
+  std::ifstream in(file);
+  if(!in) throw file_error(file, "cannot open file", "file_error");
+  Edge_length_property lengths =
+    mesh.add_property_map<edge_descriptor, double>("e:smdf_length", 0.).first;
+  std::vector<std::size_t> given_on(num_edges(mesh), 0);   // line number per edge, 0 = missing
+  const std::size_t nv = num_vertices(mesh);
+  std::string line;
+  std::size_t line_no = 0;
+  auto fail = [&](const std::string& what) {
+    return file_error(file, "line " + std::to_string(line_no) + ": " + what, "file_error");
+  };
+  while(std::getline(in, line)) {
+    ++line_no;
+    std::istringstream is(line);
+    std::vector<std::string> tok;
+    for(std::string t; is >> t;) tok.push_back(t);
+    if(tok.empty() || tok[0][0] == '#') continue;
+    if(tok.size() != 3)
+      throw fail("expected 'i j length', got " + std::to_string(tok.size()) + " fields");
+    std::size_t ij[2];
+    for(int k = 0; k < 2; ++k) {
+      if(!parse_index(tok[k], ij[k]))
+        throw fail("'" + shorten(tok[k]) + "' is not a vertex index");
+      if(ij[k] >= nv)
+        throw fail("vertex " + tok[k] + " does not exist (the mesh has " + std::to_string(nv) + " vertices)");
+    }
+    const std::string pair = "(" + tok[0] + ", " + tok[1] + ")";
+    const auto h = halfedge(vertex_descriptor(Mesh::size_type(ij[0])),
+                            vertex_descriptor(Mesh::size_type(ij[1])), mesh);
+    if(!h.second)
+      throw fail("vertices " + tok[0] + " and " + tok[1] + " are not joined by an edge of the mesh");
+    const edge_descriptor e = edge(h.first, mesh);
+    if(given_on[std::size_t(e)] != 0)
+      throw fail("edge " + pair + " was already given on line " + std::to_string(given_on[std::size_t(e)]));
+    char* end = nullptr;
+    const double l = std::strtod(tok[2].c_str(), &end);
+    if(*end != '\0')
+      throw fail("'" + shorten(tok[2]) + "' is not a number");
+    if(!std::isfinite(l) || !(l > 0))
+      throw fail("the length of edge " + pair + " must be positive and finite, got " + shorten(tok[2]));
+    put(lengths, e, l);
+    given_on[std::size_t(e)] = line_no;
+  }
+  if(in.bad()) throw file_error(file, "read error", "file_error");
+  const std::size_t missing = std::size_t(std::count(given_on.begin(), given_on.end(), std::size_t(0)));
+  if(missing > 0) {
+    for(edge_descriptor e : edges(mesh))
+      if(given_on[std::size_t(e)] == 0) {
+        const halfedge_descriptor h = halfedge(e, mesh);
+        throw file_error(file, "no length for edge (" + std::to_string(index(source(h, mesh))) + ", " +
+                         std::to_string(index(target(h, mesh))) + "); " + std::to_string(missing) +
+                         " of " + std::to_string(num_edges(mesh)) + " edges are missing", "file_error");
+      }
+  }
+  return lengths;
+}
+
+// ---- info ---------------------------------------------------------------------------------
+
+Json run_info(const Args& args)
+{
+  const std::string& file = args.positional[0];
+  Mesh mesh;
+  const SMDF::Polygon_soup_report report = load_mesh(file, mesh);
+  const SMDF::Mesh_topology<Mesh> topo = on_file(file, [&] { return SMDF::mesh_topology(mesh); });
+
+  Json genus = Json::array();
+  for(const SMDF::Component_topology& c : topo.components) genus.push_back(c.genus);
+
+  Json out = Json::object();
+  out["file"] = file;
+  out["vertices"] = num_vertices(mesh);
+  out["edges"] = num_edges(mesh);
+  out["faces"] = num_faces(mesh);
+  out["components"] = topo.components.size();
+  out["boundary_loops"] = topo.boundary_loops.size();
+  out["euler_characteristic"] = topo.euler_characteristic();
+  out["genus"] = genus;
+  out["closed"] = topo.is_closed();
+  out["betti_1"] = topo.betti_1();
+  out["isolated_vertices"] = topo.isolated_vertices;
+  out["reoriented_faces"] = report.reoriented_polygons;
+  out["degenerate_faces"] = count_degenerate_faces(mesh);
+  return out;
+}
+
+// ---- generators ---------------------------------------------------------------------------
+
+Json run_generators(const Args& args)
+{
+  const std::string& file = args.positional[0];
+  Mesh mesh;
+  load_mesh(file, mesh);
+  const SMDF::Mesh_topology<Mesh> topo = on_file(file, [&] { return SMDF::mesh_topology(mesh); });
+  const std::vector<SMDF::Homology_generator<Mesh>> gens =
+    on_file(file, [&] { return SMDF::tree_cotree_generators(mesh); });
+
+  Json list = Json::array();
+  for(const SMDF::Homology_generator<Mesh>& g : gens) {
+    Json dual = Json::array();
+    for(halfedge_descriptor h : g.dual_cycle)
+      dual.push_back(Json::pair(index(source(h, mesh)), index(target(h, mesh))));
+    Json primal = Json::array();
+    for(halfedge_descriptor h : g.primal_loop) primal.push_back(index(source(h, mesh)));
+    Json j = Json::object();
+    j["kind"] = kind_name(g.kind);
+    j["component"] = g.component;
+    j["dual_edges"] = std::move(dual);
+    j["primal_loop"] = std::move(primal);
+    list.push_back(std::move(j));
+  }
+  Json out = Json::object();
+  out["file"] = file;
+  out["count"] = gens.size();
+  out["betti_1"] = topo.betti_1();
+  out["generators"] = std::move(list);
+  return out;
+}
+
+// ---- holonomy -----------------------------------------------------------------------------
+
+// Gauss-Bonnet and the holonomy of every generator for the metric given by `np`, read from
+// `metric_file` (errors of the metric, such as degenerate faces, name that file).
+template <typename NamedParameters>
+void holonomy_report(const std::string& file, const std::string& metric_file, const Mesh& mesh,
+                     const NamedParameters& np, Json& out, Json& timings, Stopwatch& clock)
+{
+  const SMDF::Mesh_topology<Mesh> topo = on_file(file, [&] { return SMDF::mesh_topology(mesh); });
+  const double total = on_file(metric_file, [&] { return SMDF::total_angle_defect(mesh, np); });
+  timings["curvature"] = clock.lap();
+  const SMDF::Intrinsic_holonomy<Mesh> holonomy =
+    on_file(metric_file, [&] { return SMDF::Intrinsic_holonomy<Mesh>(mesh, np); });
+  timings["precompute"] = clock.lap();
+  const std::vector<SMDF::Homology_generator<Mesh>> gens =
+    on_file(file, [&] { return SMDF::tree_cotree_generators(mesh); });
+  timings["generators"] = clock.lap();
+
+  Json list = Json::array();
+  for(const SMDF::Homology_generator<Mesh>& g : gens) {
+    const double lc = on_file(file, [&] { return holonomy.levi_civita_holonomy(g.dual_cycle); });
+    const SMDF::Rigid_motion_2 m = on_file(file, [&] { return holonomy.generalized_holonomy(g.dual_cycle); });
+    Json gh = Json::object();
+    gh["rotation"] = m.rotation;
+    gh["translation"] = Json::pair(m.translation.x(), m.translation.y());
+    Json j = Json::object();
+    j["kind"] = kind_name(g.kind);
+    j["component"] = g.component;
+    j["dual_cycle_length"] = g.dual_cycle.size();
+    j["levi_civita_holonomy"] = lc;
+    j["generalized_holonomy"] = std::move(gh);
+    list.push_back(std::move(j));
+  }
+  timings["holonomy"] = clock.lap();
+
+  const double two_pi_chi = 2 * CGAL_PI * double(topo.euler_characteristic());
+  out["euler_characteristic"] = topo.euler_characteristic();
+  out["total_angle_defect"] = total;
+  out["two_pi_chi"] = two_pi_chi;
+  out["gauss_bonnet_error"] = std::abs(total - two_pi_chi);
+  out["generators"] = std::move(list);
+}
+
+Json run_holonomy(const Args& args)
+{
+  Stopwatch clock;
+  const std::string& file = args.positional[0];
+  Json out = Json::object();
+  Json timings = Json::object();
+  Mesh mesh;
+  load_mesh(file, mesh);
+  timings["read"] = clock.lap();
+  out["file"] = file;
+  if(args.has("lengths")) {
+    const std::string lengths_file = args.value("lengths");
+    const Edge_length_property lengths = read_edge_lengths(lengths_file, mesh);
+    timings["lengths"] = clock.lap();
+    out["metric"] = "lengths";
+    out["lengths_file"] = lengths_file;
+    holonomy_report(file, lengths_file, mesh, SMDF::parameters::edge_length_map(lengths), out,
+                    timings, clock);
+  } else {
+    out["metric"] = "euclidean";
+    holonomy_report(file, file, mesh, SMDF::parameters::default_values(), out, timings, clock);
+  }
+  timings["total"] = clock.total();
+  out["timings"] = std::move(timings);
+  return out;
+}
+
+// ---- Dispatch table -----------------------------------------------------------------------
+
+const std::vector<Command>& commands()
+{
+  static const std::vector<Command> table = {
+    {"info", {"MESH"}, {},
+     "topology of a mesh: counts, components, boundary loops, genus",
+     "Prints {file, vertices, edges, faces, components, boundary_loops, euler_characteristic,\n"
+     "genus (one per component), closed, betti_1, isolated_vertices, reoriented_faces,\n"
+     "degenerate_faces}. euler_characteristic and betti_1 are summed over the components\n"
+     "(isolated vertices excluded); reoriented_faces counts faces flipped to make the\n"
+     "orientation consistent; degenerate_faces counts faces of zero area (relative 1e-14) in\n"
+     "the Euclidean metric, which info accepts but the geometric commands reject.\n",
+     run_info},
+    {"generators", {"MESH"}, {},
+     "tree-cotree homology generators (handle and boundary loops)",
+     "Prints {file, count, betti_1, generators: [{kind: \"handle\"|\"boundary\", component,\n"
+     "dual_edges, primal_loop}]}. dual_edges lists, in cycle order, the edges the dual cycle\n"
+     "crosses, each as the vertex pair [i, j] of the halfedge i->j it crosses from its right\n"
+     "face into its left face. primal_loop lists the vertices of a closed primal edge loop\n"
+     "(the first vertex is not repeated at the end).\n",
+     run_generators},
+    {"holonomy", {"MESH"},
+     {{"lengths", "FILE", "intrinsic metric: one line 'i j length' per edge"}},
+     "Gauss-Bonnet check and Levi-Civita / generalized holonomy of every generator",
+     "Prints {file, metric, euler_characteristic, total_angle_defect, two_pi_chi,\n"
+     "gauss_bonnet_error, generators: [{kind, component, dual_cycle_length,\n"
+     "levi_civita_holonomy, generalized_holonomy: {rotation, translation: [x, y]}}], timings}.\n"
+     "Angles are in radians, in (-pi, pi]; timings are in seconds. The metric is Euclidean\n"
+     "unless --lengths gives one length per edge (vertex indices in either order; blank lines\n"
+     "and lines starting with '#' are ignored). Faces of zero area are an error.\n",
+     run_holonomy},
+  };
+  return table;
+}
+
+const Command* find_command(const std::string& name)
+{
+  for(const Command& c : commands())
+    if(c.name == name) return &c;
+  return nullptr;
+}
+
+// One line on stderr, whatever the message contains.
+void print_error(const std::string& message)
+{
+  std::string line = "smdf: error: " + message;
+  std::replace(line.begin(), line.end(), '\n', ' ');
+  std::replace(line.begin(), line.end(), '\r', ' ');
+  std::cerr << line << std::endl;
+}
+
+int run(const std::vector<std::string>& argv)
+{
+  if(argv.empty()) throw Usage_error("missing command" + see_help(""));
+  const std::string& first = argv[0];
+  if(first == "-h" || first == "--help") { print_usage(std::cout); return EXIT_SUCCESS; }
+  if(first == "--version") { std::cout << "smdf " << SMDF_VERSION << "\n"; return EXIT_SUCCESS; }
+  if(first == "help") {
+    if(argv.size() == 1) { print_usage(std::cout); return EXIT_SUCCESS; }
+    const Command* cmd = find_command(argv[1]);
+    if(cmd == nullptr) throw Usage_error("unknown command '" + argv[1] + "'" + see_help(""));
+    if(argv.size() > 2) throw Usage_error("unexpected argument '" + argv[2] + "'" + see_help(""));
+    print_command_usage(*cmd, std::cout);
+    return EXIT_SUCCESS;
+  }
+  const Command* cmd = find_command(first);
+  if(cmd == nullptr) {
+    if(first.size() > 1 && first[0] == '-') throw Usage_error("unknown option '" + first + "'" + see_help(""));
+    throw Usage_error("unknown command '" + first + "'" + see_help(""));
+  }
+  const Args args = parse_args(*cmd, std::vector<std::string>(argv.begin() + 1, argv.end()));
+  if(args.help) { print_command_usage(*cmd, std::cout); return EXIT_SUCCESS; }
+
+  const std::string json = cmd->run(args).str();   // fully built before anything is printed
+  std::cout << json << '\n' << std::flush;
+  if(!std::cout) throw Error("cannot write to standard output");
+  return EXIT_SUCCESS;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  std::cout.imbue(std::locale::classic());
+  try {
+    return run(std::vector<std::string>(argv + 1, argv + argc));
+  } catch(const Usage_error& e) {
+    print_error(e.what());
+    return 2;
+  } catch(const Error& e) {
+    print_error(e.what());
+  } catch(const SMDF::Input_error& e) {
+    print_error(std::string(e.what()) + " [" + SMDF::Input_error::kind_name(e.kind()) + "]");
+  } catch(const std::bad_alloc&) {
+    print_error("out of memory");
+  } catch(const std::exception& e) {
+    print_error(std::string("internal error: ") + e.what());
+  } catch(...) {
+    print_error("internal error: unknown exception");
+  }
+  return EXIT_FAILURE;
+}

@@ -1,0 +1,460 @@
+#!/usr/bin/env python3
+# Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+# SPDX-License-Identifier: LGPL-3.0-or-later
+"""Developer test of the smdf command-line tool (python3 standard library only).
+
+usage: test_smdf.py SMDF SHARED_DATA_DIR [--torus OFF] [--part all|torus|shared]
+
+Part "torus" runs every subcommand on data/torus.off and checks invariants (topology,
+generator cycles against the faces of the file, Gauss-Bonnet, holonomy under a scaled metric)
+and the error behaviour (one stderr line, nothing on stdout, exit 1 or 2).
+Part "shared" runs `info` on the meshes of SHARED_DATA_DIR/MANIFEST.tsv and compares with the
+manifest, `generators` on meshes with handles or boundary, and checks the documented failures;
+it exits 77 (skipped) when SHARED_DATA_DIR is absent.
+Prints one line per check and "N passed, N failed"; exits 1 on failure.
+"""
+
+import argparse
+import csv
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+
+SKIP = 77
+TWO_PI = 2 * math.pi
+
+# Bad meshes of the manifest and the error kind smdf must report for them.
+BAD_MESHES = {
+    "cow_c3d.obj": "non_manifold_vertex",
+    "hourglass_ico_gc.obj": "non_manifold_vertex",
+    "teapot_c3d.obj": "non_manifold_vertex",
+    "bunny_trimesh.off": "non_manifold_edge",
+    "snowden_lo_npm.off": "non_manifold_edge",
+    "dragon_vrip_res3_npm.off": "non_manifold_edge",
+    "moebius_gc.obj": "non_orientable",
+    "wallhole_trimesh.obj": "not_triangle_mesh",
+    "horse_quad_igltut.obj": "not_triangle_mesh",
+}
+TOO_LARGE = {"dragon_vrip_npm.off"}   # 32 MB: keeps the test fast
+# Meshes whose holonomy is also computed (Gauss-Bonnet and rotation agreement).
+HOLONOMY_MESHES = ["torus_ddg.obj", "double-torus_jnd.off", "punctured-torus_bff.obj",
+                   "holes_cgal.off", "stanford-bunny_c3d.obj", "soup_trimesh.off"]
+
+
+class Checker:
+    def __init__(self):
+        self.passed = 0
+        self.failed = 0
+
+    def check(self, ok, what):
+        if ok:
+            self.passed += 1
+            print("ok: " + what)
+        else:
+            self.failed += 1
+            print("FAILED: " + what)
+        return ok
+
+    def finish(self, skipped_reason=None):
+        print("%d passed, %d failed" % (self.passed, self.failed))
+        if self.failed:
+            return 1
+        if skipped_reason:
+            print("SKIPPED: " + skipped_reason)
+            return SKIP
+        return 0
+
+
+class Smdf:
+    def __init__(self, exe, checker):
+        self.exe = exe
+        self.c = checker
+
+    def run(self, args):
+        try:
+            p = subprocess.run([self.exe] + list(args), stdout=subprocess.PIPE,
+                               stderr=subprocess.PIPE, timeout=600)
+        except subprocess.TimeoutExpired:
+            return None, b"", b"timeout"
+        return p.returncode, p.stdout, p.stderr
+
+    def json(self, args, label=None):
+        """Runs a command that must succeed with one JSON object on stdout; returns it or None."""
+        label = label or "smdf " + " ".join(args)
+        rc, out, err = self.run(args)
+        text = out.decode("utf-8", "replace")
+        if not self.c.check(rc == 0 and not err, "%s exits 0 silently (rc=%s, stderr=%r)"
+                            % (label, rc, err.decode("utf-8", "replace")[:300])):
+            return None
+        try:
+            doc = json.loads(out.decode("utf-8"), parse_constant=lambda s: float("nan"))
+        except (ValueError, UnicodeDecodeError) as e:
+            self.c.check(False, "%s prints valid JSON (%s)" % (label, e))
+            return None
+        ok = isinstance(doc, dict) and text.count("\n") == 1 and text.endswith("\n")
+        self.c.check(ok, "%s prints one JSON object on one line" % label)
+        return doc if ok else None
+
+    def error(self, args, label, rc_expected=None, contains=None):
+        """Runs a command that must fail: positive exit code (no signal), nothing on stdout,
+        exactly one stderr line starting with 'smdf: error: '."""
+        rc, out, err = self.run(args)
+        lines = err.decode("utf-8", "replace").splitlines()
+        msg = lines[0] if lines else ""
+        ok = (rc is not None and rc > 0 and not out and len(lines) == 1 and err.endswith(b"\n")
+              and msg.startswith("smdf: error: "))
+        if rc_expected is not None:
+            ok = ok and rc == rc_expected
+        if contains is not None:
+            ok = ok and all(s in msg for s in ([contains] if isinstance(contains, str) else contains))
+        self.c.check(ok, "%s fails cleanly (rc=%s, stdout=%d bytes, stderr=%r)"
+                     % (label, rc, len(out), err.decode("utf-8", "replace")[:300]))
+        return msg
+
+
+def read_off(path):
+    with open(path) as f:
+        tokens = []
+        for line in f:
+            line = line.split("#", 1)[0]
+            tokens += line.split()
+    assert tokens[0] == "OFF"
+    nv, nf = int(tokens[1]), int(tokens[2])
+    pos = 4
+    verts = []
+    for _ in range(nv):
+        verts.append(tuple(float(t) for t in tokens[pos:pos + 3]))
+        pos += 3
+    faces = []
+    for _ in range(nf):
+        n = int(tokens[pos])
+        faces.append(tuple(int(t) for t in tokens[pos + 1:pos + 1 + n]))
+        pos += 1 + n
+    return verts, faces
+
+
+def angle_diff(a, b):
+    """|a - b| modulo 2 pi."""
+    d = math.fmod(a - b, TWO_PI)
+    return min(abs(d), TWO_PI - abs(d))
+
+
+def is_number(x):
+    return isinstance(x, (int, float)) and not isinstance(x, bool) and math.isfinite(x)
+
+
+# ---- data/torus.off --------------------------------------------------------------------------
+
+def test_torus(smdf, c, torus, tmp):
+    verts, faces = read_off(torus)
+    # directed edge -> face; the file is consistently oriented (checked: reoriented_faces == 0),
+    # so the face left of the halfedge i->j is the one that contains i->j
+    left = {}
+    for f, (a, b, d) in enumerate(faces):
+        for i, j in ((a, b), (b, d), (d, a)):
+            left[(i, j)] = f
+    edges = sorted({(min(i, j), max(i, j)) for (i, j) in left})
+
+    # info
+    info = smdf.json(["info", torus])
+    if info:
+        expected = {"vertices": len(verts), "edges": len(edges), "faces": len(faces),
+                    "components": 1, "boundary_loops": 0, "euler_characteristic": 0,
+                    "genus": [1], "closed": True, "betti_1": 2, "isolated_vertices": 0,
+                    "reoriented_faces": 0, "degenerate_faces": 0}
+        for k, v in expected.items():
+            c.check(info.get(k) == v, "torus info %s = %r (got %r)" % (k, v, info.get(k)))
+
+    # generators
+    gens = smdf.json(["generators", torus])
+    if gens:
+        g = gens.get("generators", [])
+        c.check(gens.get("count") == 2 == len(g) and gens.get("betti_1") == 2,
+                "torus generators: count 2 == betti_1")
+        c.check(all(x.get("kind") == "handle" and x.get("component") == 0 for x in g),
+                "torus generators are handles of component 0")
+        for n, x in enumerate(g):
+            dual = [tuple(e) for e in x.get("dual_edges", [])]
+            loop = x.get("primal_loop", [])
+            c.check(len(dual) > 0 and all(e in left and (e[1], e[0]) in left for e in dual),
+                    "torus generator %d: every dual edge is an interior mesh edge" % n)
+            ok = all(e in left and (e[1], e[0]) in left for e in dual)
+            # crossing i->j goes from the face right of it (contains j->i) into the left one
+            chain = ok and all(left[dual[k]] == left[(dual[(k + 1) % len(dual)][1],
+                                                      dual[(k + 1) % len(dual)][0])]
+                               for k in range(len(dual)))
+            c.check(chain, "torus generator %d: consecutive dual edges share a face, the cycle "
+                           "closes, crossings go right face -> left face" % n)
+            c.check(len(set(left[e] for e in dual)) == len(dual) if ok else False,
+                    "torus generator %d: the dual cycle is simple" % n)
+            loop_edges = [(loop[k], loop[(k + 1) % len(loop)]) for k in range(len(loop))]
+            c.check(len(loop) >= 3 and all(e in left for e in loop_edges),
+                    "torus generator %d: primal loop is a closed edge loop" % n)
+            shared = {(min(i, j), max(i, j)) for i, j in dual} & \
+                     {(min(i, j), max(i, j)) for i, j in loop_edges}
+            c.check(len(shared) == 1,
+                    "torus generator %d: dual cycle and primal loop share exactly one edge" % n)
+        if len(g) == 2:
+            # algebraic intersection numbers dual_a . primal_b: independent generators give
+            # a non-singular matrix
+            def intersection(a, b):
+                loop = b["primal_loop"]
+                s = 0
+                for k in range(len(loop)):
+                    u, v = loop[k], loop[(k + 1) % len(loop)]
+                    for i, j in a["dual_edges"]:
+                        s += 1 if (i, j) == (u, v) else -1 if (i, j) == (v, u) else 0
+                return s
+            m = [[intersection(a, b) for b in g] for a in g]
+            det = m[0][0] * m[1][1] - m[0][1] * m[1][0]
+            c.check(abs(det) == 1, "torus generators are independent: intersection matrix %r" % m)
+
+    # holonomy (Euclidean metric)
+    hol = smdf.json(["holonomy", torus])
+    if hol:
+        c.check(is_number(hol.get("gauss_bonnet_error")) and hol["gauss_bonnet_error"] < 1e-9,
+                "torus Gauss-Bonnet error %r < 1e-9" % hol.get("gauss_bonnet_error"))
+        c.check(hol.get("two_pi_chi") == 0 and abs(hol.get("total_angle_defect", 1)) < 1e-9,
+                "torus total angle defect ~ 2 pi chi = 0")
+        hg = hol.get("generators", [])
+        c.check(len(hg) == 2 and all(x.get("kind") == "handle" for x in hg),
+                "torus holonomy: 2 handle generators")
+        for n, x in enumerate(hg):
+            lc = x.get("levi_civita_holonomy")
+            gh = x.get("generalized_holonomy", {})
+            t = gh.get("translation")
+            c.check(is_number(lc) and -math.pi < lc <= math.pi,
+                    "torus generator %d: Levi-Civita holonomy %r in (-pi, pi]" % (n, lc))
+            c.check(is_number(gh.get("rotation")) and angle_diff(gh["rotation"], lc) < 1e-9,
+                    "torus generator %d: generalized rotation = Levi-Civita holonomy" % n)
+            c.check(isinstance(t, list) and len(t) == 2 and all(is_number(v) for v in t),
+                    "torus generator %d: translation is a 2-vector" % n)
+        timings = hol.get("timings", {})
+        c.check(isinstance(timings, dict) and timings and
+                all(is_number(v) and v >= 0 for v in timings.values()),
+                "torus holonomy timings are non-negative numbers")
+
+    # holonomy with --lengths: the Euclidean lengths scaled by 2 (angles are unchanged,
+    # translations double); vertex order alternates, with a comment and a blank line
+    def length(e):
+        p, q = verts[e[0]], verts[e[1]]
+        return math.sqrt(sum((a - b) ** 2 for a, b in zip(p, q)))
+    scaled = os.path.join(tmp, "torus_x2.txt")
+    with open(scaled, "w") as f:
+        f.write("# Euclidean lengths of data/torus.off, times 2\n\n")
+        for k, e in enumerate(edges):
+            i, j = e if k % 2 == 0 else (e[1], e[0])
+            f.write("%d %d %r\n" % (i, j, 2 * length(e)))
+    hol2 = smdf.json(["holonomy", torus, "--lengths", scaled], "smdf holonomy torus --lengths x2")
+    if hol and hol2:
+        c.check(hol2.get("gauss_bonnet_error", 1) < 1e-9, "scaled metric: Gauss-Bonnet error < 1e-9")
+        a, b = hol.get("generators", []), hol2.get("generators", [])
+        c.check(len(a) == len(b) == 2, "scaled metric: same number of generators")
+        for n, (x, y) in enumerate(zip(a, b)):
+            c.check(angle_diff(x["levi_civita_holonomy"], y["levi_civita_holonomy"]) < 1e-9,
+                    "scaled metric: generator %d Levi-Civita holonomy unchanged (%r vs %r)"
+                    % (n, x["levi_civita_holonomy"], y["levi_civita_holonomy"]))
+            gx, gy = x["generalized_holonomy"], y["generalized_holonomy"]
+            c.check(angle_diff(gx["rotation"], gy["rotation"]) < 1e-9,
+                    "scaled metric: generator %d generalized rotation unchanged" % n)
+            c.check(all(abs(2 * u - v) < 1e-9 * max(1, abs(v))
+                        for u, v in zip(gx["translation"], gy["translation"])),
+                    "scaled metric: generator %d translation doubles" % n)
+    c.check(smdf.json(["holonomy", "--lengths=" + scaled, torus], "smdf holonomy --lengths=FILE torus")
+            is not None, "--lengths=FILE form accepted")
+
+    # malformed length files: each error names the line
+    good = ["%d %d %r" % (e[0], e[1], length(e)) for e in edges]
+    non_edge = next((0, j) for j in range(1, len(verts)) if (0, j) not in left)
+
+    def bad_lengths(name, lines, contains):
+        path = os.path.join(tmp, name + ".txt")
+        with open(path, "w") as f:
+            f.write("\n".join(lines) + "\n")
+        smdf.error(["holonomy", torus, "--lengths", path], "lengths file: " + name, 1, contains)
+
+    bad_lengths("not_a_number", good[:5] + ["%d %d abc" % edges[5]] + good[6:], "line 6")
+    bad_lengths("two_fields", good[:3] + ["%d %d" % edges[3]] + good[4:], "line 4")
+    bad_lengths("four_fields", good[:3] + [good[3] + " 7"] + good[4:], "line 4")
+    bad_lengths("bad_index", ["x 1 1.0"] + good, "line 1")
+    bad_lengths("negative_index", ["-1 1 1.0"] + good, "line 1")
+    bad_lengths("vertex_out_of_range", good + ["%d 0 1.0" % len(verts)], "line %d" % (len(good) + 1))
+    bad_lengths("unknown_pair", good[:7] + ["%d %d 1.0" % non_edge] + good[7:], "line 8")
+    bad_lengths("same_vertex", good[:7] + ["3 3 1.0"] + good[7:], "line 8")
+    bad_lengths("duplicate", good[:10] + ["%d %d 1.5" % (edges[2][1], edges[2][0])] + good[10:],
+                ["line 11", "line 3"])
+    bad_lengths("zero_length", good[:2] + ["%d %d 0" % edges[2]] + good[3:], "line 3")
+    bad_lengths("negative_length", good[:2] + ["%d %d -1.5" % edges[2]] + good[3:], "line 3")
+    bad_lengths("nan_length", good[:2] + ["%d %d nan" % edges[2]] + good[3:], "line 3")
+    bad_lengths("inf_length", good[:2] + ["%d %d inf" % edges[2]] + good[3:], "line 3")
+    bad_lengths("missing_edge", good[:-1], ["no length for edge", "1 of %d" % len(edges)])
+    bad_lengths("empty", [], "%d of %d" % (len(edges), len(edges)))
+    bad_lengths("triangle_inequality", good[:2] + ["%d %d 100" % edges[2]] + good[3:],
+                ["triangle_inequality.txt", "[degenerate_face]"])
+    smdf.error(["holonomy", torus, "--lengths", os.path.join(tmp, "does_not_exist.txt")],
+               "lengths file missing", 1, "[file_error]")
+
+    # command-line errors: exit 2, one line
+    missing = os.path.join(tmp, "no_such_mesh.off")
+    smdf.error(["info", missing], "missing mesh file", 1, [missing, "[file_error]"])
+    for cmd in ("generators", "holonomy"):
+        smdf.error([cmd, missing], "missing mesh file (%s)" % cmd, 1, "[file_error]")
+    smdf.error([], "no arguments", 2)
+    smdf.error(["frobnicate", torus], "unknown subcommand", 2, "frobnicate")
+    smdf.error(["--frobnicate"], "unknown global option", 2)
+    smdf.error(["info", "--bogus", torus], "unknown option", 2, "--bogus")
+    smdf.error(["holonomy", torus, "--lengths"], "option without its value", 2, "--lengths")
+    smdf.error(["holonomy", torus, "--lengths", scaled, "--lengths", scaled], "repeated option", 2)
+    smdf.error(["holonomy", torus, "--lengths="], "option with an empty value", 2, "--lengths")
+    smdf.error(["info"], "missing MESH argument", 2, "MESH")
+    smdf.error(["info", ""], "empty MESH argument", 2, "MESH")
+    smdf.error(["info", torus, torus], "extra argument", 2)
+    smdf.error(["info", "-x", torus], "unknown short option", 2)
+
+    # help
+    rc, out, err = smdf.run(["--help"])
+    text = out.decode()
+    c.check(rc == 0 and not err and all(k in text for k in ("info", "generators", "holonomy")),
+            "smdf --help prints the commands on stdout and exits 0")
+    for cmd in ("info", "generators", "holonomy"):
+        rc, out, err = smdf.run([cmd, "--help"])
+        c.check(rc == 0 and not err and out.decode().startswith("usage: smdf " + cmd),
+                "smdf %s --help prints usage on stdout and exits 0" % cmd)
+
+    # the geometric commands reject zero-area faces, info counts them
+    flat = os.path.join(tmp, "flat.off")
+    with open(flat, "w") as f:
+        f.write("OFF\n4 2 0\n0 0 0\n1 0 0\n2 0 0\n0 1 0\n3 0 1 3\n3 1 2 3\n")
+    info = smdf.json(["info", flat])
+    c.check(info is not None and info.get("degenerate_faces") == 0, "flat.off: no degenerate face")
+    with open(flat, "w") as f:
+        f.write("OFF\n4 2 0\n0 0 0\n1 0 0\n2 0 0\n0 1 0\n3 0 1 3\n3 0 2 1\n")
+    info = smdf.json(["info", flat])
+    c.check(info is not None and info.get("degenerate_faces") == 1, "flat.off: one zero-area face")
+    smdf.error(["holonomy", flat], "holonomy on a zero-area face", 1, "[degenerate_face]")
+
+    # strings are escaped in JSON output
+    odd = os.path.join(tmp, 'we"ird\\name.off')
+    with open(torus) as src, open(odd, "w") as dst:
+        dst.write(src.read())
+    info = smdf.json(["info", odd], "smdf info on a file name with quote and backslash")
+    c.check(info is not None and info.get("file") == odd, "file name round-trips through JSON")
+
+
+# ---- ../shared/data --------------------------------------------------------------------------
+
+def plain_genus(field):
+    """The manifest's genus column as a list of ints, or None ("nm", "46,...(151 comps)")."""
+    try:
+        return [int(x) for x in field.split(",")]
+    except ValueError:
+        return None
+
+
+def test_shared(smdf, c, shared):
+    with open(os.path.join(shared, "MANIFEST.tsv"), newline="") as f:
+        rows = list(csv.DictReader(f, delimiter="\t"))
+    meshes = os.path.join(shared, "meshes")
+    c.check(len(rows) > 0, "MANIFEST.tsv lists %d meshes" % len(rows))
+    for name in BAD_MESHES:
+        c.check(any(r["file"] == name for r in rows), "manifest lists bad mesh " + name)
+    loaded = {}
+    for r in rows:
+        name = r["file"]
+        path = os.path.join(meshes, name)
+        if name in TOO_LARGE:
+            print("skip: %s (too large for this test)" % name)
+            continue
+        if name in BAD_MESHES:
+            for cmd in ("info", "generators", "holonomy"):
+                smdf.error([cmd, path], "%s %s" % (cmd, name), 1, "[%s]" % BAD_MESHES[name])
+            continue
+        info = smdf.json(["info", path], "smdf info " + name)
+        if not info:
+            continue
+        loaded[name] = (r, info)
+        for k_info, k_manifest in (("vertices", "V"), ("faces", "F"), ("edges", "E"),
+                                   ("components", "components"), ("boundary_loops", "boundary_loops")):
+            c.check(info.get(k_info) == int(r[k_manifest]), "%s %s = %s (got %r)"
+                    % (name, k_info, r[k_manifest], info.get(k_info)))
+        genus = plain_genus(r["genus"])
+        if genus is not None:
+            c.check(info.get("genus") == genus, "%s genus = %r (got %r)" % (name, genus, info.get("genus")))
+        c.check(info.get("closed") == (int(r["boundary_loops"]) == 0), "%s closed flag" % name)
+
+    # generators: count == betti_1 on genus 1, 2, 3 meshes and on meshes with boundary
+    for name, (r, info) in sorted(loaded.items()):
+        if r["genus"] not in ("1", "2", "3") and int(r["boundary_loops"]) == 0:
+            continue
+        gens = smdf.json(["generators", os.path.join(meshes, name)], "smdf generators " + name)
+        if not gens:
+            continue
+        g = gens.get("generators", [])
+        handles = sum(1 for x in g if x.get("kind") == "handle")
+        boundary = sum(1 for x in g if x.get("kind") == "boundary")
+        c.check(gens.get("count") == len(g) == gens.get("betti_1") == info.get("betti_1"),
+                "%s: generator count %r == betti_1 %r" % (name, gens.get("count"), info.get("betti_1")))
+        c.check(handles == 2 * sum(info.get("genus", [])) and handles + boundary == len(g),
+                "%s: %d handle generators == 2 * genus" % (name, handles))
+        if info.get("components") == 1:
+            c.check(boundary == max(info.get("boundary_loops", 0) - 1, 0),
+                    "%s: %d boundary generators == boundary loops - 1" % (name, boundary))
+        c.check(all(len(x.get("dual_edges", [])) > 0 and len(x.get("primal_loop", [])) > 0 for x in g),
+                "%s: every generator has a dual cycle and a primal loop" % name)
+
+    # holonomy: Gauss-Bonnet and generalized vs. Levi-Civita rotation on a few meshes
+    for name in HOLONOMY_MESHES:
+        if name not in loaded:
+            continue
+        hol = smdf.json(["holonomy", os.path.join(meshes, name)], "smdf holonomy " + name)
+        if not hol:
+            continue
+        c.check(hol.get("gauss_bonnet_error", 1) < 1e-8,
+                "%s: Gauss-Bonnet error %r < 1e-8" % (name, hol.get("gauss_bonnet_error")))
+        g = hol.get("generators", [])
+        c.check(len(g) == loaded[name][1].get("betti_1"), "%s: one holonomy per generator" % name)
+        worst = max([angle_diff(x["levi_civita_holonomy"], x["generalized_holonomy"]["rotation"])
+                     for x in g] + [0])
+        c.check(worst < 1e-6, "%s: generalized rotation = Levi-Civita holonomy (max diff %.3g)"
+                % (name, worst))
+
+    # zero-area faces: info works, holonomy fails with the library's message
+    capsule = os.path.join(meshes, "capsule_trimesh.obj")
+    if "capsule_trimesh.obj" in loaded:
+        c.check(loaded["capsule_trimesh.obj"][1].get("degenerate_faces", 0) > 0,
+                "capsule_trimesh.obj: info counts degenerate faces (%r)"
+                % loaded["capsule_trimesh.obj"][1].get("degenerate_faces"))
+    smdf.error(["holonomy", capsule], "holonomy capsule_trimesh.obj", 1,
+               ["capsule_trimesh.obj", "degenerate", "[degenerate_face]"])
+
+
+def main():
+    here = os.path.dirname(os.path.abspath(__file__))
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("smdf", help="path of the smdf executable")
+    ap.add_argument("shared", help="shared data directory (holds MANIFEST.tsv and meshes/)")
+    ap.add_argument("--torus", default=os.path.join(here, "..", "..", "data", "torus.off"))
+    ap.add_argument("--part", choices=("all", "torus", "shared"), default="all")
+    args = ap.parse_args()
+
+    c = Checker()
+    smdf = Smdf(os.path.abspath(args.smdf), c)
+    if not c.check(os.access(smdf.exe, os.X_OK), "smdf executable " + smdf.exe):
+        return c.finish()
+    if args.part in ("all", "torus"):
+        with tempfile.TemporaryDirectory(prefix="smdf_test_") as tmp:
+            test_torus(smdf, c, os.path.abspath(args.torus), tmp)
+    skipped = None
+    if args.part in ("all", "shared"):
+        if os.path.isfile(os.path.join(args.shared, "MANIFEST.tsv")):
+            test_shared(smdf, c, args.shared)
+        else:
+            skipped = "%s/MANIFEST.tsv not found (../shared absent): shared-mesh checks skipped" % args.shared
+    return c.finish(skipped)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
