@@ -25,7 +25,7 @@ public:
     NON_MANIFOLD_EDGE,   ///< an edge is shared by more than two faces
     NON_MANIFOLD_VERTEX, ///< the faces around a vertex do not form one fan (pinched vertex)
     NON_ORIENTABLE,      ///< the faces cannot be oriented consistently
-    DEGENERATE_FACE,     ///< a face with a zero-length edge or zero area, or lengths violating the triangle inequality
+    DEGENERATE_FACE,     ///< a face with a zero-length edge, zero area or lengths violating the triangle inequality; in a file, a face with fewer than 3 or repeated vertices
     INVALID_GEOMETRY,    ///< non-finite coordinates or lengths
     INVALID_CYCLE,       ///< a halfedge sequence that is not a cycle of the expected kind
     INCONSISTENT_INDICES, ///< singularity indices of a closed component do not sum to its Euler characteristic

@@ -123,8 +123,9 @@ double geodesic_curvature(typename boost::graph_traits<TriangleMesh>::vertex_des
 /// get 0) and returns the sum, \f$2\pi\chi\f$ up to rounding.
 /// Validates the mesh: throws `Input_error` for non-triangle faces, non-manifold vertices and
 /// degenerate faces of the metric.
-/// \tparam VertexCurvatureMap a writable property map with `vertex_descriptor` keys and `double` values
 /// Named parameters as in corner_angle().
+///
+/// \tparam VertexCurvatureMap a writable property map with `vertex_descriptor` keys and `double` values
 template <typename TriangleMesh, typename VertexCurvatureMap,
           typename NamedParameters = parameters::Default_named_parameters>
 double compute_vertex_curvatures(const TriangleMesh& tm, VertexCurvatureMap curvature,

@@ -18,7 +18,7 @@ namespace internal_np {
 
 /// \ingroup PkgSurfaceMeshDirectionFieldsRef
 /// A named-parameter pack that accepts both CGAL's parameters and the package's own
-/// (`edge_length_map`, `holonomy_tolerance`, ...), so that they can be chained in any order.
+/// (`edge_length_map`, `symmetry_order`, `connection_weights`, ...), so that they can be chained in any order.
 /// Users never name this type; they start a pack with a function of
 /// `CGAL::Surface_mesh_direction_fields::parameters`.
 template <typename T, typename Tag, typename Base = CGAL::internal_np::No_property>

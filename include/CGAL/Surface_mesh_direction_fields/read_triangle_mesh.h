@@ -37,7 +37,8 @@ struct Polygon_soup_report
 /// Checks that a polygon soup describes an orientable triangulated 2-manifold (possibly with
 /// boundary, possibly with several components) and orients it consistently, keeping the order
 /// of polygons and of points. Throws `Input_error` naming the first problem found, checked in
-/// this order: an index out of range or a repeated index in a polygon (`DEGENERATE_FACE`), an
+/// this order: a polygon with fewer than 3 vertices or a repeated vertex (`DEGENERATE_FACE`), an
+/// index out of range (`FILE_ERROR`), an
 /// edge shared by more than two polygons, which includes duplicate faces
 /// (`NON_MANIFOLD_EDGE`), a component that cannot be oriented (`NON_ORIENTABLE`), a vertex
 /// whose polygons form more than one fan (`NON_MANIFOLD_VERTEX`), a polygon that is not a
@@ -260,7 +261,9 @@ Polygon_soup_report read_triangle_mesh(const std::string& filename, TriangleMesh
   }
   if(!ok)
     throw Input_error(Input_error::FILE_ERROR,
-                      "cannot parse '" + filename + "' as a mesh (supported: .off, .obj, .ply, .stl)");
+                      "cannot read '" + filename + "': unsupported extension (use .off, .obj, .ply or .stl) "
+                      "or malformed content (bad header, non-numeric coordinate, index out of range, "
+                      "truncated file)");
   if(polygons.empty())
     throw Input_error(Input_error::FILE_ERROR, "'" + filename + "' contains no faces");
   for(std::size_t i = 0; i < points.size(); ++i) {
