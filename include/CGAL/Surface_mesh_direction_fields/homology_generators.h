@@ -43,6 +43,28 @@ struct Homology_generator
   std::vector<halfedge_descriptor> primal_loop;
 };
 
+namespace internal {
+
+// Index-based generators to descriptor-based ones.
+template <typename TriangleMesh>
+std::vector<Homology_generator<TriangleMesh>>
+to_homology_generators(const Mesh_arrays<TriangleMesh>& m, const std::vector<Generator_arrays>& gens,
+                       const TriangleMesh& tm)
+{
+  std::vector<Homology_generator<TriangleMesh>> out;
+  for(const auto& g : gens) {
+    Homology_generator<TriangleMesh> r;
+    r.kind = g.handle ? HANDLE_GENERATOR : BOUNDARY_GENERATOR;
+    r.component = std::size_t(g.component);
+    for(int h : g.dual) r.dual_cycle.push_back(m.halfedge_descriptor_of(h, tm));
+    for(int h : g.primal) r.primal_loop.push_back(m.halfedge_descriptor_of(h, tm));
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
+} // namespace internal
+
 /// \ingroup PkgSurfaceMeshDirectionFieldsTopology
 /// Computes a basis of the first homology group \f$H_1(M;\mathbb{Z})\f$ of every connected
 /// component of `tm` by the tree-cotree decomposition (Eppstein 2003), extended to surfaces with
@@ -68,16 +90,7 @@ std::vector<Homology_generator<TriangleMesh>> tree_cotree_generators(const Trian
 {
   internal::Mesh_arrays<TriangleMesh> m(tm);
   internal::Topology_arrays t(m);
-  std::vector<Homology_generator<TriangleMesh>> out;
-  for(const auto& g : internal::tree_cotree(m, t)) {
-    Homology_generator<TriangleMesh> r;
-    r.kind = g.handle ? HANDLE_GENERATOR : BOUNDARY_GENERATOR;
-    r.component = std::size_t(g.component);
-    for(int h : g.dual) r.dual_cycle.push_back(m.halfedge_descriptor_of(h, tm));
-    for(int h : g.primal) r.primal_loop.push_back(m.halfedge_descriptor_of(h, tm));
-    out.push_back(std::move(r));
-  }
-  return out;
+  return internal::to_homology_generators(m, internal::tree_cotree(m, t), tm);
 }
 
 } // namespace Surface_mesh_direction_fields

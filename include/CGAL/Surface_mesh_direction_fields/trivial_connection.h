@@ -155,15 +155,8 @@ public:
     store_embedding(vpm);
 
     gens_ = internal::tree_cotree(m_, topo_);
-    for(const auto& g : gens_) {
-      Homology_generator<TriangleMesh> r;
-      r.kind = g.handle ? HANDLE_GENERATOR : BOUNDARY_GENERATOR;
-      r.component = std::size_t(g.component);
-      for(int h : g.dual) r.dual_cycle.push_back(m_.halfedge_descriptor_of(h, tm));
-      for(int h : g.primal) r.primal_loop.push_back(m_.halfedge_descriptor_of(h, tm));
-      public_gens_.push_back(std::move(r));
-      z_.push_back(internal::wrap_angle(internal::transport_along(m_, g.dual)));
-    }
+    public_gens_ = internal::to_homology_generators(m_, gens_, tm);
+    for(const auto& g : gens_) z_.push_back(internal::wrap_angle(internal::transport_along(m_, g.dual)));
     internal::vertex_curvatures(m_, K_);
     index_.assign(m_.number_of_vertices(), 0.);
     turning_.assign(gens_.size(), 0.);
