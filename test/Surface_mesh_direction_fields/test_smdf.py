@@ -8,6 +8,8 @@ usage: test_smdf.py SMDF SHARED_DATA_DIR [--torus OFF] [--part all|torus|shared]
 Part "torus" runs every subcommand on data/torus.off and checks invariants (topology,
 generator cycles against the faces of the file, Gauss-Bonnet, holonomy under a scaled metric)
 and the error behaviour (one stderr line, nothing on stdout, exit 1 or 2).
+It also runs `connection` (prescribed singularities, N-RoSy indices, constraints, output
+files, editing benchmark, errors) and `singularities` on the field it writes.
 Part "shared" runs `info` on the meshes of SHARED_DATA_DIR/MANIFEST.tsv and compares with the
 manifest, `generators` on meshes with handles or boundary, and checks the documented failures;
 it exits 77 (skipped) when SHARED_DATA_DIR is absent.
@@ -343,6 +345,223 @@ def test_torus(smdf, c, torus, tmp):
     info = smdf.json(["info", odd], "smdf info on a file name with quote and backslash")
     c.check(info is not None and info.get("file") == odd, "file name round-trips through JSON")
 
+    test_connection(smdf, c, torus, tmp, verts, faces)
+
+
+# ---- connection / singularities ---------------------------------------------------------------
+
+def vsub(a, b):
+    return [a[i] - b[i] for i in range(3)]
+
+
+def vcross(a, b):
+    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+
+
+def vdot(a, b):
+    return sum(a[i] * b[i] for i in range(3))
+
+
+def vunit(a):
+    n = math.sqrt(vdot(a, a))
+    return [x / n for x in a]
+
+
+def face_frame(verts, face):
+    """(e1, e2) of the face frame: e1 along halfedge(f), e2 = n x e1. Surface_mesh's add_face()
+    makes halfedge(f) the halfedge from the last vertex of the face to the first."""
+    a, b, c = face
+    p0, p1, p2 = verts[c], verts[a], verts[b]
+    e1 = vunit(vsub(p1, p0))
+    n = vunit(vcross(e1, vsub(p2, p0)))
+    return e1, vcross(n, e1)
+
+
+def rosy_angle_error(u, w, e1, e2, N):
+    """Angle between u and w in the frame (e1, e2), modulo 2 pi / N."""
+    au = math.atan2(vdot(u, e2), vdot(u, e1))
+    aw = math.atan2(vdot(w, e2), vdot(w, e1))
+    period = TWO_PI / N
+    d = math.fmod(au - aw, period)
+    return min(abs(d), period - abs(d))
+
+
+def read_rows(path):
+    with open(path) as f:
+        return [line.split() for line in f if line.strip()]
+
+
+def test_connection(smdf, c, torus, tmp, verts, faces):
+    nv, nf = len(verts), len(faces)
+    edges = {(min(f[i], f[(i + 1) % 3]), max(f[i], f[(i + 1) % 3])) for f in faces for i in range(3)}
+    # the torus is closed: every vertex is interior
+    c.check(all(sum(1 for f in faces for i in range(3) if (f[i], f[(i + 1) % 3]) == e or
+                    (f[(i + 1) % 3], f[i]) == e) == 2 for e in edges if 0 in e or 100 in e),
+            "torus: vertices 0 and 100 are interior (every incident edge has two faces)")
+
+    field = os.path.join(tmp, "field.txt")
+    conn = os.path.join(tmp, "connection.txt")
+    r = smdf.json(["connection", torus, "--singularities", "0:1,100:-1", "--field-out", field,
+                   "--connection-out", conn], "smdf connection torus 0:1,100:-1")
+    if r:
+        want = [{"vertex": 0, "index": 1}, {"vertex": 100, "index": -1}]
+        c.check(r.get("N") == 1 and r.get("weights") == "cotan", "connection: N 1, cotan weights")
+        c.check(r.get("prescribed") == want, "connection: prescribed %r" % r.get("prescribed"))
+        c.check(r.get("found") == want, "connection: found == prescribed (%r)" % r.get("found"))
+        c.check(r.get("generator_turning_numbers") == [0, 0], "connection: turning numbers [0, 0]")
+        c.check(r.get("success") is True and r.get("residual", 1) < 1e-9 and
+                r.get("max_holonomy_error", 1) < 1e-9 and r.get("energy", -1) > 0,
+                "connection: success, residual %r, holonomy error %r"
+                % (r.get("residual"), r.get("max_holonomy_error")))
+        t = r.get("timings", {})
+        c.check(all(is_number(t.get(k)) and t[k] >= 0 for k in ("setup_s", "solve_s", "field_s"))
+                and "edit_median_s" in t and t["edit_median_s"] is None,
+                "connection: timings %r" % t)
+        rows = read_rows(field)
+        c.check(len(rows) == nf and all(len(x) == 3 for x in rows) and
+                all(abs(vdot([float(v) for v in x], [float(v) for v in x]) - 1) < 1e-12 for x in rows),
+                "--field-out: one unit vector per face (%d lines)" % len(rows))
+        c.check(all(abs(vdot([float(v) for v in rows[i]],
+                             vcross(vsub(verts[faces[i][1]], verts[faces[i][0]]),
+                                    vsub(verts[faces[i][2]], verts[faces[i][0]])))) < 1e-9
+                    for i in range(len(rows)) if len(rows) == nf),
+                "--field-out: vectors are tangent to their faces")
+        rows = read_rows(conn)
+        ok = len(rows) == len(edges) and all(len(x) == 3 for x in rows)
+        ok = ok and {(min(int(x[0]), int(x[1])), max(int(x[0]), int(x[1]))) for x in rows} == edges
+        c.check(ok, "--connection-out: one line 'i j angle' per edge (%d lines, %d edges)"
+                % (len(rows), len(edges)))
+        s = smdf.json(["singularities", torus, "--field", field], "smdf singularities --field")
+        if s:
+            c.check(s.get("singularities") == want and s.get("generator_turning_numbers") == [0, 0]
+                    and s.get("N") == 1 and s.get("max_rounding_error", 1) < 1e-6,
+                    "singularities of the written field == prescribed (%r)" % s.get("singularities"))
+
+    # N = 4, fractional indices
+    field4 = os.path.join(tmp, "field4.txt")
+    r = smdf.json(["connection", torus, "--N", "4", "--singularities", "0:1/4,100:-1/4",
+                   "--field-out", field4], "smdf connection torus --N 4 0:1/4,100:-1/4")
+    want4 = [{"vertex": 0, "index": 0.25}, {"vertex": 100, "index": -0.25}]
+    if r:
+        c.check(r.get("N") == 4 and r.get("found") == want4 and r.get("prescribed") == want4,
+                "connection N 4: found == prescribed (%r)" % r.get("found"))
+        s = smdf.json(["singularities", torus, "--field", field4, "--N", "4"])
+        c.check(s is not None and s.get("singularities") == want4,
+                "singularities --N 4 of the written cross field == prescribed")
+    # same field, singularities given in a file with decimals and comments
+    sf = os.path.join(tmp, "sing.txt")
+    with open(sf, "w") as f:
+        f.write("# vertex index\n0 0.25\n\n100 -1/4  # saddle\n")
+    r = smdf.json(["connection", torus, "--N", "4", "--singularities-file", sf, "--weights", "unit"],
+                  "smdf connection --singularities-file --weights unit")
+    c.check(r is not None and r.get("found") == want4 and r.get("weights") == "unit",
+            "connection --singularities-file: found == prescribed")
+
+    # generator turning numbers are read back
+    r = smdf.json(["connection", torus, "--generator-turning", "0:1"], "smdf connection --generator-turning 0:1")
+    c.check(r is not None and r.get("generator_turning_numbers") == [1, 0] and r.get("found") == [],
+            "connection: generator turning numbers read back [1, 0] (%r)"
+            % (r or {}).get("generator_turning_numbers"))
+
+    # directional constraints: an angle and a 3D direction
+    N = 2
+    cf = os.path.join(tmp, "constraints.txt")
+    fa, fb, angle = 5, 400, 0.7
+    e1b, e2b = face_frame(verts, faces[fb])
+    d3 = [2 * e1b[i] + e2b[i] for i in range(3)]   # in the plane of face fb
+    with open(cf, "w") as f:
+        f.write("# face angle | face x y z\n%d %r\n%d %r %r %r\n" % (fa, angle, fb, d3[0], d3[1], d3[2]))
+    fieldc = os.path.join(tmp, "field_c.txt")
+    r = smdf.json(["connection", torus, "--N", str(N), "--singularities", "0:1/2,100:-1/2",
+                   "--constraints", cf, "--field-out", fieldc], "smdf connection --constraints")
+    if r:
+        rows = read_rows(fieldc)
+        e1a, e2a = face_frame(verts, faces[fa])
+        want_a = [math.cos(angle) * e1a[i] + math.sin(angle) * e2a[i] for i in range(3)]
+        got_a = [float(x) for x in rows[fa]]
+        err_a = rosy_angle_error(got_a, want_a, e1a, e2a, N)
+        want_b = vunit(d3)
+        got_b = [float(x) for x in rows[fb]]
+        err_b = rosy_angle_error(got_b, want_b, e1b, e2b, N)
+        c.check(err_a < 1e-9 and err_b < 1e-9,
+                "constrained faces hold their directions mod 2pi/N (errors %.3g, %.3g)" % (err_a, err_b))
+        c.check(r.get("found") == [{"vertex": 0, "index": 0.5}, {"vertex": 100, "index": -0.5}],
+                "constrained line field keeps its singularities (%r)" % r.get("found"))
+
+    # editing benchmark
+    r = smdf.json(["connection", torus, "--singularities", "0:1,100:-1", "--edit-benchmark", "5"],
+                  "smdf connection --edit-benchmark 5")
+    if r:
+        m = r.get("timings", {}).get("edit_median_s")
+        c.check(is_number(m) and m >= 0, "--edit-benchmark 5 reports a median %r" % m)
+        c.check(r.get("found") == [{"vertex": 0, "index": 1}, {"vertex": 100, "index": -1}],
+                "--edit-benchmark reports the field of the first solve")
+    r = smdf.json(["connection", torus, "--edit-benchmark", "3"], "smdf connection --edit-benchmark without singularities")
+    c.check(r is not None and r.get("timings", {}).get("edit_median_s", 0) is None and r.get("found") == [],
+            "--edit-benchmark without singularities: edit_median_s null")
+
+    # errors
+    msg = smdf.error(["connection", torus, "--singularities", "0:1"], "indices not summing to chi", 1,
+                     "[inconsistent_indices]")
+    c.check(" 1 " in msg + " " and " 0" in msg, "the error names the index sum 1 and chi 0: %r" % msg)
+    smdf.error(["connection", torus, "--N", "4", "--singularities", "0:0.3"], "index 0.3 with N 4", 1,
+               ["1/4", "[invalid_argument]"])
+    smdf.error(["connection", torus, "--weights", "bogus"], "--weights bogus", 2, "bogus")
+    smdf.error(["connection", torus, "--N", "0"], "--N 0", 2, "--N")
+    smdf.error(["connection", torus, "--singularities", "0:1,x:-1"], "malformed --singularities", 2,
+               "--singularities")
+    smdf.error(["connection", torus, "--singularities", "0:1/0"], "zero denominator", 2)
+    smdf.error(["connection", torus, "--singularities", "%d:1,0:-1" % nv], "vertex out of range", 1,
+               str(nv))
+    smdf.error(["connection", torus, "--singularities", "0:1,0:-1"], "vertex given twice", 1, "twice")
+    smdf.error(["connection", torus, "--generator-turning", "7:1"], "generator out of range", 1,
+               "generator 7")
+    bad = os.path.join(tmp, "bad_sing.txt")
+    with open(bad, "w") as f:
+        f.write("0 1\n100 minus-one\n")
+    smdf.error(["connection", torus, "--singularities-file", bad], "malformed singularities file", 1,
+               [bad, "line 2"])
+    with open(bad, "w") as f:
+        f.write("# c\n%d 1 2\n" % fa)
+    smdf.error(["connection", torus, "--constraints", bad], "malformed constraints file", 1,
+               [bad, "line 2"])
+    with open(bad, "w") as f:
+        f.write("%d 0.1\n%d 0.2\n" % (fa, fa))
+    smdf.error(["connection", torus, "--constraints", bad], "face constrained twice", 1, "line 2")
+    with open(field) as src, open(bad, "w") as dst:
+        lines = src.read().splitlines()
+        dst.write("\n".join(lines[:10]) + "\n")
+    smdf.error(["singularities", torus, "--field", bad], "short field file", 1, [bad, "10"])
+    with open(bad, "w") as f:
+        f.write("\n".join(lines[:3] + ["1 2"] + lines[4:]) + "\n")
+    smdf.error(["singularities", torus, "--field", bad], "malformed field file", 1, [bad, "line 4"])
+    smdf.error(["singularities", torus], "singularities without --field", 2, "--field")
+    for cmd in ("connection", "singularities"):
+        rc, out, err = smdf.run([cmd, "--help"])
+        c.check(rc == 0 and not err and out.decode().startswith("usage: smdf " + cmd),
+                "smdf %s --help prints usage on stdout and exits 0" % cmd)
+
+
+def test_shared_connection(smdf, c, meshes):
+    path = os.path.join(meshes, "double-torus_jnd.off")
+    if not os.path.isfile(path):
+        print("skip: double-torus_jnd.off not found")
+        return
+    verts, faces = read_off(path)
+    a, b = 0, len(verts) // 2
+    want = [{"vertex": a, "index": -1}, {"vertex": b, "index": -1}]
+    r = smdf.json(["connection", path, "--singularities", "%d:-1,%d:-1" % (a, b)],
+                  "smdf connection double-torus_jnd.off two -1 singularities")
+    if r:
+        c.check(r.get("success") is True and r.get("residual", 1) < 1e-8 and
+                r.get("max_holonomy_error", 1) < 1e-8,
+                "double torus: success, residual %r" % r.get("residual"))
+        c.check(r.get("found") == want, "double torus: found == prescribed (%r)" % r.get("found"))
+        c.check(r.get("generator_turning_numbers") == [0, 0, 0, 0],
+                "double torus: 4 turning numbers read back as 0 (%r)" % r.get("generator_turning_numbers"))
+    smdf.error(["connection", path, "--singularities", "%d:-1" % a], "double torus: one -1 (chi = -2)",
+               1, ["-1", "-2", "[inconsistent_indices]"])
+
 
 # ---- ../shared/data --------------------------------------------------------------------------
 
@@ -429,6 +648,9 @@ def test_shared(smdf, c, shared):
                 % loaded["capsule_trimesh.obj"][1].get("degenerate_faces"))
     smdf.error(["holonomy", capsule], "holonomy capsule_trimesh.obj", 1,
                ["capsule_trimesh.obj", "degenerate", "[degenerate_face]"])
+
+    # trivial connection on a genus-2 surface
+    test_shared_connection(smdf, c, meshes)
 
 
 def main():

@@ -17,14 +17,17 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Surface_mesh_direction_fields/errors.h>
+#include <CGAL/Surface_mesh_direction_fields/field_singularities.h>
 #include <CGAL/Surface_mesh_direction_fields/holonomy.h>
 #include <CGAL/Surface_mesh_direction_fields/homology_generators.h>
 #include <CGAL/Surface_mesh_direction_fields/intrinsic_geometry.h>
 #include <CGAL/Surface_mesh_direction_fields/parameters.h>
 #include <CGAL/Surface_mesh_direction_fields/read_triangle_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/topology.h>
+#include <CGAL/Surface_mesh_direction_fields/trivial_connection.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -36,6 +39,7 @@
 #include <locale>
 #include <map>
 #include <new>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -680,6 +684,372 @@ Json run_holonomy(const Args& args)
   return out;
 }
 
+// ---- Trivial connections: shared parsing --------------------------------------------------
+
+// A number written as an integer, a fraction "p/q" or a decimal; false if malformed.
+bool parse_number(const std::string& s, double& out)
+{
+  auto real = [](const std::string& t, double& d) {
+    if(t.empty() || std::isspace(static_cast<unsigned char>(t[0]))) return false;
+    char* end = nullptr;
+    d = std::strtod(t.c_str(), &end);
+    return *end == '\0' && std::isfinite(d);
+  };
+  const std::size_t slash = s.find('/');
+  if(slash == std::string::npos) return real(s, out);
+  double p, q;
+  if(!real(s.substr(0, slash), p) || !real(s.substr(slash + 1), q) || q == 0) return false;
+  out = p / q;
+  return std::isfinite(out);
+}
+
+std::string format_real(double d)
+{
+  std::ostringstream os;
+  os.imbue(std::locale::classic());
+  os.precision(17);
+  os << d;
+  return os.str();
+}
+
+// "i:k,i:k,...": pairs (index, number); syntax errors are usage errors naming `option`.
+std::vector<std::pair<std::size_t, double>> parse_pairs(const std::string& option, const std::string& s)
+{
+  std::vector<std::pair<std::size_t, double>> out;
+  std::size_t start = 0;
+  while(start <= s.size()) {
+    std::size_t comma = s.find(',', start);
+    if(comma == std::string::npos) comma = s.size();
+    const std::string item = s.substr(start, comma - start);
+    const std::size_t colon = item.find(':');
+    std::size_t i;
+    double k;
+    if(colon == std::string::npos || !parse_index(item.substr(0, colon), i) ||
+       !parse_number(item.substr(colon + 1), k))
+      throw Usage_error("option --" + option + " expects 'i:k,i:k,...' (k an integer, p/q or a "
+                        "decimal), got '" + shorten(item) + "'");
+    out.push_back(std::make_pair(i, k));
+    start = comma + 1;
+  }
+  return out;
+}
+
+// Lines of a text file split into fields; blank lines and '#' comments are skipped. Calls
+// f(line_no, fields) for every other line.
+template <typename F>
+void for_each_data_line(const std::string& file, F f)
+{
+  std::ifstream in(file);
+  if(!in) throw file_error(file, "cannot open file", "file_error");
+  std::string line;
+  std::size_t line_no = 0;
+  while(std::getline(in, line)) {
+    ++line_no;
+    const std::size_t hash = line.find('#');
+    if(hash != std::string::npos) line.erase(hash);
+    std::istringstream is(line);
+    std::vector<std::string> tok;
+    for(std::string t; is >> t;) tok.push_back(t);
+    if(tok.empty()) continue;
+    f(line_no, tok);
+  }
+  if(in.bad()) throw file_error(file, "read error", "file_error");
+}
+
+Error line_error(const std::string& file, std::size_t line_no, const std::string& what)
+{
+  return file_error(file, "line " + std::to_string(line_no) + ": " + what, "file_error");
+}
+
+// Angle of the projection of (x, y, z) on the plane of f, in the frame of vectors_to_face_angles().
+bool direction_angle(const Mesh& mesh, face_descriptor f, const double v[3], double& angle)
+{
+  const halfedge_descriptor h = halfedge(f, mesh);
+  const K::Point_3& p0 = mesh.point(source(h, mesh));
+  const K::Point_3& p1 = mesh.point(target(h, mesh));
+  const K::Point_3& p2 = mesh.point(target(next(h, mesh), mesh));
+  const double e1[3] = {p1.x() - p0.x(), p1.y() - p0.y(), p1.z() - p0.z()};
+  const double e2[3] = {p2.x() - p0.x(), p2.y() - p0.y(), p2.z() - p0.z()};
+  const double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+  const double b[3] = {n[1] * e1[2] - n[2] * e1[1], n[2] * e1[0] - n[0] * e1[2], n[0] * e1[1] - n[1] * e1[0]};
+  const double le = std::sqrt(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]);
+  const double lb = std::sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
+  if(!(le > 0) || !(lb > 0)) return false;
+  const double x = (v[0] * e1[0] + v[1] * e1[1] + v[2] * e1[2]) / le;
+  const double y = (v[0] * b[0] + v[1] * b[1] + v[2] * b[2]) / lb;
+  const double norm = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  if(!(std::hypot(x, y) > 1e-12 * norm)) return false;   // normal to the face
+  angle = std::atan2(y, x);
+  if(angle < 0) angle += 2 * CGAL_PI;
+  return true;
+}
+
+long symmetry_order_option(const Args& args)
+{
+  const long N = args.integer("N", 1);
+  if(N < 1 || N > 1000000)
+    throw Usage_error("option --N expects an integer >= 1, got '" + args.value("N") + "'");
+  return N;
+}
+
+Json singularity_list(const std::vector<std::pair<std::size_t, double>>& s)
+{
+  Json list = Json::array();
+  for(const auto& p : s) {
+    Json j = Json::object();
+    j["vertex"] = p.first;
+    j["index"] = p.second;
+    list.push_back(std::move(j));
+  }
+  return list;
+}
+
+template <typename Topology>
+Json found_list(const Topology& topo)
+{
+  std::vector<std::pair<std::size_t, double>> s;
+  for(const auto& p : topo.singularities) s.push_back(std::make_pair(index(p.first), p.second));
+  std::sort(s.begin(), s.end());
+  return singularity_list(s);
+}
+
+typedef Mesh::Property_map<face_descriptor, double> Face_angle_property;
+typedef Mesh::Property_map<face_descriptor, K::Vector_3> Face_vector_property;
+
+void write_lines_file(const std::string& file, const std::string& text)
+{
+  std::ofstream out(file);
+  if(!out) throw file_error(file, "cannot open file for writing", "file_error");
+  out << text;
+  out.flush();
+  if(!out) throw file_error(file, "write error", "file_error");
+}
+
+// ---- connection ---------------------------------------------------------------------------
+
+Json run_connection(const Args& args)
+{
+  const std::string& file = args.positional[0];
+  const long N = symmetry_order_option(args);
+  const std::string weights_name = args.value("weights", "cotan");
+  SMDF::Connection_weights weights;
+  if(weights_name == "cotan") weights = SMDF::COTAN_WEIGHTS;
+  else if(weights_name == "unit") weights = SMDF::UNIT_WEIGHTS;
+  else throw Usage_error("option --weights expects 'cotan' or 'unit', got '" + shorten(weights_name) + "'");
+  const long edits = args.integer("edit-benchmark", 0);
+  if(edits < 0) throw Usage_error("option --edit-benchmark expects a non-negative integer");
+
+  std::vector<std::pair<std::size_t, double>> sing, turning;
+  if(args.has("singularities")) sing = parse_pairs("singularities", args.value("singularities"));
+  if(args.has("generator-turning")) turning = parse_pairs("generator-turning", args.value("generator-turning"));
+
+  Mesh mesh;
+  load_mesh(file, mesh);
+  const std::size_t nv = num_vertices(mesh), nf = num_faces(mesh);
+
+  std::vector<std::string> given_by(nv);   // where each vertex's index was given
+  for(const auto& s : sing) {
+    if(s.first >= nv)
+      throw Error("--singularities: vertex " + std::to_string(s.first) + " does not exist (the mesh has " +
+                  std::to_string(nv) + " vertices)");
+    if(!given_by[s.first].empty())
+      throw Error("--singularities: vertex " + std::to_string(s.first) + " is given twice");
+    given_by[s.first] = "--singularities";
+  }
+  if(args.has("singularities-file")) {
+    const std::string sf = args.value("singularities-file");
+    for_each_data_line(sf, [&](std::size_t line_no, const std::vector<std::string>& tok) {
+      std::size_t v;
+      double k;
+      if(tok.size() != 2) throw line_error(sf, line_no, "expected 'vertex index', got " + std::to_string(tok.size()) + " fields");
+      if(!parse_index(tok[0], v)) throw line_error(sf, line_no, "'" + shorten(tok[0]) + "' is not a vertex index");
+      if(v >= nv) throw line_error(sf, line_no, "vertex " + tok[0] + " does not exist (the mesh has " + std::to_string(nv) + " vertices)");
+      if(!parse_number(tok[1], k)) throw line_error(sf, line_no, "'" + shorten(tok[1]) + "' is not a number (integer, p/q or decimal)");
+      if(!given_by[v].empty()) throw line_error(sf, line_no, "vertex " + tok[0] + " was already given by " + given_by[v]);
+      given_by[v] = "line " + std::to_string(line_no);
+      sing.push_back(std::make_pair(v, k));
+    });
+  }
+
+  std::vector<std::pair<face_descriptor, double>> constraints;
+  if(args.has("constraints")) {
+    const std::string cf = args.value("constraints");
+    std::vector<std::size_t> seen(nf, 0);
+    for_each_data_line(cf, [&](std::size_t line_no, const std::vector<std::string>& tok) {
+      std::size_t fi;
+      if(tok.size() != 2 && tok.size() != 4)
+        throw line_error(cf, line_no, "expected 'face angle' or 'face x y z', got " + std::to_string(tok.size()) + " fields");
+      if(!parse_index(tok[0], fi)) throw line_error(cf, line_no, "'" + shorten(tok[0]) + "' is not a face index");
+      if(fi >= nf) throw line_error(cf, line_no, "face " + tok[0] + " does not exist (the mesh has " + std::to_string(nf) + " faces)");
+      if(seen[fi]) throw line_error(cf, line_no, "face " + tok[0] + " was already constrained on line " + std::to_string(seen[fi]));
+      seen[fi] = line_no;
+      double v[3];
+      for(std::size_t k = 1; k < tok.size(); ++k) {
+        char* end = nullptr;
+        v[k - 1] = std::strtod(tok[k].c_str(), &end);
+        if(*end != '\0' || !std::isfinite(v[k - 1]))
+          throw line_error(cf, line_no, "'" + shorten(tok[k]) + "' is not a finite number");
+      }
+      const face_descriptor f = face_descriptor(Mesh::size_type(fi));
+      double angle = v[0];
+      if(tok.size() == 4 && !direction_angle(mesh, f, v, angle))
+        throw line_error(cf, line_no, "the direction of face " + tok[0] + " has no component in the face plane");
+      constraints.push_back(std::make_pair(f, angle));
+    });
+  }
+
+  Stopwatch clock;
+  SMDF::Trivial_connection<Mesh> tc(mesh, SMDF::parameters::symmetry_order(int(N)).connection_weights(weights));
+  const double construct_s = clock.lap();
+  for(const auto& s : sing) tc.set_singularity(vertex_descriptor(Mesh::size_type(s.first)), s.second);
+  for(const auto& t : turning) tc.set_generator_turning_number(t.first, t.second);
+  if(!constraints.empty()) tc.set_directional_constraints(constraints);
+  clock.lap();
+  const SMDF::Trivial_connection_status st = tc.solve();
+  clock.lap();
+  if(!st.success) throw Error(file + ": trivial connection solve failed: " + st.message);
+
+  Face_angle_property angles = mesh.add_property_map<face_descriptor, double>("f:smdf_angle", 0.).first;
+  tc.field_angles(angles);
+  const double field_s = clock.lap();
+  const SMDF::Field_topology<Mesh> topo =
+    on_file(file, [&] { return SMDF::field_singularities(mesh, angles, SMDF::parameters::symmetry_order(int(N))); });
+
+  if(args.has("field-out")) {
+    Face_vector_property vectors =
+      mesh.add_property_map<face_descriptor, K::Vector_3>("f:smdf_vector", K::Vector_3(0, 0, 0)).first;
+    tc.angles_to_vectors(angles, vectors);
+    std::ostringstream os;
+    os.imbue(std::locale::classic());
+    os.precision(17);
+    for(face_descriptor f : faces(mesh)) {
+      const K::Vector_3& v = get(vectors, f);
+      os << v.x() << ' ' << v.y() << ' ' << v.z() << '\n';
+    }
+    write_lines_file(args.value("field-out"), os.str());
+  }
+  if(args.has("connection-out")) {
+    std::ostringstream os;
+    os.imbue(std::locale::classic());
+    os.precision(17);
+    for(edge_descriptor e : edges(mesh)) {
+      if(is_border(e, mesh)) continue;
+      const halfedge_descriptor h = halfedge(e, mesh);
+      os << index(source(h, mesh)) << ' ' << index(target(h, mesh)) << ' ' << tc.adjustment_angle(h) << '\n';
+    }
+    write_lines_file(args.value("connection-out"), os.str());
+  }
+
+  // Editing benchmark: move a random singularity to a random free interior vertex, re-solve.
+  Json edit_median;
+  if(edits > 0 && !sing.empty()) {
+    std::vector<vertex_descriptor> interior;
+    for(vertex_descriptor v : vertices(mesh))
+      if(!is_border(v, mesh) && halfedge(v, mesh) != boost::graph_traits<Mesh>::null_halfedge())
+        interior.push_back(v);
+    std::vector<std::pair<vertex_descriptor, double>> current;
+    for(const auto& s : sing)
+      if(s.second != 0) current.push_back(std::make_pair(vertex_descriptor(Mesh::size_type(s.first)), s.second));
+    std::mt19937 rng(12345);
+    std::vector<double> times;
+    for(long k = 0; k < edits && !current.empty(); ++k) {
+      auto& s = current[std::uniform_int_distribution<std::size_t>(0, current.size() - 1)(rng)];
+      vertex_descriptor to = s.first;
+      for(int tries = 0; tries < 100 && tc.singularity_index(to) != 0; ++tries)
+        to = interior[std::uniform_int_distribution<std::size_t>(0, interior.size() - 1)(rng)];
+      if(tc.singularity_index(to) != 0) continue;
+      tc.set_singularity(s.first, 0);
+      tc.set_singularity(to, s.second);
+      s.first = to;
+      Stopwatch edit_clock;
+      const SMDF::Trivial_connection_status est = tc.solve();
+      if(!est.success) throw Error(file + ": trivial connection solve failed during --edit-benchmark: " + est.message);
+      tc.field_angles(angles);
+      times.push_back(edit_clock.total());
+    }
+    if(!times.empty()) {
+      std::sort(times.begin(), times.end());
+      const std::size_t m = times.size() / 2;
+      edit_median = times.size() % 2 ? times[m] : 0.5 * (times[m - 1] + times[m]);
+    }
+  }
+
+  // As set before the edits, rounded to multiples of 1/N as the library stores them.
+  std::sort(sing.begin(), sing.end());
+  std::vector<std::pair<std::size_t, double>> prescribed;
+  for(const auto& s : sing)
+    if(s.second != 0) prescribed.push_back(std::make_pair(s.first, std::round(s.second * double(N)) / double(N)));
+
+  Json turning_numbers = Json::array();
+  for(double t : topo.generator_turning_numbers) turning_numbers.push_back(t);
+  Json timings = Json::object();
+  timings["setup_s"] = construct_s + st.factor_seconds;
+  timings["solve_s"] = st.solve_seconds;
+  timings["field_s"] = field_s;
+  timings["edit_median_s"] = edit_median;
+
+  Json out = Json::object();
+  out["N"] = N;
+  out["weights"] = weights_name;
+  out["prescribed"] = singularity_list(prescribed);
+  out["found"] = found_list(topo);
+  out["generator_turning_numbers"] = std::move(turning_numbers);
+  out["energy"] = st.energy;
+  out["residual"] = st.residual;
+  out["max_holonomy_error"] = st.max_holonomy_error;
+  out["success"] = st.success;
+  out["timings"] = std::move(timings);
+  return out;
+}
+
+// ---- singularities ------------------------------------------------------------------------
+
+Json run_singularities(const Args& args)
+{
+  const std::string& file = args.positional[0];
+  const long N = symmetry_order_option(args);
+  if(!args.has("field")) throw Usage_error("missing option --field FILE" + see_help(args.command));
+  const std::string ff = args.value("field");
+  Mesh mesh;
+  load_mesh(file, mesh);
+  const std::size_t nf = num_faces(mesh);
+  Face_vector_property vectors =
+    mesh.add_property_map<face_descriptor, K::Vector_3>("f:smdf_vector", K::Vector_3(0, 0, 0)).first;
+  std::size_t count = 0;
+  for_each_data_line(ff, [&](std::size_t line_no, const std::vector<std::string>& tok) {
+    if(count >= nf)
+      throw line_error(ff, line_no, "more vectors than the " + std::to_string(nf) + " faces of the mesh");
+    if(tok.size() != 3)
+      throw line_error(ff, line_no, "expected 'x y z', got " + std::to_string(tok.size()) + " fields");
+    double v[3];
+    for(int k = 0; k < 3; ++k) {
+      char* end = nullptr;
+      v[k] = std::strtod(tok[k].c_str(), &end);
+      if(*end != '\0' || !std::isfinite(v[k]))
+        throw line_error(ff, line_no, "'" + shorten(tok[k]) + "' is not a finite number");
+    }
+    if(v[0] == 0 && v[1] == 0 && v[2] == 0)
+      throw line_error(ff, line_no, "the vector of face " + std::to_string(count) + " is zero");
+    put(vectors, face_descriptor(Mesh::size_type(count)), K::Vector_3(v[0], v[1], v[2]));
+    ++count;
+  });
+  if(count < nf)
+    throw file_error(ff, "only " + std::to_string(count) + " vectors for the " + std::to_string(nf) +
+                     " faces of the mesh (one line 'x y z' per face)", "file_error");
+  Face_angle_property angles = mesh.add_property_map<face_descriptor, double>("f:smdf_angle", 0.).first;
+  SMDF::vectors_to_face_angles(mesh, vectors, angles);
+  const SMDF::Field_topology<Mesh> topo =
+    on_file(file, [&] { return SMDF::field_singularities(mesh, angles, SMDF::parameters::symmetry_order(int(N))); });
+  Json turning_numbers = Json::array();
+  for(double t : topo.generator_turning_numbers) turning_numbers.push_back(t);
+  Json out = Json::object();
+  out["N"] = N;
+  out["singularities"] = found_list(topo);
+  out["generator_turning_numbers"] = std::move(turning_numbers);
+  out["max_rounding_error"] = topo.max_rounding_error;
+  return out;
+}
+
 // ---- Dispatch table -----------------------------------------------------------------------
 
 const std::vector<Command>& commands()
@@ -712,6 +1082,38 @@ const std::vector<Command>& commands()
      "unless --lengths gives one length per edge (vertex indices in either order; blank lines\n"
      "and lines starting with '#' are ignored). Faces of zero area are an error.\n",
      run_holonomy},
+    {"connection", {"MESH"},
+     {{"singularities", "LIST", "prescribed indices 'v:k,v:k,...' (k integer, p/q or decimal)"},
+      {"singularities-file", "FILE", "prescribed indices, one line 'v k' per vertex"},
+      {"N", "n", "symmetry order (1 vectors, 2 lines, 4 crosses; default 1)"},
+      {"weights", "W", "cotan (default) or unit"},
+      {"generator-turning", "LIST", "turning numbers 'g:t,...' of the generators (default 0)"},
+      {"constraints", "FILE", "directional constraints: lines 'face angle' or 'face x y z'"},
+      {"field-out", "FILE", "write one unit direction 'x y z' per face"},
+      {"connection-out", "FILE", "write 'i j angle' per interior edge (adjustment angle)"},
+      {"edit-benchmark", "K", "time K random singularity moves (re-solve + field)"}},
+     "trivial connection with prescribed singularities and its N-RoSy field",
+     "Computes the trivial connection closest to Levi-Civita with the prescribed singularity\n"
+     "indices (multiples of 1/N at interior vertices; on a closed component they must sum to\n"
+     "its Euler characteristic) and generator turning numbers, and the face field it transports.\n"
+     "Prints {N, weights, prescribed: [{vertex, index}], found: [{vertex, index}] (read back\n"
+     "from the computed field), generator_turning_numbers (read back), energy, residual,\n"
+     "max_holonomy_error, success, timings: {setup_s, solve_s, field_s, edit_median_s}}.\n"
+     "Constraint angles are in radians in the face frame, counterclockwise from halfedge(f);\n"
+     "3D directions are projected on the face plane. Files may hold blank lines and '#'\n"
+     "comments. --connection-out writes, per interior edge, the vertices i j of halfedge(e) and\n"
+     "the adjustment angle for crossing it from its right face into its left face.\n"
+     "--edit-benchmark K moves a random singularity K times (pseudo-random, fixed seed) and\n"
+     "reports the median time of solve + field (null without singularities).\n",
+     run_connection},
+    {"singularities", {"MESH"},
+     {{"field", "FILE", "one direction 'x y z' per face, in file order (required)"},
+      {"N", "n", "symmetry order (default 1)"}},
+     "singularities and generator turning numbers of a face field",
+     "Reads one 3D direction per face (as written by 'connection --field-out'), projects it on\n"
+     "the face plane and prints {N, singularities: [{vertex, index}], generator_turning_numbers,\n"
+     "max_rounding_error}. Indices are multiples of 1/N; generators are those of 'generators'.\n",
+     run_singularities},
   };
   return table;
 }
