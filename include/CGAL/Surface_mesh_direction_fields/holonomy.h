@@ -8,6 +8,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh_arrays.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/development.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/tree_cotree.h>
+#include <CGAL/Surface_mesh_direction_fields/homology_generators.h>
 
 #include <array>
 #include <cmath>
@@ -176,6 +177,14 @@ public:
     std::vector<halfedge_descriptor> out;
     for(int h : d) out.push_back(m_.halfedge_descriptor_of(h, tm_));
     return out;
+  }
+
+  /// The homology generators of the mesh, as tree_cotree_generators() computes them, from the
+  /// connectivity already stored in this object (no second pass over the mesh).
+  std::vector<Homology_generator<TriangleMesh>> tree_cotree_generators() const
+  {
+    internal::Topology_arrays t(m_);
+    return internal::to_homology_generators(m_, internal::tree_cotree(m_, t), tm_);
   }
 
   /// Generalised holonomy of a primal edge loop: that of dual_cycle_along_primal_loop().

@@ -158,6 +158,9 @@ public:
     public_gens_ = internal::to_homology_generators(m_, gens_, tm);
     for(const auto& g : gens_) z_.push_back(internal::wrap_angle(internal::transport_along(m_, g.dual)));
     internal::vertex_curvatures(m_, K_);
+    increment_.resize(m_.number_of_halfedges());
+    for(std::size_t h = 0; h < increment_.size(); ++h)
+      increment_[h] = m_.face[h] >= 0 && m_.face[h ^ 1] >= 0 ? internal::transport_increment(m_, int(h)) : 0.;
     index_.assign(m_.number_of_vertices(), 0.);
     turning_.assign(gens_.size(), 0.);
     x_.assign(m_.number_of_edges(), 0.);
@@ -287,7 +290,7 @@ public:
   double connection_angle(halfedge_descriptor h) const
   {
     const int hi = m_.halfedge_index(h, tm_);
-    return internal::transport_increment(m_, hi) + ((hi & 1) ? -x_[hi >> 1] : x_[hi >> 1]);
+    return connection_angle_index(hi);
   }
 
   /// Holonomy of the computed connection around a dual cycle: its Levi-Civita holonomy taken in
@@ -399,52 +402,55 @@ private:
   {
     col_of_edge_.assign(m_.number_of_edges(), -1);
     edge_of_col_.clear();
-    std::vector<double> w;
     for(std::size_t e = 0; e < m_.number_of_edges(); ++e) {
       if(m_.is_border_edge(int(e))) continue;
       col_of_edge_[e] = int(edge_of_col_.size());
       edge_of_col_.push_back(int(e));
-      if(weights_ == UNIT_WEIGHTS) { w.push_back(1.); continue; }
-      double c = 0;
-      for(int h : {int(2 * e), int(2 * e + 1)}) {
-        const int hn = m_.next[h];
-        c += 0.5 * corner_cotangent(m_.edge_length(h), m_.edge_length(hn), m_.edge_length(m_.next[hn]));
-      }
-      w.push_back(c);
     }
-    if(weights_ == COTAN_WEIGHTS) {
-      double sum = 0;
-      std::size_t count = 0;
-      for(double c : w) if(c > 0 && std::isfinite(c)) { sum += c; ++count; }
-      const double floor = clamp_ * (count ? sum / double(count) : 1.);
-      for(double& c : w) if(!(c >= floor)) c = floor;
+    W_.setOnes(Eigen::Index(edge_of_col_.size()));
+    if(weights_ == UNIT_WEIGHTS) return;
+    // per face: cot of the corner opposite each halfedge, (a^2 + b^2 - c^2) / 4A, added to w_e / 2
+    std::vector<double> w(m_.number_of_edges(), 0.);
+    for(std::size_t f = 0; f < m_.number_of_faces(); ++f) {
+      const int h0 = m_.face_halfedge[f], h1 = m_.next[h0], h2 = m_.next[h1];
+      const double l0 = m_.edge_length(h0), l1 = m_.edge_length(h1), l2 = m_.edge_length(h2);
+      const double q0 = l0 * l0, q1 = l1 * l1, q2 = l2 * l2;
+      const double inv8A = 1. / (8. * triangle_area(l0, l1, l2));
+      w[h0 >> 1] += (q1 + q2 - q0) * inv8A;
+      w[h1 >> 1] += (q2 + q0 - q1) * inv8A;
+      w[h2 >> 1] += (q0 + q1 - q2) * inv8A;
     }
-    W_ = Eigen::Map<Eigen::VectorXd>(w.data(), Eigen::Index(w.size()));
+    double sum = 0;
+    std::size_t count = 0;
+    for(int e : edge_of_col_) if(w[e] > 0 && std::isfinite(w[e])) { sum += w[e]; ++count; }
+    const double floor = clamp_ * (count ? sum / double(count) : 1.);
+    for(std::size_t c = 0; c < edge_of_col_.size(); ++c) {
+      const double x = w[edge_of_col_[c]];
+      W_[Eigen::Index(c)] = x >= floor ? x : floor;
+    }
   }
 
   // Rows: interior vertices (minus one per closed component), generators, constraint paths.
+  // A is assembled column by column (one column per interior edge): the vertex rows of an edge
+  // come first and in increasing order, then the generator and constraint rows.
   void build_system()
   {
+    const int ne = int(m_.number_of_edges());
     row_of_vertex_.assign(m_.number_of_vertices(), -1);
     std::vector<char> dropped(topo_.components.size(), 0);
     int r = 0;
-    std::vector<Eigen::Triplet<double, int>> trip;
     for(std::size_t v = 0; v < m_.number_of_vertices(); ++v) {
       if(m_.is_isolated(int(v)) || m_.is_boundary_vertex(int(v))) continue;
       const int c = topo_.vertex_component[v];
       if(topo_.components[c].boundary_loops == 0 && !dropped[c]) { dropped[c] = 1; continue; }
-      row_of_vertex_[v] = r;
-      const int h0 = m_.vertex_out[v];
-      int h = h0;
-      do {
-        trip.emplace_back(r, col_of_edge_[h >> 1], (h & 1) ? -1. : 1.);
-        h = m_.ccw_out(h);
-      } while(h != h0);
-      ++r;
+      row_of_vertex_[v] = r++;
     }
+    // sparse rows beyond the vertex rows: (column, row, value)
+    struct Entry { int col, row; double value; };
+    std::vector<Entry> extra;
     first_generator_row_ = r;
     for(const auto& g : gens_) {
-      for(int h : g.dual) trip.emplace_back(r, col_of_edge_[h >> 1], (h & 1) ? -1. : 1.);
+      for(int h : g.dual) extra.push_back(Entry{col_of_edge_[h >> 1], r, (h & 1) ? -1. : 1.});
       ++r;
     }
     first_constraint_row_ = r;
@@ -462,22 +468,52 @@ private:
         path.push_back(up);
         f = m_.face[up];
       } while(constrained[f] < 0);
-      for(int h : path) trip.emplace_back(r, col_of_edge_[h >> 1], (h & 1) ? -1. : 1.);
+      for(int h : path) extra.push_back(Entry{col_of_edge_[h >> 1], r, (h & 1) ? -1. : 1.});
       constraint_paths_.push_back(path);
       constraint_targets_.push_back(std::make_pair(int(i), constrained[f]));
       ++r;
     }
     rows_ = r;
-    A_.resize(r, Eigen::Index(edge_of_col_.size()));
-    A_.setFromTriplets(trip.begin(), trip.end());
+    std::sort(extra.begin(), extra.end(),
+              [](const Entry& a, const Entry& b) { return a.col != b.col ? a.col < b.col : a.row < b.row; });
+
+    const int ncols = int(edge_of_col_.size());
+    A_.resize(r, ncols);
+    Eigen::VectorXi per_col = Eigen::VectorXi::Constant(ncols, 2);
+    for(const Entry& x : extra) ++per_col[x.col];
+    A_.reserve(per_col);
+    std::size_t k = 0;
+    for(int c = 0; c < ncols; ++c) {
+      const int e = edge_of_col_[c];
+      // vertex u = source(2e) crosses 2e (sign +1), w = target(2e) crosses 2e + 1 (sign -1)
+      const int ru = row_of_vertex_[m_.target[2 * e + 1]], rw = row_of_vertex_[m_.target[2 * e]];
+      if(ru >= 0 && rw >= 0 && rw < ru) { A_.insert(rw, c) = -1.; A_.insert(ru, c) = 1.; }
+      else { if(ru >= 0) A_.insert(ru, c) = 1.; if(rw >= 0) A_.insert(rw, c) = -1.; }
+      for(; k < extra.size() && extra[k].col == c; ++k) {
+        double v = extra[k].value;
+        while(k + 1 < extra.size() && extra[k + 1].col == c && extra[k + 1].row == extra[k].row) v += extra[++k].value;
+        if(v != 0) A_.insert(extra[k].row, c) = v;
+      }
+    }
     A_.makeCompressed();
+    CGAL_USE(ne);
   }
 
+  // Lower triangle of A W A^T as the sum over columns of w_c a_c a_c^T (a column of A has two
+  // vertex entries plus one per generator or constraint path crossing the edge).
   Sparse_matrix_int normal_matrix() const
   {
-    Sparse_matrix_int AW = A_ * W_.asDiagonal();
-    Sparse_matrix_int L = AW * Sparse_matrix_int(A_.transpose());
-    return L.template triangularView<Eigen::Lower>();
+    std::vector<Eigen::Triplet<double, int>> t;
+    t.reserve(std::size_t(A_.nonZeros()) * 2);
+    for(Eigen::Index c = 0; c < A_.outerSize(); ++c) {
+      const double w = W_[c];
+      for(Sparse_matrix_int::InnerIterator i(A_, c); i; ++i)
+        for(Sparse_matrix_int::InnerIterator j(A_, c); j && j.row() <= i.row(); ++j)
+          t.emplace_back(int(i.row()), int(j.row()), w * i.value() * j.value());
+    }
+    Sparse_matrix_int L(rows_, rows_);
+    L.setFromTriplets(t.begin(), t.end());
+    return L;
   }
 
   Eigen::VectorXd rhs() const
@@ -518,7 +554,7 @@ private:
 
   double connection_angle_index(int h) const
   {
-    return internal::transport_increment(m_, h) + ((h & 1) ? -x_[h >> 1] : x_[h >> 1]);
+    return increment_[h] + ((h & 1) ? -x_[h >> 1] : x_[h >> 1]);
   }
 
   // Independent check of the result: holonomy around every interior vertex and generator.
@@ -547,6 +583,7 @@ private:
   {
     const int nf = int(m_.number_of_faces());
     parent_cross_.assign(nf, -1);
+    parent_face_.assign(nf, -1);
     roots_.clear();
     order_.clear();
     order_.reserve(nf);
@@ -564,6 +601,7 @@ private:
           if(g < 0 || visited[g]) continue;
           visited[g] = 1;
           parent_cross_[g] = h ^ 1;
+          parent_face_[g] = f;
           order_.push_back(g);
         }
       }
@@ -582,12 +620,9 @@ private:
     if(special_root < 0) {
       // order_ lists parents before children
       for(int f : order_) {
-        if(parent_cross_[f] < 0) {
-          beta[f] = constraint_of[f] >= 0 ? constraint_angles_[constraint_of[f]] : start_angle;
-          continue;
-        }
         const int h = parent_cross_[f];
-        beta[f] = beta[m_.face[h ^ 1]] + connection_angle_index(h);
+        if(h < 0) beta[f] = constraint_of[f] >= 0 ? constraint_angles_[constraint_of[f]] : start_angle;
+        else beta[f] = beta[parent_face_[f]] + connection_angle_index(h);
       }
       wrap_field(beta);
       return;
@@ -624,6 +659,7 @@ private:
   std::vector<internal::Generator_arrays> gens_;
   std::vector<Homology_generator<TriangleMesh>> public_gens_;
   std::vector<double> z_, K_, index_, turning_, x_;
+  std::vector<double> increment_;   // Levi-Civita transport increment per halfedge
   std::vector<std::array<double, 6>> frames_;
   int N_ = 1;
   Connection_weights weights_ = COTAN_WEIGHTS;
@@ -641,7 +677,7 @@ private:
   std::vector<double> constraint_angles_;
   std::vector<std::vector<int>> constraint_paths_;
   std::vector<std::pair<int, int>> constraint_targets_;
-  std::vector<int> parent_cross_, order_, roots_;
+  std::vector<int> parent_cross_, parent_face_, order_, roots_;
 };
 
 /// \ingroup PkgSurfaceMeshDirectionFieldsTrivialConnections

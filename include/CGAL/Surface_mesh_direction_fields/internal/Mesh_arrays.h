@@ -22,6 +22,9 @@ namespace CGAL {
 namespace Surface_mesh_direction_fields {
 namespace internal {
 
+template <typename TM> struct Is_surface_mesh : std::false_type {};
+template <typename P> struct Is_surface_mesh<CGAL::Surface_mesh<P>> : std::true_type {};
+
 // Flat, index-based copy of a triangle mesh's connectivity and intrinsic metric.
 // Every algorithm of the package runs on these arrays: graph traversals through the
 // BGL interface cost a property-map lookup per step, which dominates at 1M faces.
@@ -100,8 +103,12 @@ public:
 
   int vertex_index(vertex_descriptor v) const { return static_cast<int>(get(vim_, v)); }
   int face_index(face_descriptor f) const { return static_cast<int>(get(fim_, f)); }
-  int halfedge_index(halfedge_descriptor h, const TriangleMesh&) const { return get(him_, h); }
-  int edge_index(edge_descriptor e, const TriangleMesh& tm) const { return get(him_, halfedge(e, tm)) >> 1; }
+  int halfedge_index(halfedge_descriptor h, const TriangleMesh&) const
+  {
+    if constexpr(Is_surface_mesh<TriangleMesh>::value) { if(direct_) return int(h.idx()); }
+    return get(him_, h);
+  }
+  int edge_index(edge_descriptor e, const TriangleMesh& tm) const { return halfedge_index(halfedge(e, tm), tm) >> 1; }
 
 private:
   typedef typename CGAL::GetInitializedVertexIndexMap<TriangleMesh>::const_type VIM;
@@ -112,22 +119,27 @@ private:
   VIM vim_;
   FIM fim_;
   HIM him_;
+  // Surface_mesh without removed elements: descriptors' idx() already is our numbering
+  // (halfedges 2e and 2e + 1 of edge e), so no halfedge property is allocated.
+  bool direct_ = false;
 
   void build_connectivity(const TriangleMesh& tm)
   {
     vim_ = CGAL::get_initialized_vertex_index_map(tm);
     fim_ = CGAL::get_initialized_face_index_map(tm);
-    him_ = get(CGAL::dynamic_halfedge_property_t<int>(), tm);
+    if constexpr(Is_surface_mesh<TriangleMesh>::value) direct_ = !tm.has_garbage();
+    if(!direct_) him_ = get(CGAL::dynamic_halfedge_property_t<int>(), tm);
 
     vertices.assign(CGAL::vertices(tm).begin(), CGAL::vertices(tm).end());
     edges.assign(CGAL::edges(tm).begin(), CGAL::edges(tm).end());
     faces.assign(CGAL::faces(tm).begin(), CGAL::faces(tm).end());
     const std::size_t nh = 2 * edges.size();
-    for(std::size_t e = 0; e < edges.size(); ++e) {
-      const halfedge_descriptor h0 = halfedge(edges[e], tm);
-      put(him_, h0, int(2 * e));
-      put(him_, CGAL::opposite(h0, tm), int(2 * e + 1));
-    }
+    if(!direct_)
+      for(std::size_t e = 0; e < edges.size(); ++e) {
+        const halfedge_descriptor h0 = halfedge(edges[e], tm);
+        put(him_, h0, int(2 * e));
+        put(him_, CGAL::opposite(h0, tm), int(2 * e + 1));
+      }
     next.assign(nh, -1);
     target.assign(nh, -1);
     face.assign(nh, -1);

@@ -64,23 +64,8 @@ std::vector<Generator_arrays> tree_cotree(const Mesh_arrays<TM>& m, const Topolo
   const int ne = int(m.number_of_edges());
   std::vector<char> in_tree(ne, 0), in_cotree(ne, 0);
 
-  // --- primal spanning tree: boundary loops minus one edge each first, then BFS order
-  std::vector<int> uf(nv);
-  std::iota(uf.begin(), uf.end(), 0);
-  auto find = [&](int x) { while(uf[x] != x) { uf[x] = uf[uf[x]]; x = uf[x]; } return x; };
-  auto unite = [&](int e) {
-    const int a = find(m.target[2 * e]), b = find(m.target[2 * e + 1]);
-    if(a == b) return false;
-    uf[a] = b;
-    in_tree[e] = 1;
-    return true;
-  };
-  for(const auto& loop : t.loops)
-    for(std::size_t k = 1; k < loop.size(); ++k) unite(loop[k] >> 1);
-
-  std::vector<int> order;   // BFS order of vertices
-  order.reserve(nv);
-  std::vector<char> visited(nv, 0);
+  // --- primal spanning tree with parent pointers (root: first vertex of each component)
+  std::vector<int> parent_h(nv, -1), depth_v(nv, -1);
   auto for_each_out = [&](int v, auto&& fn) {
     const int start = m.vertex_out[v];
     int h = start;
@@ -90,26 +75,57 @@ std::vector<Generator_arrays> tree_cotree(const Mesh_arrays<TM>& m, const Topolo
       h = m.ccw_out(h);
     } while(h != start);
   };
-  for(int r = 0; r < nv; ++r) {
-    if(visited[r] || m.is_isolated(r)) continue;
-    std::size_t head = order.size();
-    order.push_back(r);
-    visited[r] = 1;
-    while(head < order.size()) {
-      const int v = order[head++];
-      for_each_out(v, [&](int h) {
-        const int w = m.target[h];
-        unite(h >> 1);
-        if(!visited[w]) { visited[w] = 1; order.push_back(w); }
-      });
+  std::vector<int> queue;
+  queue.reserve(nv);
+  if(t.loops.empty()) {
+    // closed: the breadth-first tree itself
+    for(int r = 0; r < nv; ++r) {
+      if(depth_v[r] >= 0 || m.is_isolated(r)) continue;
+      depth_v[r] = 0;
+      std::size_t head = queue.size();
+      queue.push_back(r);
+      while(head < queue.size()) {
+        const int v = queue[head++];
+        for_each_out(v, [&](int h) {
+          const int w = m.target[h];
+          if(depth_v[w] >= 0) return;
+          depth_v[w] = depth_v[v] + 1;
+          parent_h[w] = h;
+          in_tree[h >> 1] = 1;
+          queue.push_back(w);
+        });
+      }
     }
-  }
-
-  // parent pointers of the primal tree, rooted at the first vertex of each component
-  std::vector<int> parent_h(nv, -1), depth_v(nv, -1);
-  {
-    std::vector<int> queue;
-    queue.reserve(nv);
+  } else {
+    // every boundary loop minus one edge first (union-find), then edges in breadth-first order
+    std::vector<int> uf(nv);
+    std::iota(uf.begin(), uf.end(), 0);
+    auto find = [&](int x) { while(uf[x] != x) { uf[x] = uf[uf[x]]; x = uf[x]; } return x; };
+    auto unite = [&](int e) {
+      const int a = find(m.target[2 * e]), b = find(m.target[2 * e + 1]);
+      if(a == b) return;
+      uf[a] = b;
+      in_tree[e] = 1;
+    };
+    for(const auto& loop : t.loops)
+      for(std::size_t k = 1; k < loop.size(); ++k) unite(loop[k] >> 1);
+    std::vector<char> visited(nv, 0);
+    std::vector<int> order;
+    order.reserve(nv);
+    for(int r = 0; r < nv; ++r) {
+      if(visited[r] || m.is_isolated(r)) continue;
+      std::size_t head = order.size();
+      order.push_back(r);
+      visited[r] = 1;
+      while(head < order.size()) {
+        const int v = order[head++];
+        for_each_out(v, [&](int h) {
+          const int w = m.target[h];
+          unite(h >> 1);
+          if(!visited[w]) { visited[w] = 1; order.push_back(w); }
+        });
+      }
+    }
     for(int r : order) {
       if(depth_v[r] >= 0) continue;
       depth_v[r] = 0;
@@ -133,7 +149,7 @@ std::vector<Generator_arrays> tree_cotree(const Mesh_arrays<TM>& m, const Topolo
   // loop's virtual face hangs as a leaf on its one edge left out of the primal tree.
   std::vector<int> parent_cross(nf, -1), depth_f(nf, -1);
   {
-    std::vector<int> queue;
+    queue.clear();
     queue.reserve(nf);
     for(int r = 0; r < nf; ++r) {
       if(depth_f[r] >= 0) continue;

@@ -1,0 +1,340 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_CONE_METRIC_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_CONE_METRIC_H
+
+#include <CGAL/Surface_mesh_direction_fields/errors.h>
+#include <CGAL/Surface_mesh_direction_fields/parameters.h>
+#include <CGAL/Surface_mesh_direction_fields/intrinsic_triangle.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Mesh_arrays.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/development.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/topology.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/ricci_flow.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <chrono>
+#include <cmath>
+#include <deque>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsConeMetrics
+/// Outcome of compute_cone_metric().
+struct Cone_metric_status
+{
+  bool converged = false;          ///< `true` if the maximum curvature error is at most the tolerance
+  int iterations = 0;              ///< Newton iterations performed
+  double max_curvature_error = 0;  ///< \f$\max_v |K_v - \bar K_v|\f$ of the output metric (radians)
+  std::string message;             ///< why it did not converge; empty on success
+  double seconds = 0;              ///< wall-clock time of the call
+};
+
+namespace internal {
+struct No_cone_metric_visitor { void operator()(int, double) const {} };
+} // namespace internal
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsConeMetrics
+/// Computes a flat cone metric: edge lengths whose discrete curvature equals the prescribed
+/// target at every vertex, conformally equivalent to the input metric.
+///
+/// <b>Scheme.</b> Discrete conformal vertex scaling, the Yamabe member of the unified discrete
+/// Ricci flow family (Luo 2004; Springborn, Schröder, Pinkall 2008; Zhang, Guo, Zeng, Luo,
+/// Yau, Gu 2014): \f$\ell_{ij}(u) = \ell^0_{ij}\, e^{(u_i + u_j)/2}\f$ with one conformal factor
+/// \f$u_i\f$ per vertex. It reproduces the input metric exactly at \f$u = 0\f$, whereas
+/// Thurston's circle packing metric used by Lai et al. (2010, section 4.1.1, after Jin et al.
+/// 2008) only approximates it. The curvature \f$K(u)\f$ is the gradient of a convex energy whose
+/// Hessian \f$\partial K_i/\partial u_j\f$ is the cotangent Laplacian of the current metric
+/// (\f$-\frac12(\cot\alpha_{ij} + \cot\beta_{ij})\f$ off the diagonal, rows summing to zero),
+/// positive semi-definite with the constants of each connected component as kernel. The target
+/// is reached by Newton's method: one \f$u\f$ per component is fixed, the reduced Hessian is
+/// factored by CHOLMOD (symbolic analysis done once, the triangulation is fixed), and a
+/// backtracking line search accepts a step only if every triangle stays valid (strict triangle
+/// inequalities) and \f$\|K - \bar K\|_2\f$ decreases. At the end \f$u\f$ is shifted on each
+/// component so that its total area equals the input's.
+///
+/// The triangulation is never changed (no intrinsic edge flips). If the target metric does
+/// not exist on it (a line search step would degenerate a triangle), or the tolerance is not
+/// reached within the iteration budget, the status says so (`converged == false` and a
+/// message), and `output_lengths` holds the last valid iterate, which is a valid metric but
+/// not the requested one.
+///
+/// Targets: the angle defect \f$\bar K_v = 2\pi - \sum\theta\f$ at interior vertices (cones
+/// have \f$\bar K_v \neq 0\f$, \f$2\pi\f$ times the index of a field singularity; all others 0)
+/// and the geodesic curvature \f$\bar\kappa_v = \pi - \sum\theta\f$ at boundary vertices
+/// (\f$\pi/2\f$ at the corners of a rectangle, 0 along straight sides).
+///
+/// Throws `Input_error` if the mesh is invalid (see `compute_vertex_curvatures()`), if a target
+/// is not finite, if an interior target is \f$\geq 2\pi\f$ (a cone of index \f$\geq 1\f$ has no
+/// positive angle sum at a single vertex; Lai et al. punch a hole there, which this function
+/// does not do: cut a hole and prescribe its boundary curvature instead), if a boundary target
+/// is \f$\geq \pi\f$, or (kind `INCONSISTENT_INDICES`) if on a connected component the targets
+/// do not sum to \f$2\pi\chi\f$ (Gauss–Bonnet) within \f$10^{-8}\max(1, 2\pi|\chi|)\f$.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
+/// \tparam VertexCurvatureMap a readable property map, `vertex_descriptor` keys, `double` values
+/// \tparam EdgeLengthMap a writable property map, `edge_descriptor` keys, `double` values
+///
+/// \param tm the mesh
+/// \param target_curvature the target \f$\bar K_v\f$ / \f$\bar\kappa_v\f$ of every vertex
+/// \param output_lengths receives the length of every edge (also when not converged)
+/// \param np optional named parameters:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{edge_length_map}
+///     \cgalParamDescription{the input metric \f$\ell^0\f$}
+///     \cgalParamType{a readable property map with `edge_descriptor` keys and `double` values}
+///     \cgalParamDefault{Euclidean lengths from `vertex_point_map`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{vertex positions, used only when no `edge_length_map` is given}
+///     \cgalParamType{a readable property map with `vertex_descriptor` keys and 3D point values}
+///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{conformal_factor_map}
+///     \cgalParamDescription{receives \f$u_v\f$, so that the output length of edge \f$ij\f$ is \f$\ell^0_{ij} e^{(u_i+u_j)/2}\f$}
+///     \cgalParamType{a writable property map with `vertex_descriptor` keys and `double` values}
+///     \cgalParamDefault{not written}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_iterations}
+///     \cgalParamDescription{maximum number of Newton iterations}
+///     \cgalParamType{`int`}
+///     \cgalParamDefault{100}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{curvature_tolerance}
+///     \cgalParamDescription{convergence threshold on \f$\max_v |K_v - \bar K_v|\f$, in radians (scale-free)}
+///     \cgalParamType{`double`, positive}
+///     \cgalParamDefault{`1e-10`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{visitor}
+///     \cgalParamDescription{progress callback, called as `visitor(iteration, max_error)` once with
+///       iteration 0 for the input metric and after every Newton iteration; `max_error` is the
+///       current \f$\max_v |K_v - \bar K_v|\f$}
+///     \cgalParamType{a callable with signature `void(int, double)`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+template <typename TriangleMesh, typename VertexCurvatureMap, typename EdgeLengthMap,
+          typename NamedParameters = parameters::Default_named_parameters>
+Cone_metric_status compute_cone_metric(const TriangleMesh& tm,
+                                       VertexCurvatureMap target_curvature,
+                                       EdgeLengthMap output_lengths,
+                                       const NamedParameters& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const auto t0 = std::chrono::steady_clock::now();
+
+  const int max_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 100);
+  const double tol = choose_parameter(get_parameter(np, internal_np::curvature_tolerance), 1e-10);
+  if(!(tol > 0) || !std::isfinite(tol))
+    throw Input_error(Input_error::INVALID_ARGUMENT, "curvature_tolerance must be positive and finite");
+  if(max_iterations < 0)
+    throw Input_error(Input_error::INVALID_ARGUMENT, "number_of_iterations must be non-negative");
+  auto visitor = choose_parameter(get_parameter(np, CGAL::internal_np::visitor),
+                                  internal::No_cone_metric_visitor());
+
+  internal::Mesh_arrays<TriangleMesh> m(tm, np);
+  internal::Topology_arrays topo(m);
+  const std::size_t nv = m.number_of_vertices();
+
+  // --- validation of the targets
+  std::vector<double> target(nv, 0.);
+  std::vector<double> sum(topo.components.size(), 0.);
+  for(std::size_t v = 0; v < nv; ++v) {
+    if(m.is_isolated(int(v))) continue;
+    const double k = double(get(target_curvature, m.vertices[v]));
+    const bool boundary = m.is_boundary_vertex(int(v));
+    std::ostringstream os;
+    os.precision(17);
+    if(!std::isfinite(k)) {
+      os << "target curvature of vertex " << v << " is not finite";
+      throw Input_error(Input_error::INVALID_ARGUMENT, os.str());
+    }
+    if(!boundary && k >= 2 * CGAL_PI) {
+      os << "target curvature " << k << " of interior vertex " << v << " is >= 2*pi: a cone of "
+         << "index >= 1 has no positive angle sum at a single vertex; punching a hole (Lai et al. "
+         << "2010, section 4.1.1) is not supported: cut a hole and prescribe its boundary curvature";
+      throw Input_error(Input_error::INVALID_ARGUMENT, os.str());
+    }
+    if(boundary && k >= CGAL_PI) {
+      os << "target geodesic curvature " << k << " of boundary vertex " << v << " is >= pi";
+      throw Input_error(Input_error::INVALID_ARGUMENT, os.str());
+    }
+    target[v] = k;
+    sum[topo.vertex_component[v]] += k;
+  }
+  for(std::size_t c = 0; c < topo.components.size(); ++c) {
+    const double chi = double(topo.components[c].euler_characteristic());
+    const double expected = 2 * CGAL_PI * chi;
+    if(std::abs(sum[c] - expected) > 1e-8 * (std::max)(1., std::abs(expected))) {
+      std::ostringstream os;
+      os.precision(17);
+      os << "Gauss-Bonnet: the target curvatures of component " << c << " sum to " << sum[c]
+         << " but 2*pi*chi = " << expected << " (Euler characteristic " << chi << ")";
+      throw Input_error(Input_error::INCONSISTENT_INDICES, os.str());
+    }
+  }
+
+  // --- Newton
+  internal::Vertex_scaling_flow<TriangleMesh> flow(m, topo);
+  std::vector<double> u(nv, 0.), len;
+  internal::Vertex_scaling_result r = flow.run(target, u, len, max_iterations, tol, visitor);
+
+  // --- area normalisation per component: shift u so that the total area is preserved
+  std::vector<double> a0(topo.components.size(), 0.), a1(topo.components.size(), 0.);
+  for(std::size_t f = 0; f < m.number_of_faces(); ++f) {
+    const int h0 = m.face_halfedge[f], h1 = m.next[h0], h2 = m.next[h1];
+    const int c = topo.face_component[f];
+    a0[c] += triangle_area(m.length[h0 >> 1], m.length[h1 >> 1], m.length[h2 >> 1]);
+    a1[c] += triangle_area(len[h0 >> 1], len[h1 >> 1], len[h2 >> 1]);
+  }
+  bool rescaled = false;
+  std::vector<double> u2 = u;
+  for(std::size_t c = 0; c < topo.components.size(); ++c) {
+    if(!(a1[c] > 0) || a0[c] == a1[c]) continue;
+    const double shift = std::log(a0[c] / a1[c]);   // area scales like e^u
+    if(!std::isfinite(shift)) continue;
+    for(std::size_t v = 0; v < nv; ++v)
+      if(topo.vertex_component[v] == int(c)) u2[v] += shift;
+    rescaled = true;
+  }
+  if(rescaled) {
+    std::vector<double> len2, ang, k;
+    flow.lengths(u2, len2);
+    if(flow.angles(len2, ang)) {
+      flow.curvatures(ang, k);
+      const double err = flow.max_error(k, target);
+      // keep the normalisation unless it costs the convergence (rounding only)
+      if(err <= tol || !r.converged) {
+        len.swap(len2); u.swap(u2); r.max_error = err; r.converged = err <= tol;
+      }
+    }
+  }
+  if(r.converged) r.message.clear();
+  else if(r.message.empty()) r.message = "curvature tolerance not reached";
+
+  for(std::size_t e = 0; e < m.number_of_edges(); ++e) put(output_lengths, m.edges[e], len[e]);
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::conformal_factor_t>::value) {
+    auto ufm = get_parameter(np, internal_np::conformal_factor);
+    for(std::size_t v = 0; v < nv; ++v) put(ufm, m.vertices[v], u[v]);
+  }
+
+  Cone_metric_status st;
+  st.converged = r.converged;
+  st.iterations = r.iterations;
+  st.max_curvature_error = r.max_error;
+  st.message = r.message;
+  st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return st;
+}
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsConeMetrics
+/// Lays out a topological disk with a flat metric in the plane: the faces are unfolded one
+/// after the other in breadth-first order from the first face (`unfold_vertex()`), which is
+/// placed with `source(halfedge(f))` at the origin and `target(halfedge(f))` on the positive
+/// x axis. Every triangle is laid out counterclockwise; the layout may overlap itself globally
+/// when the boundary winds (large geodesic curvature). Typical use: the output of
+/// compute_cone_metric() with \f$\bar K = 0\f$ inside and the boundary curvature of a polygon.
+///
+/// Returns `true` if every laid-out triangle has positive signed area (the layout is locally
+/// injective), `false` otherwise (rounding on nearly degenerate triangles).
+/// Throws `Input_error` if the mesh is not a single connected component with exactly one
+/// boundary loop and genus 0, or if the metric is not flat: an interior vertex with
+/// \f$|K_v|\f$ above `curvature_tolerance`.
+///
+/// \tparam VertexUVMap a writable property map with `vertex_descriptor` keys and values
+///   constructible from two `double` (e.g. `Point_2`)
+/// \param tm the mesh
+/// \param lengths readable edge map: the flat metric
+/// \param uv receives the planar position of every vertex
+/// \param np optional named parameters:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{curvature_tolerance}
+///     \cgalParamDescription{maximum \f$|K_v|\f$ at interior vertices accepted as flat}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`1e-8`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+template <typename TriangleMesh, typename EdgeLengthMap, typename VertexUVMap,
+          typename NamedParameters = parameters::Default_named_parameters>
+bool lay_out_disk(const TriangleMesh& tm, EdgeLengthMap lengths, VertexUVMap uv,
+                  const NamedParameters& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  typedef typename boost::property_traits<VertexUVMap>::value_type UV;
+  const double tol = choose_parameter(get_parameter(np, internal_np::curvature_tolerance), 1e-8);
+
+  internal::Mesh_arrays<TriangleMesh> m(tm, parameters::edge_length_map(lengths));
+  internal::Topology_arrays topo(m);
+  if(topo.components.size() != 1 || topo.components[0].boundary_loops != 1 ||
+     topo.components[0].genus() != 0 || topo.isolated_vertices != 0) {
+    std::ostringstream os;
+    os << "lay_out_disk() needs one connected disk without isolated vertices; the mesh has "
+       << topo.components.size() << " component(s), "
+       << (topo.components.empty() ? 0 : topo.components[0].boundary_loops)
+       << " boundary loop(s) in the first, genus "
+       << (topo.components.empty() ? 0 : topo.components[0].genus());
+    throw Input_error(Input_error::INVALID_ARGUMENT, os.str());
+  }
+  std::vector<double> k;
+  internal::vertex_curvatures(m, k);
+  for(std::size_t v = 0; v < k.size(); ++v)
+    if(!m.is_boundary_vertex(int(v)) && std::abs(k[v]) > tol) {
+      std::ostringstream os;
+      os << "lay_out_disk(): the metric is not flat: interior vertex " << v
+         << " has angle defect " << k[v];
+      throw Input_error(Input_error::INVALID_ARGUMENT, os.str());
+    }
+
+  const std::size_t nf = m.number_of_faces();
+  std::vector<Point_2> pos(m.number_of_vertices());
+  std::vector<char> placed(m.number_of_vertices(), 0), done(nf, 0);
+  {
+    const int h0 = m.face_halfedge[0], h1 = m.next[h0];
+    const std::array<Point_2, 3> p = internal::canonical_layout(m, 0);
+    const int vs[3] = {m.source(h0), m.target[h0], m.target[h1]};
+    for(int i = 0; i < 3; ++i) { pos[vs[i]] = p[i]; placed[vs[i]] = 1; }
+  }
+  std::deque<int> queue(1, 0);
+  done[0] = 1;
+  while(!queue.empty()) {
+    const int f = queue.front();
+    queue.pop_front();
+    int h = m.face_halfedge[f];
+    for(int i = 0; i < 3; ++i, h = m.next[h]) {
+      const int o = h ^ 1, g = m.face[o];
+      if(g < 0 || done[g]) continue;
+      done[g] = 1;
+      queue.push_back(g);
+      const int r = m.target[m.next[o]];
+      if(placed[r]) continue;
+      // o runs from target(h) to source(h); the third vertex lies to the left of o
+      const int p = m.source(o), q = m.target[o];
+      pos[r] = unfold_vertex(pos[p], pos[q], m.edge_length(o), m.edge_length(m.next[o]),
+                             m.edge_length(m.prev(o)));
+      placed[r] = 1;
+    }
+  }
+  bool ok = true;
+  for(std::size_t f = 0; f < nf; ++f) {
+    const int h0 = m.face_halfedge[f], h1 = m.next[h0];
+    const Point_2& a = pos[m.source(h0)];
+    const Point_2& b = pos[m.target[h0]];
+    const Point_2& c = pos[m.target[h1]];
+    const double area2 = (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
+    if(!(area2 > 0)) ok = false;
+  }
+  for(std::size_t v = 0; v < pos.size(); ++v) put(uv, m.vertices[v], UV(pos[v].x(), pos[v].y()));
+  return ok;
+}
+
+} // namespace Surface_mesh_direction_fields
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_CONE_METRIC_H
