@@ -16,5 +16,6 @@
 #include <CGAL/Surface_mesh_direction_fields/read_triangle_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/trivial_connection.h>
 #include <CGAL/Surface_mesh_direction_fields/field_singularities.h>
+#include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
 
 #endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_H

@@ -197,7 +197,7 @@ Cone_metric_status compute_cone_metric(const TriangleMesh& tm,
   std::vector<double> u2 = u;
   for(std::size_t c = 0; c < topo.components.size(); ++c) {
     if(!(a1[c] > 0) || a0[c] == a1[c]) continue;
-    const double shift = std::log(a0[c] / a1[c]);   // area scales like e^u
+    const double shift = 0.5 * std::log(a0[c] / a1[c]);   // lengths scale like e^c, areas like e^{2c}
     if(!std::isfinite(shift)) continue;
     for(std::size_t v = 0; v < nv; ++v)
       if(topo.vertex_component[v] == int(c)) u2[v] += shift;

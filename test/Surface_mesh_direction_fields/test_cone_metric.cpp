@@ -1,0 +1,414 @@
+// Flat cone metrics by discrete conformal vertex scaling (compute_cone_metric) and planar layout
+// of flat disks (lay_out_disk), for Surface_mesh and Polyhedron_3. Every converged result is
+// checked independently: curvature of the output metric recomputed by compute_vertex_curvatures,
+// strict triangle inequalities on every face, Levi-Civita holonomy of the output metric around
+// non-cone vertices = 0 mod 2pi. Cases: flat tori (generated and genus-1 shared meshes), flat
+// cylinder, 8 cones of pi/2 on genus-0 meshes, one -4pi cone on genus-2 meshes, random
+// chi-consistent cone sets, a rectangle from a disk (layout without flips, 4 corners),
+// exact reproduction at u = 0, Gauss-Bonnet violations and other bad input.
+// Cases that do not converge on the fixed triangulation must say so in the status; they are
+// listed in the output as "NOT CONVERGED".
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
+#include <CGAL/Surface_mesh_direction_fields/intrinsic_geometry.h>
+#include <CGAL/Surface_mesh_direction_fields/holonomy.h>
+#include <CGAL/Surface_mesh_direction_fields/read_triangle_mesh.h>
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "test_util.h"
+#include "mesh_generators.h"
+
+namespace SMDF = CGAL::Surface_mesh_direction_fields;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Surface_mesh;
+typedef CGAL::Polyhedron_3<K> Polyhedron;
+
+static std::vector<std::string> not_converged;
+
+template <typename Mesh>
+struct Tests
+{
+  typedef boost::graph_traits<Mesh> GT;
+  typedef typename GT::vertex_descriptor vertex_descriptor;
+  typedef typename GT::edge_descriptor edge_descriptor;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef std::map<vertex_descriptor, double> Cones;
+  std::mt19937 rng{7};
+
+  // Runs compute_cone_metric with targets `cones` (0 elsewhere) and checks the result.
+  // Returns true if it converged.
+  template <typename LengthMap>
+  bool run(const Mesh& mesh, const Cones& cones, LengthMap out, const std::string& what,
+           int max_iterations = 100)
+  {
+    auto tgt = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+    for(auto v : vertices(mesh)) put(tgt, v, 0.);
+    for(const auto& c : cones) put(tgt, c.first, c.second);
+    auto ufac = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+    int calls = 0, last_it = -1;
+    double last_err = -1;
+    SMDF::Cone_metric_status st = SMDF::compute_cone_metric(
+        mesh, tgt, out,
+        SMDF::parameters::conformal_factor_map(ufac).number_of_iterations(max_iterations)
+            .visitor([&](int it, double err) { ++calls; last_it = it; last_err = err; }));
+    std::cout << what << ": converged " << st.converged << ", " << st.iterations << " iterations, error "
+              << st.max_curvature_error << ", " << st.seconds << " s" << (st.message.empty() ? "" : ", ")
+              << st.message << std::endl;
+    SMDF_CHECK_MSG(calls == st.iterations + 1 && last_it == st.iterations, what << ": visitor calls " << calls);
+    SMDF_CHECK_MSG(last_err >= 0, what << ": visitor error");
+    if(!st.converged) {
+      SMDF_CHECK_MSG(!st.message.empty(), what << ": non-convergence has a message");
+      if(what.find("1 iteration") == std::string::npos) not_converged.push_back(what + ": " + st.message);
+    } else {
+      SMDF_CHECK_MSG(st.message.empty() && st.max_curvature_error <= 1e-10, what << ": " << st.max_curvature_error);
+    }
+    // the output is always a valid metric: strict triangle inequalities on every face
+    bool valid = true;
+    for(auto f : faces(mesh)) {
+      halfedge_descriptor h = halfedge(f, mesh);
+      const double a = get(out, edge(h, mesh)), b = get(out, edge(next(h, mesh), mesh)),
+                   c = get(out, edge(next(next(h, mesh), mesh), mesh));
+      if(!SMDF::is_valid_triangle(a, b, c)) valid = false;
+    }
+    SMDF_CHECK_MSG(valid, what << ": triangle inequalities");
+    // conformal factors reproduce the lengths
+    auto l0 = SMDF::get_edge_length_map(mesh);
+    double ferr = 0;
+    for(auto e : edges(mesh)) {
+      const double l = get(l0, e) * std::exp(0.5 * (get(ufac, source(e, mesh)) + get(ufac, target(e, mesh))));
+      ferr = (std::max)(ferr, std::abs(l - get(out, e)) / l);
+    }
+    SMDF_CHECK_MSG(ferr < 1e-12, what << ": conformal factors give the lengths, rel. error " << ferr);
+    // area normalisation (all test meshes have one component)
+    double a_in = 0, a_out = 0;
+    for(auto f : faces(mesh)) {
+      halfedge_descriptor h = halfedge(f, mesh);
+      edge_descriptor e[3] = {edge(h, mesh), edge(next(h, mesh), mesh), edge(next(next(h, mesh), mesh), mesh)};
+      a_in += SMDF::triangle_area(get(l0, e[0]), get(l0, e[1]), get(l0, e[2]));
+      a_out += SMDF::triangle_area(get(out, e[0]), get(out, e[1]), get(out, e[2]));
+    }
+    SMDF_CHECK_MSG(std::abs(a_out - a_in) <= 1e-10 * a_in, what << ": total area preserved " << a_in << " " << a_out);
+    if(!st.converged || !valid) return st.converged;
+
+    // independent curvature of the output
+    auto k = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+    SMDF::compute_vertex_curvatures(mesh, k, SMDF::parameters::edge_length_map(out));
+    double kerr = 0;
+    for(auto v : vertices(mesh)) kerr = (std::max)(kerr, std::abs(get(k, v) - get(tgt, v)));
+    SMDF_CHECK_MSG(kerr <= 1e-9, what << ": curvature of the output metric, error " << kerr);
+    // holonomy around non-cone interior vertices (sampled on large meshes)
+    SMDF::Intrinsic_holonomy<Mesh> hol(mesh, SMDF::parameters::edge_length_map(out));
+    double herr = 0;
+    std::size_t n = 0, i = 0, stride = (std::max<std::size_t>)(1, num_vertices(mesh) / 3000);
+    for(auto v : vertices(mesh)) {
+      if(i++ % stride != 0 || is_border(v, mesh) || cones.count(v)) continue;
+      herr = (std::max)(herr, std::abs(smdf_test::wrap(hol.levi_civita_holonomy(hol.dual_cycle_around_vertex(v)))));
+      ++n;
+    }
+    for(const auto& c : cones) if(!is_border(c.first, mesh)) {
+      const double hc = hol.levi_civita_holonomy(hol.dual_cycle_around_vertex(c.first));
+      herr = (std::max)(herr, std::abs(smdf_test::wrap(hc - c.second)));
+    }
+    SMDF_CHECK_MSG(herr <= 1e-9, what << ": holonomy around " << n << " vertices, error " << herr);
+    return true;
+  }
+
+  Cones extreme_cones(const Mesh& mesh, double k)
+  {
+    Cones c;
+    for(int sx = -1; sx <= 1; sx += 2)
+      for(int sy = -1; sy <= 1; sy += 2)
+        for(int sz = -1; sz <= 1; sz += 2) {
+          double best = -1e300;
+          vertex_descriptor bv;
+          for(auto v : vertices(mesh)) {
+            if(c.count(v) || is_border(v, mesh)) continue;
+            const auto& p = get(CGAL::vertex_point, mesh, v);
+            const double d = sx * p.x() + sy * p.y() + sz * p.z();
+            if(d > best) { best = d; bv = v; }
+          }
+          c[bv] = k;
+        }
+    return c;
+  }
+
+  vertex_descriptor max_valence_vertex(const Mesh& mesh)
+  {
+    vertex_descriptor bv = *vertices(mesh).begin();
+    std::size_t best = 0;
+    for(auto v : vertices(mesh))
+      if(degree(v, mesh) > best) { best = degree(v, mesh); bv = v; }
+    return bv;
+  }
+
+  // random cones, multiples of pi/2 in [-pi, 3pi/2], summing to 2 pi chi
+  Cones random_cones(const Mesh& mesh, long chi)
+  {
+    std::vector<vertex_descriptor> vs(vertices(mesh).begin(), vertices(mesh).end());
+    std::shuffle(vs.begin(), vs.end(), rng);
+    Cones c;
+    long units = 4 * chi;   // in units of pi/2
+    std::size_t next = 0;
+    const int extra = int(rng() % 4);
+    for(int i = 0; i < extra; ++i) {   // pairs that cancel: +a, -a
+      const long a = 1 + long(rng() % 2);
+      c[vs[next++]] = a * M_PI / 2;
+      c[vs[next++]] = -a * M_PI / 2;
+    }
+    while(units != 0) {
+      long step = units > 0 ? 1 + long(rng() % 3) : -1 - long(rng() % 2);
+      if((units > 0 && step > units) || (units < 0 && step < units)) step = units;
+      c[vs[next++]] = step * M_PI / 2;
+      units -= step;
+    }
+    return c;
+  }
+
+  template <typename LengthMap>
+  bool lengths_equal(const Mesh& mesh, LengthMap a)
+  {
+    auto l0 = SMDF::get_edge_length_map(mesh);
+    for(auto e : edges(mesh)) if(get(a, e) != get(l0, e)) return false;
+    return true;
+  }
+
+  void generated(const Mesh& torus, const Mesh& cyl, const std::string& suffix)
+  {
+    auto out = get(CGAL::dynamic_edge_property_t<double>(), torus);
+    SMDF_CHECK(run(torus, Cones(), out, "generated torus, flat" + suffix));
+    // exact reproduction at u = 0: targets = curvature of the input
+    {
+      auto k = get(CGAL::dynamic_vertex_property_t<double>(), torus);
+      SMDF::compute_vertex_curvatures(torus, k);
+      auto out2 = get(CGAL::dynamic_edge_property_t<double>(), torus);
+      SMDF::Cone_metric_status st = SMDF::compute_cone_metric(torus, k, out2);
+      SMDF_CHECK(st.converged && st.iterations == 0);
+      SMDF_CHECK_MSG(lengths_equal(torus, out2), "u = 0 reproduces the input lengths exactly" << suffix);
+    }
+    // torus with a +pi/2 / -pi/2 pair
+    {
+      Cones c;
+      auto it = vertices(torus).begin();
+      c[*it] = M_PI / 2;
+      std::advance(it, num_vertices(torus) / 2 + 7);
+      c[*it] = -M_PI / 2;
+      SMDF_CHECK(run(torus, c, out, "generated torus, cone pair" + suffix));
+    }
+    // iteration budget exhausted: reported, not hidden
+    {
+      Cones c;
+      auto it = vertices(torus).begin();
+      c[*it] = M_PI / 2;
+      std::advance(it, num_vertices(torus) / 2 + 7);
+      c[*it] = -M_PI / 2;
+      SMDF_CHECK(!run(torus, c, out, "generated torus, cone pair, 1 iteration" + suffix, 1));
+    }
+    // a cone of -3.99 pi at a vertex of valence 6: not realisable by vertex scaling on this
+    // triangulation; the status must say so
+    {
+      Cones c;
+      auto it = vertices(torus).begin();
+      c[*it] = -3.99 * M_PI;
+      std::advance(it, 150);
+      c[*it] = 1.995 * M_PI;
+      std::advance(it, 200);
+      c[*it] = 1.995 * M_PI;
+      auto tgt = get(CGAL::dynamic_vertex_property_t<double>(), torus);
+      for(auto v : vertices(torus)) put(tgt, v, 0.);
+      for(const auto& x : c) put(tgt, x.first, x.second);
+      SMDF::Cone_metric_status st = SMDF::compute_cone_metric(torus, tgt, out);
+      std::cout << "generated torus, cone -3.99pi at valence 6: converged " << st.converged << ", "
+                << st.iterations << " iterations, error " << st.max_curvature_error << ", " << st.message << std::endl;
+      SMDF_CHECK_MSG(!st.converged && st.message.find("cannot carry") != std::string::npos,
+                     "infeasible target reported: " << st.message);
+      bool valid = true;
+      for(auto f : faces(torus)) {
+        halfedge_descriptor h = halfedge(f, torus);
+        valid = valid && SMDF::is_valid_triangle(get(out, edge(h, torus)), get(out, edge(next(h, torus), torus)),
+                                                 get(out, edge(next(next(h, torus), torus), torus)));
+      }
+      SMDF_CHECK_MSG(valid, "the last iterate of a failed flow is a valid metric");
+    }
+    // cylinder: straight boundary loops, flat
+    auto outc = get(CGAL::dynamic_edge_property_t<double>(), cyl);
+    SMDF_CHECK(run(cyl, Cones(), outc, "generated cylinder, flat with geodesic boundary" + suffix));
+  }
+
+  void bad_input(const Mesh& torus, const Mesh& cyl)
+  {
+    auto out = get(CGAL::dynamic_edge_property_t<double>(), torus);
+    auto target = get(CGAL::dynamic_vertex_property_t<double>(), torus);
+    auto reset = [&]() { for(auto v : vertices(torus)) put(target, v, 0.); };
+    auto expect = [&](SMDF::Input_error::Kind kind, const std::vector<std::string>& words, const std::string& what) {
+      try {
+        SMDF::compute_cone_metric(torus, target, out);
+        SMDF_CHECK_MSG(false, what << ": no exception");
+      } catch(const SMDF::Input_error& e) {
+        bool has = e.kind() == kind;
+        for(const auto& w : words) has = has && std::string(e.what()).find(w) != std::string::npos;
+        SMDF_CHECK_MSG(has, what << ": " << e.what());
+      }
+    };
+    reset();
+    put(target, *vertices(torus).begin(), M_PI / 2);
+    expect(SMDF::Input_error::INCONSISTENT_INDICES, {"Gauss-Bonnet", "1.5707963267948", "2*pi*chi = 0", "component 0"},
+           "Gauss-Bonnet violation on a torus");
+    reset();
+    put(target, *vertices(torus).begin(), 2 * M_PI);
+    put(target, *std::next(vertices(torus).begin()), -2 * M_PI);
+    expect(SMDF::Input_error::INVALID_ARGUMENT, {">= 2*pi", "hole"}, "cone of index 1");
+    reset();
+    put(target, *vertices(torus).begin(), std::nan(""));
+    expect(SMDF::Input_error::INVALID_ARGUMENT, {"not finite"}, "NaN target");
+    reset();
+    try {
+      SMDF::compute_cone_metric(torus, target, out, SMDF::parameters::curvature_tolerance(-1.));
+      SMDF_CHECK_MSG(false, "negative tolerance accepted");
+    } catch(const SMDF::Input_error& e) { SMDF_CHECK(e.kind() == SMDF::Input_error::INVALID_ARGUMENT); }
+    // lay_out_disk on a cylinder: not a disk
+    auto uv = get(CGAL::dynamic_vertex_property_t<SMDF::Point_2>(), cyl);
+    try {
+      SMDF::lay_out_disk(cyl, SMDF::get_edge_length_map(cyl), uv);
+      SMDF_CHECK_MSG(false, "lay_out_disk accepted a cylinder");
+    } catch(const SMDF::Input_error& e) { SMDF_CHECK_MSG(std::string(e.what()).find("2 boundary loop") != std::string::npos, e.what()); }
+  }
+
+  // 4 corners of pi/2 at quarter positions of the boundary loop -> rectangle
+  void rectangle(const Mesh& mesh, const std::string& what)
+  {
+    halfedge_descriptor b = GT::null_halfedge();
+    for(auto h : halfedges(mesh)) if(is_border(h, mesh)) { b = h; break; }
+    std::vector<vertex_descriptor> loop;
+    halfedge_descriptor h = b;
+    do { loop.push_back(target(h, mesh)); h = next(h, mesh); } while(h != b);
+    Cones c;
+    for(int i = 0; i < 4; ++i) c[loop[i * loop.size() / 4]] = M_PI / 2;
+    auto out = get(CGAL::dynamic_edge_property_t<double>(), mesh);
+    if(!run(mesh, c, out, what + ", rectangle")) return;
+    auto uv = get(CGAL::dynamic_vertex_property_t<SMDF::Point_2>(), mesh);
+    const bool ok = SMDF::lay_out_disk(mesh, out, uv);
+    SMDF_CHECK_MSG(ok, what << ": layout without flipped triangles");
+    double min_area = 1e300, lerr = 0, lmax = 0;
+    for(auto f : faces(mesh)) {
+      halfedge_descriptor g = halfedge(f, mesh);
+      const auto& p = get(uv, source(g, mesh));
+      const auto& q = get(uv, target(g, mesh));
+      const auto& r = get(uv, target(next(g, mesh), mesh));
+      min_area = (std::min)(min_area, CGAL::area(p, q, r));
+    }
+    for(auto e : edges(mesh)) {
+      const double d = std::sqrt(CGAL::squared_distance(get(uv, source(e, mesh)), get(uv, target(e, mesh))));
+      lerr = (std::max)(lerr, std::abs(d - get(out, e)));
+      lmax = (std::max)(lmax, get(out, e));
+    }
+    SMDF_CHECK_MSG(min_area > 0, what << ": min signed area " << min_area);
+    SMDF_CHECK_MSG(lerr <= 1e-8 * lmax * std::sqrt(double(num_faces(mesh))), what << ": layout edge length error " << lerr);
+    // turning of the laid-out boundary polygon: 4 corners of pi/2, straight elsewhere
+    int corners = 0;
+    double straight = 0, corner_err = 0;
+    for(std::size_t i = 0; i < loop.size(); ++i) {
+      // the border halfedges run clockwise around the disk; walk it reversed (counterclockwise)
+      const auto& p = get(uv, loop[(i + 1) % loop.size()]);
+      const auto& q = get(uv, loop[i]);
+      const auto& r = get(uv, loop[(i + loop.size() - 1) % loop.size()]);
+      const double turn = std::atan2((q.x() - p.x()) * (r.y() - q.y()) - (q.y() - p.y()) * (r.x() - q.x()),
+                                     (q.x() - p.x()) * (r.x() - q.x()) + (q.y() - p.y()) * (r.y() - q.y()));
+      if(std::abs(turn) > 1e-6) { ++corners; corner_err = (std::max)(corner_err, std::abs(turn - M_PI / 2)); }
+      else straight = (std::max)(straight, std::abs(turn));
+    }
+    SMDF_CHECK_MSG(corners == 4 && corner_err < 1e-7, what << ": layout boundary has " << corners
+                   << " corners, corner error " << corner_err << ", straight turning " << straight);
+  }
+};
+
+template <typename Mesh>
+bool read(const std::string& file, Mesh& mesh)
+{
+  SMDF::read_triangle_mesh(file, mesh);
+  return num_faces(mesh) > 0;
+}
+
+int main()
+{
+  std::cout.precision(3);
+  Tests<Surface_mesh> ts;
+  Tests<Polyhedron> tp;
+  {
+    Surface_mesh torus, cyl;
+    smdf_test::soup_to_mesh(smdf_test::torus_soup(30, 20), torus);
+    smdf_test::soup_to_mesh(smdf_test::cylinder_soup(30, 8), cyl);
+    ts.generated(torus, cyl, "");
+    ts.bad_input(torus, cyl);
+    Polyhedron ptorus, pcyl;
+    smdf_test::soup_to_mesh(smdf_test::torus_soup(30, 20), ptorus);
+    smdf_test::soup_to_mesh(smdf_test::cylinder_soup(30, 8), pcyl);
+    tp.generated(ptorus, pcyl, " (Polyhedron_3)");
+    tp.bad_input(ptorus, pcyl);
+  }
+  const std::string dir = smdf_test::shared_data_dir();
+  if(dir.empty()) {
+    std::cout << "../shared/data not found: shared-mesh checks skipped" << std::endl;
+    return smdf_test::finish();
+  }
+  const std::string md = dir + "/meshes/";
+  // (a) flat metrics on genus-1 meshes
+  for(const std::string f : {"torus_ddg.obj", "rocker-arm_c3d.obj", "knot1_cgal.off"}) {
+    Surface_mesh mesh;
+    if(!read(md + f, mesh)) continue;
+    auto out = get(CGAL::dynamic_edge_property_t<double>(), mesh);
+    ts.run(mesh, Tests<Surface_mesh>::Cones(), out, f + ", flat");
+  }
+  // (b) 8 cones of pi/2 at extreme vertices of genus-0 meshes
+  for(const std::string f : {"spot_c3d.obj", "bunny_bff.obj", "armadillo_cgal.off"}) {
+    Surface_mesh mesh;
+    if(!read(md + f, mesh)) continue;
+    auto out = get(CGAL::dynamic_edge_property_t<double>(), mesh);
+    ts.run(mesh, ts.extreme_cones(mesh, M_PI / 2), out, f + ", 8 cones pi/2");
+  }
+  {
+    Polyhedron p;
+    if(read(md + "spot_c3d.obj", p)) {
+      auto out = get(CGAL::dynamic_edge_property_t<double>(), p);
+      tp.run(p, tp.extreme_cones(p, M_PI / 2), out, "spot_c3d.obj, 8 cones pi/2 (Polyhedron_3)");
+    }
+  }
+  // (c) genus 2: one cone of -4pi at the vertex of highest valence
+  for(const std::string f : {"double-torus_jnd.off", "eight_directional.off"}) {
+    Surface_mesh mesh;
+    if(!read(md + f, mesh)) continue;
+    auto out = get(CGAL::dynamic_edge_property_t<double>(), mesh);
+    Tests<Surface_mesh>::Cones c;
+    const auto v = ts.max_valence_vertex(mesh);
+    c[v] = -4 * M_PI;
+    ts.run(mesh, c, out, f + ", one cone -4pi at a vertex of valence " + std::to_string(degree(v, mesh)));
+  }
+  // (d) random chi-consistent cone sets on spot
+  {
+    Surface_mesh mesh;
+    if(read(md + "spot_c3d.obj", mesh)) {
+      auto out = get(CGAL::dynamic_edge_property_t<double>(), mesh);
+      for(int i = 0; i < 4; ++i) {
+        const auto c = ts.random_cones(mesh, 2);
+        ts.run(mesh, c, out, "spot_c3d.obj, random cones #" + std::to_string(i) + " (" + std::to_string(c.size()) + " cones)");
+      }
+    }
+  }
+  // disks -> rectangles
+  for(const std::string f : {"mushroom_cgal.off", "face_bff.obj"}) {
+    Surface_mesh mesh;
+    if(read(md + f, mesh)) ts.rectangle(mesh, f);
+  }
+  {
+    Polyhedron p;
+    if(read(md + "mushroom_cgal.off", p)) tp.rectangle(p, "mushroom_cgal.off (Polyhedron_3)");
+  }
+  std::cout << not_converged.size() << " case(s) did not converge on the fixed triangulation:" << std::endl;
+  for(const auto& s : not_converged) std::cout << "  NOT CONVERGED: " << s << std::endl;
+  return smdf_test::finish();
+}
