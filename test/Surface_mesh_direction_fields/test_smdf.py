@@ -9,7 +9,8 @@ Part "torus" runs every subcommand on data/torus.off and checks invariants (topo
 generator cycles against the faces of the file, Gauss-Bonnet, holonomy under a scaled metric)
 and the error behaviour (one stderr line, nothing on stdout, exit 1 or 2).
 It also runs `connection` (prescribed singularities, N-RoSy indices, constraints, output
-files, editing benchmark, errors) and `singularities` on the field it writes.
+files, editing benchmark, errors) and `singularities` on the field it writes, and checks the
+SVG picture of `connection --svg` (well-formed XML, faces, glyphs, singularity markers).
 Part "shared" runs `info` on the meshes of SHARED_DATA_DIR/MANIFEST.tsv and compares with the
 manifest, `generators` on meshes with handles or boundary, and checks the documented failures;
 it exits 77 (skipped) when SHARED_DATA_DIR is absent.
@@ -24,6 +25,7 @@ import os
 import subprocess
 import sys
 import tempfile
+import xml.etree.ElementTree as ET
 
 SKIP = 77
 TWO_PI = 2 * math.pi
@@ -346,6 +348,7 @@ def test_torus(smdf, c, torus, tmp):
     c.check(info is not None and info.get("file") == odd, "file name round-trips through JSON")
 
     test_connection(smdf, c, torus, tmp, verts, faces)
+    test_svg(smdf, c, torus, tmp, faces)
 
 
 # ---- connection / singularities ---------------------------------------------------------------
@@ -563,6 +566,85 @@ def test_shared_connection(smdf, c, meshes):
                1, ["-1", "-2", "[inconsistent_indices]"])
 
 
+# ---- connection --svg ------------------------------------------------------------------------
+
+SVG_NS = "{http://www.w3.org/2000/svg}"
+
+
+def parse_svg(c, path, label):
+    """Parses an SVG file; returns its root element or None (after a failed check)."""
+    try:
+        root = ET.parse(path).getroot()
+    except (OSError, ET.ParseError) as e:
+        c.check(False, "%s: the SVG file parses as XML (%s)" % (label, e))
+        return None
+    c.check(root.tag == SVG_NS + "svg", "%s: root element is <svg> (got %r)" % (label, root.tag))
+    return root
+
+
+def hex_rgb(color):
+    if not (isinstance(color, str) and len(color) == 7 and color.startswith("#")):
+        return None
+    return tuple(int(color[i:i + 2], 16) for i in (1, 3, 5))
+
+
+def test_svg(smdf, c, torus, tmp, faces):
+    svg = os.path.join(tmp, "torus.svg")
+    r = smdf.json(["connection", torus, "--singularities", "0:1,100:-1", "--svg", svg],
+                  "smdf connection torus 0:1,100:-1 --svg")
+    c.check(r is not None and r.get("found") == [{"vertex": 0, "index": 1}, {"vertex": 100, "index": -1}],
+            "--svg leaves the JSON output as it was")
+    root = parse_svg(c, svg, "torus.svg") if r else None
+    if root is not None:
+        try:
+            vb = [float(x) for x in root.get("viewBox", "").split()]
+        except ValueError:
+            vb = []
+        c.check(len(vb) == 4 and vb[2] > 0 and vb[3] > 0, "torus.svg: viewBox %r" % root.get("viewBox"))
+        c.check(root.get("width") == "800", "torus.svg: default width 800 (got %r)" % root.get("width"))
+        polygons = root.findall(SVG_NS + "polygon")
+        lines = root.findall(SVG_NS + "line")
+        c.check(0 < len(polygons) < len(faces),
+                "torus.svg: %d face polygons, back faces culled (%d faces)" % (len(polygons), len(faces)))
+        c.check(all(len(p.get("points", "").split()) == 3 for p in polygons),
+                "torus.svg: every face polygon is a triangle")
+        c.check(0 < len(lines) <= len(polygons), "torus.svg: %d glyph lines (N = 1: at most one per face)"
+                % len(lines))
+        inside = len(vb) == 4 and all(
+            vb[0] <= float(l.get(x)) <= vb[0] + vb[2] and vb[1] <= float(l.get(y)) <= vb[1] + vb[3]
+            for l in lines for x, y in (("x1", "y1"), ("x2", "y2")))
+        c.check(inside, "torus.svg: glyphs lie inside the viewBox")
+        circles = root.findall(SVG_NS + "circle")   # markers; the legend's circles are in a <g>
+        colors = [hex_rgb(x.get("fill")) for x in circles]
+        c.check(len(circles) == 2, "torus.svg: two singularity markers (got %d)" % len(circles))
+        c.check(len(colors) == 2 and None not in colors and
+                sorted(("+" if rgb[0] > rgb[2] else "-") for rgb in colors) == ["+", "-"],
+                "torus.svg: one red-ish (+1) and one blue-ish (-1) marker (%r)" % colors)
+
+    svg4 = os.path.join(tmp, "torus4.svg")
+    r = smdf.json(["connection", torus, "--N", "4", "--singularities", "0:1/4,100:-1/4", "--svg", svg4,
+                   "--view", "60,45", "--width", "600"], "smdf connection torus --N 4 --svg --view 60,45")
+    root = parse_svg(c, svg4, "torus4.svg") if r else None
+    if root is not None:
+        polygons = root.findall(SVG_NS + "polygon")
+        lines = root.findall(SVG_NS + "line")
+        c.check(root.get("width") == "600", "torus4.svg: --width 600 (got %r)" % root.get("width"))
+        c.check(len(lines) > 0 and len(lines) % 2 == 0 and len(lines) <= 2 * len(polygons),
+                "torus4.svg: crosses, two lines per glyph (%d lines, %d faces)" % (len(lines), len(polygons)))
+    svgy = os.path.join(tmp, "torus_y.svg")
+    r = smdf.json(["connection", torus, "--singularities", "0:1,100:-1", "--svg", svgy, "--view=-20,10,y"],
+                  "smdf connection --view=-20,10,y")
+    c.check(r is not None and parse_svg(c, svgy, "torus_y.svg") is not None, "--view with an up axis")
+
+    for view in ("30", "30,", ",20", "a,b", "30,nan", "30,inf", "30,20,w", "30,20,z,1", "30;20"):
+        smdf.error(["connection", torus, "--svg", svg, "--view", view], "malformed --view " + view, 2, "--view")
+    for width in ("0", "-5", "12px"):
+        smdf.error(["connection", torus, "--svg", svg, "--width", width], "--width " + width, 2, "--width")
+    smdf.error(["connection", torus, "--view", "30,20"], "--view without --svg", 2, "--svg")
+    smdf.error(["connection", torus, "--singularities", "0:1,100:-1", "--svg",
+                os.path.join(tmp, "no_such_dir", "x.svg")], "--svg into a missing directory", 1, "x.svg")
+
+
 # ---- ../shared/data --------------------------------------------------------------------------
 
 def plain_genus(field):
@@ -651,6 +733,25 @@ def test_shared(smdf, c, shared):
 
     # trivial connection on a genus-2 surface
     test_shared_connection(smdf, c, meshes)
+    test_shared_svg(smdf, c, meshes)
+
+
+def test_shared_svg(smdf, c, meshes):
+    """--svg on a 52k-face mesh: glyphs are thinned out to at most 3000 (Svg_options::max_glyphs)."""
+    path = os.path.join(meshes, "armadillo_cgal.off")
+    if not os.path.isfile(path):
+        print("skip: armadillo_cgal.off not found")
+        return
+    with tempfile.TemporaryDirectory(prefix="smdf_test_") as tmp:
+        svg = os.path.join(tmp, "armadillo.svg")
+        r = smdf.json(["connection", path, "--singularities", "0:1,1000:1", "--svg", svg, "--view", "0,10,y"],
+                      "smdf connection armadillo_cgal.off --svg")
+        root = parse_svg(c, svg, "armadillo.svg") if r else None
+        if root is not None:
+            polygons = len(root.findall(SVG_NS + "polygon"))
+            lines = len(root.findall(SVG_NS + "line"))
+            c.check(polygons > 3000 and 1500 < lines <= 3000,
+                    "armadillo.svg: %d faces drawn, glyphs thinned out to %d <= 3000" % (polygons, lines))
 
 
 def main():

@@ -23,6 +23,7 @@
 #include <CGAL/Surface_mesh_direction_fields/intrinsic_geometry.h>
 #include <CGAL/Surface_mesh_direction_fields/parameters.h>
 #include <CGAL/Surface_mesh_direction_fields/read_triangle_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/svg_writer.h>
 #include <CGAL/Surface_mesh_direction_fields/topology.h>
 #include <CGAL/Surface_mesh_direction_fields/trivial_connection.h>
 
@@ -839,6 +840,36 @@ Json run_connection(const Args& args)
   const long edits = args.integer("edit-benchmark", 0);
   if(edits < 0) throw Usage_error("option --edit-benchmark expects a non-negative integer");
 
+  SMDF::Svg_options svg;
+  if(!args.has("svg") && (args.has("view") || args.has("width")))
+    throw Usage_error(std::string("option --") + (args.has("view") ? "view" : "width") + " needs --svg FILE");
+  if(args.has("view")) {
+    const std::string view = args.value("view");
+    const std::size_t comma = view.find(',');
+    const std::size_t comma2 = comma == std::string::npos ? comma : view.find(',', comma + 1);
+    auto real = [](const std::string& t, double& d) {
+      if(t.empty() || std::isspace(static_cast<unsigned char>(t[0]))) return false;
+      char* end = nullptr;
+      d = std::strtod(t.c_str(), &end);
+      return *end == '\0' && std::isfinite(d);
+    };
+    double a = 0, e = 0;
+    const std::string axis = comma2 == std::string::npos ? "z" : view.substr(comma2 + 1);
+    if(comma == std::string::npos || !real(view.substr(0, comma), a) ||
+       !real(view.substr(comma + 1, comma2 == std::string::npos ? std::string::npos : comma2 - comma - 1), e) ||
+       (axis != "x" && axis != "y" && axis != "z"))
+      throw Usage_error("option --view expects 'azimuth,elevation' in degrees, optionally followed by ',x', "
+                        "',y' or ',z' (the up axis, default z), got '" + shorten(view) + "'");
+    svg.up_axis = axis[0] - 'x';
+    svg.azimuth = a;
+    svg.elevation = e;
+  }
+  if(args.has("width")) {
+    const long w = args.integer("width", 800);
+    if(w < 1 || w > 100000) throw Usage_error("option --width expects a number of pixels in [1, 100000], got '" + args.value("width") + "'");
+    svg.width = int(w);
+  }
+
   std::vector<std::pair<std::size_t, double>> sing, turning;
   if(args.has("singularities")) sing = parse_pairs("singularities", args.value("singularities"));
   if(args.has("generator-turning")) turning = parse_pairs("generator-turning", args.value("generator-turning"));
@@ -915,10 +946,18 @@ Json run_connection(const Args& args)
   const SMDF::Field_topology<Mesh> topo =
     on_file(file, [&] { return SMDF::field_singularities(mesh, angles, SMDF::parameters::symmetry_order(int(N))); });
 
-  if(args.has("field-out")) {
+  if(args.has("field-out") || args.has("svg")) {
     Face_vector_property vectors =
       mesh.add_property_map<face_descriptor, K::Vector_3>("f:smdf_vector", K::Vector_3(0, 0, 0)).first;
     tc.angles_to_vectors(angles, vectors);
+    if(args.has("svg")) {
+      std::ostringstream os;
+      SMDF::write_field_svg(os, mesh, vectors, int(N), topo.singularities, svg);
+      write_lines_file(args.value("svg"), os.str());
+    }
+  }
+  if(args.has("field-out")) {
+    Face_vector_property vectors = mesh.property_map<face_descriptor, K::Vector_3>("f:smdf_vector").first;
     std::ostringstream os;
     os.imbue(std::locale::classic());
     os.precision(17);
@@ -1091,7 +1130,10 @@ const std::vector<Command>& commands()
       {"constraints", "FILE", "directional constraints: lines 'face angle' or 'face x y z'"},
       {"field-out", "FILE", "write one unit direction 'x y z' per face"},
       {"connection-out", "FILE", "write 'i j angle' per interior edge (adjustment angle)"},
-      {"edit-benchmark", "K", "time K random singularity moves (re-solve + field)"}},
+      {"edit-benchmark", "K", "time K random singularity moves (re-solve + field)"},
+      {"svg", "FILE", "write an SVG picture of the field and its found singularities"},
+      {"view", "A,E[,UP]", "view of --svg: azimuth,elevation in degrees, up axis x|y|z (default 30,20,z)"},
+      {"width", "PX", "width of the --svg picture in pixels (default 800)"}},
      "trivial connection with prescribed singularities and its N-RoSy field",
      "Computes the trivial connection closest to Levi-Civita with the prescribed singularity\n"
      "indices (multiples of 1/N at interior vertices; on a closed component they must sum to\n"
@@ -1104,7 +1146,10 @@ const std::vector<Command>& commands()
      "comments. --connection-out writes, per interior edge, the vertices i j of halfedge(e) and\n"
      "the adjustment angle for crossing it from its right face into its left face.\n"
      "--edit-benchmark K moves a random singularity K times (pseudo-random, fixed seed) and\n"
-     "reports the median time of solve + field (null without singularities).\n",
+     "reports the median time of solve + field (null without singularities).\n"
+     "--svg draws the mesh (orthographic view, back faces culled), the field (one\n"
+     "glyph per visible face, thinned out on large meshes) and the found singularities (red\n"
+     "positive, blue negative).\n",
      run_connection},
     {"singularities", {"MESH"},
      {{"field", "FILE", "one direction 'x y z' per face, in file order (required)"},
