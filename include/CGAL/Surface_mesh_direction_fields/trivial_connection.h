@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -55,6 +56,7 @@ struct Trivial_connection_status
   std::string message;           ///< empty on success
   double energy = 0;             ///< \f$\|Dx\|^2 = \sum_e x_e^2/w_e\f$
   double residual = 0;           ///< \f$\max_i |(Ax + b)_i|\f$ over all constraint rows
+  double guide_energy = 0;       ///< \f$\lambda\sum_i (c_i^\top x - \bar c_i)^2\f$ of the guide directions (0 without guides)
   double max_holonomy_error = 0; ///< max over all interior-vertex cycles and generators of the distance between the connection's holonomy and \f$2\pi\f$ times the prescribed index / turning number
   double factor_seconds = 0;     ///< time spent building and factoring the system in this call (0 when reused)
   double solve_seconds = 0;      ///< time of the solve in this call
@@ -234,6 +236,47 @@ public:
     constraint_angles_ = angles;
   }
 
+  /// Soft alignment to guide directions: pairs (face, angle in the face frame). Instead of being
+  /// met exactly, the rotation of the field along the tree path from each guide face to the
+  /// nearest guide or constrained face above it is pulled towards the rotation that the two
+  /// prescribed angles ask for (the smallest one modulo \f$2\pi/N\f$), by adding
+  /// \f$\lambda\sum_i (c_i^\top x - \bar c_i)^2\f$ to the objective, \f$\lambda\f$ = `weight`
+  /// (relative to the unit smoothness energy; \f$\lambda \to \infty\f$ gives hard constraints,
+  /// \f$\lambda \to 0\f$ the unguided field; useful values are about \f$10^{-3}\f$ to
+  /// \f$10^{4}\f$). The prescribed singularities are kept exactly.
+  /// In a component without hard constraints the field is then rotated as a whole to fit the
+  /// guides best (circular mean modulo \f$2\pi/N\f$), so no guide is favoured.
+  /// The solve stays one factorisation: the guide terms are a rank-\f$k\f$ correction
+  /// (Sherman-Morrison-Woodbury, \f$k\f$ = number of guides, \f$O(k\,|V|)\f$ memory and
+  /// \f$k\f$ extra triangular solves at factorisation), and
+  /// changing only the angles costs no refactorisation. Requires the CHOLMOD solver.
+  template <typename FaceAngleRange>
+  void set_guide_directions(const FaceAngleRange& guides, double weight)
+  {
+    if(!(weight > 0) || !std::isfinite(weight))
+      throw Input_error(Input_error::INVALID_ARGUMENT, "guide weight must be positive and finite");
+    std::vector<int> faces;
+    std::vector<double> angles;
+    std::vector<char> seen(m_.number_of_faces(), 0);
+    for(int f : constrained_faces_) seen[f] = 2;
+    for(const auto& g : guides) {
+      const int f = m_.face_index(g.first);
+      const double a = double(g.second);
+      if(!std::isfinite(a))
+        throw Input_error(Input_error::INVALID_ARGUMENT, "guide angle of face " + std::to_string(f) + " is not finite");
+      if(seen[f])
+        throw Input_error(Input_error::INVALID_ARGUMENT, "face " + std::to_string(f) +
+                          (seen[f] == 2 ? " has a directional constraint and a guide" : " has two guides"));
+      seen[f] = 1;
+      faces.push_back(f);
+      angles.push_back(a);
+    }
+    if(!faces.empty() && solver_kind_ != CHOLMOD_NORMAL_EQUATIONS)
+      throw Input_error(Input_error::INVALID_ARGUMENT, "guide directions require the CHOLMOD solver");
+    if(faces != guide_faces_ || weight != guide_weight_) { guide_faces_ = faces; guide_weight_ = weight; factored_ = false; }
+    guide_angles_ = angles;
+  }
+
   /// Solves for the trivial connection closest to Levi-Civita. Throws `Input_error` with kind
   /// `INCONSISTENT_INDICES` if the indices of a closed component do not sum to its Euler
   /// characteristic; numerical failure is reported in the status.
@@ -247,6 +290,7 @@ public:
       if(solver_kind_ == CHOLMOD_NORMAL_EQUATIONS) {
         Sparse_matrix_int L = normal_matrix();
         if(!chol_.factor(L, st.message)) return st;
+        prepare_guides();
       }
       factored_ = true;
       st.factor_seconds = seconds_since(t0);
@@ -254,9 +298,31 @@ public:
     const auto t1 = std::chrono::steady_clock::now();
     Eigen::VectorXd b = rhs();
     Eigen::VectorXd xc;
-    if(solver_kind_ == CHOLMOD_NORMAL_EQUATIONS) {
+    if(solver_kind_ == CHOLMOD_NORMAL_EQUATIONS && guide_paths_.empty()) {
       const Eigen::VectorXd y = chol_.solve(-b);
       xc = W_.asDiagonal() * (A_.transpose() * y);
+    } else if(solver_kind_ == CHOLMOD_NORMAL_EQUATIONS) {
+      // KKT system M x + A^T y = f, A x = g with M = W^-1 + lambda C^T C, f = lambda C^T cbar,
+      // g = -b: x = M^-1 (f - A^T y), (A M^-1 A^T) y = A M^-1 f - g. One step of iterative
+      // refinement recovers the digits that the Woodbury correction loses at large weights.
+      const Eigen::VectorXd cbar = guide_rhs();
+      Eigen::VectorXd f = Eigen::VectorXd::Zero(W_.size());
+      for(std::size_t i = 0; i < guide_paths_.size(); ++i)
+        for(const auto& ce : guide_columns_[i]) f[ce.first] += guide_weight_ * cbar[Eigen::Index(i)] * ce.second;
+      Eigen::VectorXd y;
+      kkt_solve(f, -b, xc, y);
+      const Eigen::VectorXd r1 = f - apply_M(xc) - A_.transpose() * y;
+      const Eigen::VectorXd r2 = -b - A_ * xc;
+      Eigen::VectorXd dx, dy;
+      kkt_solve(r1, r2, dx, dy);
+      xc += dx;
+      double misfit = 0;
+      for(std::size_t i = 0; i < guide_paths_.size(); ++i) {
+        double cx = 0;
+        for(const auto& ce : guide_columns_[i]) cx += ce.second * xc[ce.first];
+        misfit += guide_weight_ * (cx - cbar[Eigen::Index(i)]) * (cx - cbar[Eigen::Index(i)]);
+      }
+      st.guide_energy = misfit;
     } else {
       const Eigen::VectorXd sw = W_.cwiseSqrt();
       internal::Sparse_matrix M = (A_ * sw.asDiagonal()).template cast<double>();
@@ -318,7 +384,9 @@ public:
   /// face with the constraint angle, or at its first face with `start_angle`, and the field is
   /// propagated along a breadth-first spanning tree of the faces by
   /// \f$\beta_j = \beta_i + \text{increment} + \sigma_h x_e\f$ (Eq. 3); because the connection
-  /// is trivial the result does not depend on the tree. Linear time.
+  /// is trivial the result does not depend on the tree. Components with guide directions but no
+  /// hard constraint are rotated to fit their guides (see set_guide_directions()), so
+  /// `start_angle` does not matter there. Linear time.
   /// \pre solve() succeeded.
   template <typename FaceAngleMap>
   void field_angles(FaceAngleMap angles, double start_angle = 0) const
@@ -503,6 +571,101 @@ private:
     CGAL_USE(ne);
   }
 
+  // Guide paths (tree paths from each guide face up to the nearest guide or constrained face),
+  // their columns, and the Woodbury data Z = L^-1 U, G = S - U^T Z with U = A W C^T,
+  // S = diag(1/lambda + c_i^T W c_i).
+  void prepare_guides()
+  {
+    guide_paths_.clear();
+    guide_partner_.clear();
+    guide_columns_.clear();
+    if(guide_faces_.empty()) return;
+    std::vector<int> mark(m_.number_of_faces(), -1);   // >= 0 guide i, <= -2 constraint -(j + 2)
+    for(std::size_t i = 0; i < guide_faces_.size(); ++i) mark[guide_faces_[i]] = int(i);
+    for(std::size_t j = 0; j < constrained_faces_.size(); ++j) mark[constrained_faces_[j]] = -int(j) - 2;
+    for(std::size_t i = 0; i < guide_faces_.size(); ++i) {
+      int f = guide_faces_[i];
+      std::vector<int> path;
+      while(parent_cross_[f] >= 0) {
+        const int up = parent_cross_[f] ^ 1;
+        path.push_back(up);
+        f = m_.face[up];
+        if(mark[f] != -1) break;
+      }
+      if(mark[f] == -1 || path.empty()) continue;   // reached an unconstrained root
+      std::map<int, double> cols;
+      for(int h : path) cols[col_of_edge_[h >> 1]] += (h & 1) ? -1. : 1.;
+      std::vector<std::pair<Eigen::Index, double>> c;
+      for(const auto& ce : cols) if(ce.second != 0) c.push_back(std::make_pair(Eigen::Index(ce.first), ce.second));
+      guide_paths_.push_back(path);
+      guide_partner_.push_back(std::make_pair(int(i), mark[f]));
+      guide_columns_.push_back(c);
+    }
+    // Paths of guides in different subtrees may share the edges above their common ancestor,
+    // so C W C^T is a small dense matrix.
+    const Eigen::Index k = Eigen::Index(guide_paths_.size());
+    Eigen::MatrixXd S = Eigen::MatrixXd::Identity(k, k) / guide_weight_;
+    Eigen::MatrixXd U(rows_, k);
+    guide_WCt_.resize(W_.size(), k);
+    std::vector<Eigen::Triplet<double>> t;
+    for(Eigen::Index i = 0; i < k; ++i)
+      for(const auto& ce : guide_columns_[std::size_t(i)]) t.emplace_back(ce.first, i, W_[ce.first] * ce.second);
+    guide_WCt_.setFromTriplets(t.begin(), t.end());
+    for(Eigen::Index i = 0; i < k; ++i) {
+      const Eigen::VectorXd wc = guide_WCt_.col(i);
+      for(Eigen::Index j = 0; j < k; ++j)
+        for(const auto& ce : guide_columns_[std::size_t(j)]) S(j, i) += ce.second * wc[ce.first];
+      U.col(i) = A_ * wc;
+    }
+    guide_S_.compute(S);
+    guide_Z_.resize(rows_, k);
+    for(Eigen::Index i = 0; i < k; ++i) guide_Z_.col(i) = chol_.solve(U.col(i));
+    guide_G_.compute(S - U.transpose() * guide_Z_);
+  }
+
+  void kkt_solve(const Eigen::VectorXd& f, const Eigen::VectorXd& g, Eigen::VectorXd& x, Eigen::VectorXd& y) const
+  {
+    const Eigen::VectorXd r = A_ * apply_M_inverse(f) - g;
+    y = chol_.solve(r);
+    y += guide_Z_ * guide_G_.solve(guide_Z_.transpose() * r);
+    x = apply_M_inverse(f - A_.transpose() * y);
+  }
+
+  // M v = W^-1 v + lambda C^T C v
+  Eigen::VectorXd apply_M(const Eigen::VectorXd& v) const
+  {
+    Eigen::VectorXd r = v.cwiseQuotient(W_);
+    for(const auto& cols : guide_columns_) {
+      double cv = 0;
+      for(const auto& ce : cols) cv += ce.second * v[ce.first];
+      for(const auto& ce : cols) r[ce.first] += guide_weight_ * ce.second * cv;
+    }
+    return r;
+  }
+
+  // M^-1 v with M = W^-1 + lambda C^T C, by Woodbury: W v - W C^T S^-1 C W v.
+  Eigen::VectorXd apply_M_inverse(const Eigen::VectorXd& v) const
+  {
+    Eigen::VectorXd r = W_.cwiseProduct(v);
+    if(guide_columns_.empty()) return r;
+    const Eigen::VectorXd cwv = guide_WCt_.transpose() * v;
+    return r - guide_WCt_ * guide_S_.solve(cwv);
+  }
+
+  // Smallest rotation (mod 2pi/N) asked by each guide path.
+  Eigen::VectorXd guide_rhs() const
+  {
+    Eigen::VectorXd c(Eigen::Index(guide_paths_.size()));
+    const double period = 2 * CGAL_PI / N_;
+    for(std::size_t i = 0; i < guide_paths_.size(); ++i) {
+      const double gm = guide_angles_[guide_partner_[i].first];
+      const int p = guide_partner_[i].second;
+      const double gn = p >= 0 ? guide_angles_[p] : constraint_angles_[-p - 2];
+      c[Eigen::Index(i)] = std::remainder(gn - gm - internal::transport_along(m_, guide_paths_[i]), period);
+    }
+    return c;
+  }
+
   // Lower triangle of A W A^T as the sum over columns of w_c a_c a_c^T (a column of A has two
   // vertex entries plus one per generator or constraint path crossing the edge).
   Sparse_matrix_int normal_matrix() const
@@ -576,7 +739,7 @@ private:
   }
 
   // Breadth-first spanning forest of the faces, rooted at the first constrained face of each
-  // component (else its first face).
+  // component, else its first guide face, else its first face.
   void build_field_tree()
   {
     const int nf = int(m_.number_of_faces());
@@ -605,7 +768,28 @@ private:
       }
     };
     for(int f : constrained_faces_) if(!visited[f]) grow(f);
+    for(int f : guide_faces_) if(!visited[f]) grow(f);   // so that every other guide has a partner
     for(int f = 0; f < nf; ++f) if(!visited[f]) grow(f);
+  }
+
+  // Rotates each component without hard constraints so that its guides fit best.
+  void fit_rotation_to_guides(std::vector<double>& beta) const
+  {
+    if(guide_faces_.empty()) return;
+    const std::size_t nc = topo_.components.size();
+    std::vector<char> hard(nc, 0);
+    for(int f : constrained_faces_) hard[topo_.face_component[f]] = 1;
+    std::vector<double> sx(nc, 0.), sy(nc, 0.);
+    for(std::size_t i = 0; i < guide_faces_.size(); ++i) {
+      const int c = topo_.face_component[guide_faces_[i]];
+      const double d = N_ * (guide_angles_[i] - beta[guide_faces_[i]]);
+      sx[c] += std::cos(d);
+      sy[c] += std::sin(d);
+    }
+    std::vector<double> rot(nc, 0.);
+    for(std::size_t c = 0; c < nc; ++c)
+      if(!hard[c] && (sx[c] != 0 || sy[c] != 0)) rot[c] = std::atan2(sy[c], sx[c]) / N_;
+    for(std::size_t f = 0; f < beta.size(); ++f) beta[f] += rot[topo_.face_component[f]];
   }
 
   void propagate(std::vector<double>& beta, double start_angle, int special_root) const
@@ -622,6 +806,7 @@ private:
         if(h < 0) beta[f] = constraint_of[f] >= 0 ? constraint_angles_[constraint_of[f]] : start_angle;
         else beta[f] = beta[parent_face_[f]] + connection_angle_index(h);
       }
+      fit_rotation_to_guides(beta);
       wrap_field(beta);
       return;
     }
@@ -671,6 +856,17 @@ private:
   Eigen::Index rows_ = 0, first_generator_row_ = 0, first_constraint_row_ = 0;
   internal::Cholmod_factor chol_;
   bool factored_ = false, solved_ = false;
+
+  std::vector<int> guide_faces_;
+  std::vector<double> guide_angles_;
+  double guide_weight_ = 1;
+  std::vector<std::vector<int>> guide_paths_;
+  std::vector<std::pair<int, int>> guide_partner_;
+  std::vector<std::vector<std::pair<Eigen::Index, double>>> guide_columns_;
+  Eigen::SparseMatrix<double> guide_WCt_;          // W C^T
+  Eigen::LDLT<Eigen::MatrixXd> guide_S_;           // S = I / lambda + C W C^T
+  Eigen::MatrixXd guide_Z_;                        // L^-1 A W C^T
+  Eigen::PartialPivLU<Eigen::MatrixXd> guide_G_;
 
   std::vector<int> constrained_faces_;
   std::vector<double> constraint_angles_;

@@ -4,6 +4,7 @@
 #ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_SPARSE_SOLVERS_H
 #define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_SPARSE_SOLVERS_H
 
+#include <Eigen/Dense>
 #include <Eigen/SparseCore>
 #include <Eigen/CholmodSupport>
 
