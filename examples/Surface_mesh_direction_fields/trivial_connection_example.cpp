@@ -1,6 +1,7 @@
 // Trivial connections (Crane, Desbrun, Schroeder 2010): a direction field with chosen
-// singularities (Figure 1), generator turning numbers on a torus (Figure 6), and a cross field
-// (N = 4) with directional constraints, edited without refactoring.
+// singularities (Figure 1), generator turning numbers on a torus (Figure 6), a cross field
+// (N = 4) with directional constraints, soft guide directions, and an index +20 singularity
+// (Figure 20).
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -77,5 +78,24 @@ int main(int argc, char** argv)
             << SMDF::field_singularities(mesh, angle, SMDF::parameters::symmetry_order(4)).singularities.size()
             << std::endl;
   //! [cross_field]
+
+  // 4. Soft alignment: pull the cross field towards guide directions in a few faces.
+  std::vector<std::pair<Mesh::Face_index, double>> guides = {
+    {Mesh::Face_index(10), 0.3}, {Mesh::Face_index(mesh.number_of_faces() / 3), 1.0},
+    {Mesh::Face_index(2 * mesh.number_of_faces() / 3), 0.6}};
+  cross.set_directional_constraints(std::vector<std::pair<Mesh::Face_index, double>>());
+  cross.set_guide_directions(guides, 10.0);
+  st = cross.solve();
+  std::cout << "guided cross field: smoothness energy " << st.energy << ", guide energy " << st.guide_energy
+            << std::endl;
+
+  // 5. A singularity of index +20 (Figure 20), balanced by twenty of index -1: the connection
+  //    turns by 40 pi around the vertex even on a coarse mesh.
+  SMDF::Trivial_connection<Mesh> big(mesh);
+  big.set_singularity(vs[0], 20 + double(chi));
+  for(std::size_t i = 1; i <= 20; ++i) big.set_singularity(vs[i * vs.size() / 21], -1);
+  const SMDF::Trivial_connection_status sb = big.solve();
+  std::cout << "index +20: holonomy error " << sb.max_holonomy_error << std::endl;
+  if(!sb.success) return EXIT_FAILURE;
   return st.success ? EXIT_SUCCESS : EXIT_FAILURE;
 }
