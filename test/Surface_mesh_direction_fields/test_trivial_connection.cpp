@@ -310,8 +310,51 @@ struct Tests
   }
 };
 
+// Several components (a torus and an open cylinder side by side): indices are checked per
+// closed component, and the one-call function with its named parameters.
+void multiple_components()
+{
+  smdf_test::Soup a = smdf_test::torus_soup(24, 16), b = smdf_test::cylinder_soup(20, 6);
+  const std::size_t off = a.points.size();
+  for(auto p : b.points) { p[0] += 10; a.points.push_back(p); }
+  for(auto f : b.faces) { for(auto& v : f) v += off; a.faces.push_back(f); }
+  Surface_mesh mesh;
+  smdf_test::soup_to_mesh(a, mesh);
+  const auto topo = SMDF::mesh_topology(mesh);
+  SMDF_CHECK(topo.components.size() == 2);
+  typedef Surface_mesh::Vertex_index V;
+  // torus: +1 and -1 (sum 0 = chi); cylinder: a lone +1 is allowed (free boundary)
+  std::vector<std::pair<V, double>> sing = {{V(5), 1}, {V(200), -1}, {V(off + 2 * 6 + 3), 1}};
+  auto adj = get(CGAL::dynamic_edge_property_t<double>(), mesh);
+  auto ang = get(CGAL::dynamic_face_property_t<double>(), mesh);
+  std::vector<double> turning = {1, 0, 0};   // torus: 2 handle generators; cylinder: 1 boundary loop
+  const auto st = SMDF::compute_trivial_connection(mesh, sing, adj,
+                                                   SMDF::parameters::generator_turning_numbers(turning).face_angle_map(ang));
+  SMDF_CHECK_MSG(st.success && st.max_holonomy_error < 1e-9, "two components: holonomy error " << st.max_holonomy_error);
+  const auto ft = SMDF::field_singularities(mesh, ang);
+  std::map<V, double> found(ft.singularities.begin(), ft.singularities.end()), wanted(sing.begin(), sing.end());
+  SMDF_CHECK_MSG(found == wanted, "two components: found " << found.size() << " singularities");
+  SMDF_CHECK(ft.generator_turning_numbers.size() == 3 && ft.generator_turning_numbers[0] == 1);
+  // a torus index sum of 1 names component 0 and both numbers
+  std::vector<std::pair<V, double>> bad = {{V(5), 1}};
+  std::string msg;
+  try { SMDF::compute_trivial_connection(mesh, bad, adj); } catch(const SMDF::Input_error& e) { msg = e.what(); }
+  SMDF_CHECK_MSG(msg.find("component 0") != std::string::npos && msg.find("sum to 1") != std::string::npos, msg);
+  // singularity_index_map gives the same connection as the pairs
+  auto idx = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+  for(auto v : vertices(mesh)) put(idx, v, 0.);
+  for(const auto& p : sing) put(idx, p.first, p.second);
+  auto adj2 = get(CGAL::dynamic_edge_property_t<double>(), mesh);
+  SMDF::compute_trivial_connection(mesh, std::vector<std::pair<V, double>>(), adj2,
+                                   SMDF::parameters::singularity_index_map(idx).generator_turning_numbers(turning));
+  double d = 0;
+  for(auto e : edges(mesh)) d = std::max(d, std::abs(get(adj, e) - get(adj2, e)));
+  SMDF_CHECK_MSG(d < 1e-12, "singularity_index_map = singularity pairs, diff " << d);
+}
+
 int main()
 {
+  multiple_components();
   Tests<Surface_mesh> ts;
   Tests<Polyhedron> tp;
   {
