@@ -10,9 +10,11 @@ generator cycles against the faces of the file, Gauss-Bonnet, holonomy under a s
 and the error behaviour (one stderr line, nothing on stdout, exit 1 or 2).
 It also runs `connection` (prescribed singularities, N-RoSy indices, constraints, output
 files, editing benchmark, errors) and `singularities` on the field it writes, and checks the
-SVG picture of `connection --svg` (well-formed XML, faces, glyphs, singularity markers).
+SVG picture of `connection --svg` (well-formed XML, faces, glyphs, singularity markers), and
+`cone-metric` (flat torus, cones, the curvature recomputed from --lengths-out, errors, exit 3).
 Part "shared" runs `info` on the meshes of SHARED_DATA_DIR/MANIFEST.tsv and compares with the
-manifest, `generators` on meshes with handles or boundary, and checks the documented failures;
+manifest, `generators` on meshes with handles or boundary, checks the documented failures,
+and runs `cone-metric` on a disk (4 boundary corners, --uv-out, --svg) and a sphere (8 cones);
 it exits 77 (skipped) when SHARED_DATA_DIR is absent.
 Prints one line per check and "N passed, N failed"; exits 1 on failure.
 """
@@ -349,6 +351,7 @@ def test_torus(smdf, c, torus, tmp):
 
     test_connection(smdf, c, torus, tmp, verts, faces)
     test_svg(smdf, c, torus, tmp, faces)
+    test_cone_metric(smdf, c, torus, tmp, verts, faces)
 
 
 # ---- connection / singularities ---------------------------------------------------------------
@@ -734,6 +737,7 @@ def test_shared(smdf, c, shared):
     # trivial connection on a genus-2 surface
     test_shared_connection(smdf, c, meshes)
     test_shared_svg(smdf, c, meshes)
+    test_shared_cone_metric(smdf, c, meshes)
 
 
 def test_shared_svg(smdf, c, meshes):
@@ -752,6 +756,214 @@ def test_shared_svg(smdf, c, meshes):
             lines = len(root.findall(SVG_NS + "line"))
             c.check(polygons > 3000 and 1500 < lines <= 3000,
                     "armadillo.svg: %d faces drawn, glyphs thinned out to %d <= 3000" % (polygons, lines))
+
+
+# ---- cone-metric ------------------------------------------------------------------------------
+
+def read_lengths(path):
+    """{(min(i, j), max(i, j)): length} of a --lengths-out file, and its number of lines."""
+    rows = read_rows(path)
+    return {(min(int(r[0]), int(r[1])), max(int(r[0]), int(r[1]))): float(r[2]) for r in rows
+            if len(r) == 3}, len(rows)
+
+
+def angle_sums(faces, lengths):
+    """Sum of the corner angles at every vertex, by the law of cosines from the edge lengths."""
+    def l(i, j):
+        return lengths[(min(i, j), max(i, j))]
+    s = {}
+    for f in faces:
+        for k in range(3):
+            v, a, b = f[k], f[(k + 1) % 3], f[(k + 2) % 3]
+            x, y, z = l(v, a), l(v, b), l(a, b)
+            cos = max(-1.0, min(1.0, (x * x + y * y - z * z) / (2 * x * y)))
+            s[v] = s.get(v, 0.0) + math.acos(cos)
+    return s
+
+
+def boundary_loops(faces):
+    """Boundary loops as vertex lists, each following its faces' orientation (interior on the left)."""
+    directed = {(f[k], f[(k + 1) % 3]) for f in faces for k in range(3)}
+    succ = {i: j for (i, j) in directed if (j, i) not in directed}
+    loops, seen = [], set()
+    for start in sorted(succ):
+        if start in seen:
+            continue
+        loop, v = [], start
+        while v not in seen:
+            seen.add(v)
+            loop.append(v)
+            v = succ[v]
+        loops.append(loop)
+    return loops
+
+
+def read_obj_vertices(path):
+    with open(path) as f:
+        return [tuple(float(t) for t in line.split()[1:4]) for line in f if line.startswith("v ")]
+
+
+def extreme_vertices(verts):
+    """The vertices extreme in the 8 directions (+-1, +-1, +-1)."""
+    out = []
+    for sx in (1, -1):
+        for sy in (1, -1):
+            for sz in (1, -1):
+                out.append(max(range(len(verts)), key=lambda i: sx * verts[i][0] + sy * verts[i][1] +
+                               sz * verts[i][2]))
+    return out
+
+
+def cone_metric_failure(smdf, c, args, label, contains=None):
+    """Not converged: JSON on stdout, exactly one stderr line, exit 3."""
+    rc, out, err = smdf.run(args)
+    lines = err.decode("utf-8", "replace").splitlines()
+    try:
+        doc = json.loads(out.decode("utf-8"))
+    except ValueError:
+        doc = None
+    ok = (rc == 3 and isinstance(doc, dict) and doc.get("status") == "not_converged" and
+          doc.get("converged") is False and doc.get("message") and len(lines) == 1 and
+          lines[0].startswith("smdf: error: "))
+    if contains:
+        ok = ok and all(x in lines[0] for x in contains)
+    c.check(ok, "%s: exit 3, not_converged JSON on stdout, one stderr line (rc=%s, stderr=%r)"
+            % (label, rc, err.decode("utf-8", "replace")[:300]))
+
+
+def test_cone_metric(smdf, c, torus, tmp, verts, faces):
+    edges = {(min(f[i], f[(i + 1) % 3]), max(f[i], f[(i + 1) % 3])) for f in faces for i in range(3)}
+    lf = os.path.join(tmp, "torus_flat.txt")
+    r = smdf.json(["cone-metric", torus, "--lengths-out", lf], "smdf cone-metric torus (flat, no cones)")
+    if r:
+        c.check(r.get("status") == "converged" and r.get("converged") is True and r.get("message") == "",
+                "cone-metric torus: converged (%r)" % r.get("status"))
+        c.check(is_number(r.get("max_curvature_error")) and r["max_curvature_error"] <= 1e-9,
+                "cone-metric torus: max curvature error %r <= 1e-9" % r.get("max_curvature_error"))
+        c.check(isinstance(r.get("iterations"), int) and r["iterations"] >= 0 and
+                is_number(r.get("time_s")) and r["time_s"] >= 0 and "Newton" in r.get("method", ""),
+                "cone-metric torus: iterations, time_s, method")
+        lengths, nlines = read_lengths(lf)
+        c.check(nlines == len(edges) and set(lengths) == edges,
+                "cone-metric torus: --lengths-out has one line per edge (%d lines, %d edges)"
+                % (nlines, len(edges)))
+        if set(lengths) == edges:
+            sums = angle_sums(faces, lengths)
+            worst = max(abs(TWO_PI - x) for x in sums.values())
+            c.check(len(sums) == len(verts) and worst <= 1e-8,
+                    "cone-metric torus: curvature recomputed from the lengths file ~ 0 (max %.3g)" % worst)
+        hol = smdf.json(["holonomy", torus, "--lengths", lf], "smdf holonomy --lengths <cone-metric output>")
+        c.check(hol is not None and hol.get("gauss_bonnet_error", 1) < 1e-9,
+                "holonomy reads the cone-metric lengths file")
+
+    # a +pi/2, -pi/2 pair, in the pi forms of the parser (and the same as indices)
+    lc = os.path.join(tmp, "torus_cones.txt")
+    for opt, lst in (("--cones", "0:pi/2,100:-pi/2"), ("--cones", "0:0.5pi,100:-1/2*pi"),
+                     ("--cone-indices", "0:1/4,100:-0.25")):
+        r = smdf.json(["cone-metric", torus, opt, lst, "--lengths-out", lc],
+                      "smdf cone-metric torus %s %s" % (opt, lst))
+        if r:
+            c.check(r.get("converged") is True and r.get("max_curvature_error", 1) <= 1e-9 and r.get("cones") == 2,
+                    "cone-metric torus %s %s: converged, 2 cones" % (opt, lst))
+            lengths, _ = read_lengths(lc)
+            sums = angle_sums(faces, lengths)
+            want = {0: math.pi / 2, 100: -math.pi / 2}
+            worst = max(abs(TWO_PI - sums[v] - want.get(v, 0)) for v in sums)
+            c.check(worst <= 1e-8, "cone-metric torus %s %s: recomputed curvatures match (max %.3g)"
+                    % (opt, lst, worst))
+    r = smdf.json(["cone-metric", torus, "--cones", "0:-1.5707963267948966", "--cone-indices", "100:1/4"],
+                  "smdf cone-metric torus --cones decimal + --cone-indices")
+    c.check(r is not None and r.get("converged") is True, "cone-metric: --cones and --cone-indices combine")
+
+    # errors
+    msg = smdf.error(["cone-metric", torus, "--cone-indices", "0:1/4,100:1/4"],
+                     "cone indices summing to 1/2 != chi = 0", 1, ["[inconsistent_indices]"])
+    c.check("0.5" in msg and "Euler characteristic is 0" in msg and "3.14159" in msg,
+            "the Gauss-Bonnet error names both totals (indices 0.5 vs chi 0, radians pi vs 0): %r" % msg)
+    smdf.error(["cone-metric", torus, "--cones", "0:7,100:-7"], "--cones 0:7 (>= 2 pi)", 1, ["2*pi", "vertex 0"])
+    smdf.error(["cone-metric", torus, "--cones", "0:2pi"], "--cones 0:2pi", 1, "2*pi")
+    smdf.error(["cone-metric", torus, "--cones", "0:pi/2,0:-pi/2"], "vertex given twice", 1, "twice")
+    smdf.error(["cone-metric", torus, "--cones", "0:pi/2", "--cone-indices", "0:-1/4"],
+               "vertex given by --cones and --cone-indices", 1, ["twice", "--cones"])
+    smdf.error(["cone-metric", torus, "--cones", "%d:1" % len(verts)], "cone vertex out of range", 1, str(len(verts)))
+    smdf.error(["cone-metric", torus, "--boundary-curvature", "0:pi/2"], "boundary curvature at an interior vertex",
+               1, "interior")
+    for bad in ("0:x", "0:pipi", "0:pi/0", "0:*pi", "0:pi*2", "0", "a:1", "0:1,", "0:"):
+        smdf.error(["cone-metric", torus, "--cones", bad], "malformed --cones " + bad, 2, "--cones")
+    smdf.error(["cone-metric", torus, "--cone-indices", "0:pi"], "--cone-indices takes no pi", 2, "--cone-indices")
+    smdf.error(["cone-metric", torus, "--iterations", "-1"], "--iterations -1", 2, "--iterations")
+    smdf.error(["cone-metric", torus, "--tolerance", "0"], "--tolerance 0", 2, "--tolerance")
+    smdf.error(["cone-metric", torus, "--uv-out", os.path.join(tmp, "uv.txt")], "--uv-out on a torus", 2, "disk")
+    smdf.error(["cone-metric", torus, "--svg", os.path.join(tmp, "uv.svg")], "--svg on a torus", 2, "disk")
+    smdf.error(["cone-metric", torus, "--lengths-out", os.path.join(tmp, "no_such_dir", "l.txt")],
+               "--lengths-out into a missing directory", 1, "l.txt")
+    cone_metric_failure(smdf, c, ["cone-metric", torus, "--cones", "0:pi/2,100:-pi/2", "--iterations", "1"],
+                        "cone-metric --iterations 1", ["not converged"])
+    rc, out, err = smdf.run(["cone-metric", "--help"])
+    c.check(rc == 0 and not err and out.decode().startswith("usage: smdf cone-metric") and "exit code is 3"
+            in out.decode(), "smdf cone-metric --help prints usage (documents exit code 3)")
+
+
+def test_shared_cone_metric(smdf, c, meshes):
+    path = os.path.join(meshes, "mushroom_cgal.off")
+    if not os.path.isfile(path):
+        print("skip: mushroom_cgal.off not found")
+    else:
+        verts, faces = read_off(path)
+        loops = boundary_loops(faces)
+        c.check(len(loops) == 1, "mushroom_cgal.off: one boundary loop (%d)" % len(loops))
+        loop = loops[0]
+        n = len(loop)
+        corners = [loop[k * n // 4] for k in range(4)]
+        with tempfile.TemporaryDirectory(prefix="smdf_test_") as tmp:
+            uvf, svg = os.path.join(tmp, "uv.txt"), os.path.join(tmp, "mushroom.svg")
+            r = smdf.json(["cone-metric", path, "--boundary-curvature", ",".join("%d:pi/2" % v for v in corners),
+                           "--uv-out", uvf, "--svg", svg], "smdf cone-metric mushroom_cgal.off 4 corners")
+            if r:
+                c.check(r.get("converged") is True and r.get("max_curvature_error", 1) <= 1e-9 and
+                        r.get("boundary_corners") == 4 and r.get("cones") == 0,
+                        "mushroom: converged, 4 boundary corners (error %r)" % r.get("max_curvature_error"))
+                uv = [tuple(float(x) for x in row) for row in read_rows(uvf)]
+                c.check(len(uv) == len(verts) and all(len(p) == 2 for p in uv),
+                        "mushroom: --uv-out has one 'u v' line per vertex")
+                if len(uv) == len(verts):
+                    def area2(f):
+                        a, b, d = uv[f[0]], uv[f[1]], uv[f[2]]
+                        return (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0])
+                    neg = sum(1 for f in faces if not area2(f) > 0)
+                    c.check(neg == 0 and r.get("uv_positively_oriented") is True,
+                            "mushroom: every laid-out triangle is positively oriented (%d not)" % neg)
+                    turns = {}
+                    for k, v in enumerate(loop):
+                        p, q, s = uv[loop[k - 1]], uv[v], uv[loop[(k + 1) % n]]
+                        d1, d2 = (q[0] - p[0], q[1] - p[1]), (s[0] - q[0], s[1] - q[1])
+                        turns[v] = math.atan2(d1[0] * d2[1] - d1[1] * d2[0], d1[0] * d2[0] + d1[1] * d2[1])
+                    found = sorted(v for v, t in turns.items() if abs(t) > 1e-6)
+                    c.check(found == sorted(corners) and
+                            all(abs(turns[v] - math.pi / 2) < 1e-7 for v in corners),
+                            "mushroom: the layout's boundary has exactly 4 corners of pi/2, at %r (found %r)"
+                            % (corners, found[:10]))
+                root = parse_svg(c, svg, "mushroom.svg")
+                if root is not None:
+                    polys = root.findall(".//" + SVG_NS + "polygon")
+                    c.check(len(polys) == len(faces) and
+                            all(hex_rgb(p.get("fill")) is not None for p in polys),
+                            "mushroom.svg: one coloured triangle per face (%d)" % len(polys))
+        smdf.error(["cone-metric", path, "--cones", "%d:pi/2" % loop[0]], "mushroom: --cones at a boundary vertex",
+                   1, "--boundary-curvature")
+
+    path = os.path.join(meshes, "spot_c3d.obj")
+    if not os.path.isfile(path):
+        print("skip: spot_c3d.obj not found")
+        return
+    ext = extreme_vertices(read_obj_vertices(path))
+    c.check(len(set(ext)) == 8, "spot_c3d.obj: 8 distinct extreme vertices %r" % ext)
+    r = smdf.json(["cone-metric", path, "--cones", ",".join("%d:pi/2" % v for v in ext)],
+                  "smdf cone-metric spot_c3d.obj 8 cones of pi/2")
+    if r:
+        c.check(r.get("converged") is True and r.get("max_curvature_error", 1) <= 1e-9 and r.get("cones") == 8,
+                "spot: converged with 8 cones (error %r, %r iterations)"
+                % (r.get("max_curvature_error"), r.get("iterations")))
 
 
 def main():

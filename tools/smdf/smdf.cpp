@@ -5,7 +5,8 @@
 //
 //   smdf <command> [options] MESH      one JSON object on stdout, or one error line on stderr
 //
-// Exit codes: 0 success, 1 the input cannot be processed, 2 usage error.
+// Exit codes: 0 success, 1 the input cannot be processed, 2 usage error, 3 a result that is
+// printed but flagged as failed (cone-metric: not converged; JSON on stdout and one error line).
 // Vertex and face indices are 0-based in file order (read_triangle_mesh() keeps it).
 //
 // Adding a subcommand: write `Json run_<name>(const Args&)` and add one entry to `commands()`
@@ -16,6 +17,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/errors.h>
 #include <CGAL/Surface_mesh_direction_fields/field_singularities.h>
 #include <CGAL/Surface_mesh_direction_fields/holonomy.h>
@@ -32,8 +34,10 @@
 #include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <limits>
@@ -47,6 +51,8 @@
 #include <type_traits>
 #include <utility>
 #include <vector>
+
+#include <unistd.h>   // isatty
 
 #ifndef SMDF_VERSION
 #define SMDF_VERSION "unknown"
@@ -235,6 +241,16 @@ struct Error : std::runtime_error
   using std::runtime_error::runtime_error;
 };
 
+// A result that is printed (the JSON object on stdout) but is a failure all the same: the
+// message goes to stderr as the one error line and the process exits with `exit_code` (3).
+// Used by cone-metric when Newton does not converge.
+struct Failed_result
+{
+  Json json;
+  std::string message;
+  int exit_code;
+};
+
 Error file_error(const std::string& file, const std::string& message, const char* kind)
 {
   return Error(file + ": " + message + " [" + kind + "]");
@@ -404,7 +420,8 @@ void print_usage(std::ostream& os)
         "Reads a triangle mesh (OFF, OBJ or PLY; it must be an orientable 2-manifold, possibly\n"
         "with boundary and several components) and prints one JSON object on stdout. Vertex and\n"
         "face indices are 0-based in file order. On failure prints one line to stderr and exits\n"
-        "with 1 (input that cannot be processed) or 2 (usage error).\n\n"
+        "with 1 (input that cannot be processed) or 2 (usage error); exit code 3 means the JSON\n"
+        "object was printed but the result failed (cone-metric: not converged, one stderr line).\n\n"
         "commands:\n";
   for(const Command& c : commands())
     os << "  " << std::left << std::setw(14) << c.name << c.summary << "\n";
@@ -1089,6 +1106,278 @@ Json run_singularities(const Args& args)
   return out;
 }
 
+// ---- cone-metric --------------------------------------------------------------------------
+
+// An angle in radians: a number as parse_number() reads it (integer, p/q, decimal), or a
+// multiple of pi written [c][*]pi[/d], c and d numbers as above: pi, -pi, pi/2, -4pi, 3*pi/4,
+// 0.5pi, 1/3*pi. False if malformed.
+bool parse_angle(const std::string& s, double& out)
+{
+  const std::size_t p = s.find("pi");
+  if(p == std::string::npos) return parse_number(s, out);
+  if(s.find("pi", p + 2) != std::string::npos) return false;
+  std::string pre = s.substr(0, p);
+  const std::string post = s.substr(p + 2);
+  double c = 1, d = 1;
+  if(!pre.empty() && pre.back() == '*') {
+    pre.pop_back();
+    if(pre.empty() || pre == "-" || pre == "+") return false;   // "*pi", "-*pi"
+  }
+  if(pre == "-") c = -1;
+  else if(pre == "+") c = 1;
+  else if(!pre.empty() && !parse_number(pre, c)) return false;
+  if(!post.empty()) {
+    if(post[0] != '/' || post.find('/', 1) != std::string::npos || !parse_number(post.substr(1), d) || d == 0)
+      return false;
+  }
+  out = c * CGAL_PI / d;
+  return std::isfinite(out);
+}
+
+// "v:x,v:x,...": pairs (vertex, x) with x read by `parse` (parse_angle or parse_number);
+// syntax errors are usage errors naming `option`.
+std::vector<std::pair<std::size_t, double>> parse_vertex_values(const std::string& option, const std::string& s,
+                                                                 bool (*parse)(const std::string&, double&),
+                                                                 const char* what)
+{
+  std::vector<std::pair<std::size_t, double>> out;
+  std::size_t start = 0;
+  while(start <= s.size()) {
+    std::size_t comma = s.find(',', start);
+    if(comma == std::string::npos) comma = s.size();
+    const std::string item = s.substr(start, comma - start);
+    const std::size_t colon = item.find(':');
+    std::size_t i;
+    double k;
+    if(colon == std::string::npos || !parse_index(item.substr(0, colon), i) || !parse(item.substr(colon + 1), k))
+      throw Usage_error("option --" + option + " expects 'v:x,v:x,...' (x " + what + "), got '" + shorten(item) + "'");
+    out.push_back(std::make_pair(i, k));
+    start = comma + 1;
+  }
+  return out;
+}
+
+// Blue (negative) - white (0) - red (positive) colour of t in [-1, 1].
+std::string diverging_color(double t)
+{
+  t = (std::max)(-1., (std::min)(1., std::isfinite(t) ? t : 0.));
+  const double blue[3] = {33, 102, 172}, red[3] = {178, 24, 43};
+  const double* end = t < 0 ? blue : red;
+  const double a = std::abs(t);
+  char buf[8];
+  int rgb[3];
+  for(int k = 0; k < 3; ++k) rgb[k] = int(std::lround(255 * (1 - a) + end[k] * a));
+  std::snprintf(buf, sizeof buf, "#%02x%02x%02x", rgb[0], rgb[1], rgb[2]);
+  return buf;
+}
+
+// The flattened disk as SVG: one triangle per face, filled by the mean conformal factor u of
+// its vertices (blue u < 0, white 0, red u > 0, scaled by max |u|); y points up.
+std::string layout_svg(const Mesh& mesh, const std::vector<K::Point_2>& uv, const std::vector<double>& u)
+{
+  double xmin = std::numeric_limits<double>::infinity(), ymin = xmin, xmax = -xmin, ymax = -xmin, umax = 0;
+  for(vertex_descriptor v : vertices(mesh)) {
+    const K::Point_2& p = uv[index(v)];
+    xmin = (std::min)(xmin, p.x()); xmax = (std::max)(xmax, p.x());
+    ymin = (std::min)(ymin, p.y()); ymax = (std::max)(ymax, p.y());
+    umax = (std::max)(umax, std::abs(u[index(v)]));
+  }
+  const double width = 800, margin = 10;
+  const double span = (std::max)(xmax - xmin, ymax - ymin);
+  const double scale = span > 0 ? (width - 2 * margin) / span : 1;
+  const double height = (ymax - ymin) * scale + 2 * margin;
+  std::ostringstream os;
+  os.imbue(std::locale::classic());
+  os << std::fixed << std::setprecision(2);
+  os << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+     << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << int(width) << "\" height=\"" << int(std::ceil(height))
+     << "\" viewBox=\"0 0 " << width << ' ' << std::ceil(height) << "\">\n"
+     << "<title>cone metric layout, faces coloured by the conformal factor u (max |u| = "
+     << std::setprecision(4) << umax << std::setprecision(2) << ")</title>\n"
+     << "<g stroke=\"#404040\" stroke-width=\"0.1\" stroke-linejoin=\"round\">\n";
+  for(face_descriptor f : faces(mesh)) {
+    os << "<polygon points=\"";
+    double us = 0;
+    int k = 0;
+    for(vertex_descriptor v : vertices_around_face(halfedge(f, mesh), mesh)) {
+      const K::Point_2& p = uv[index(v)];
+      os << (k++ ? " " : "") << margin + (p.x() - xmin) * scale << ',' << margin + (ymax - p.y()) * scale;
+      us += u[index(v)];
+    }
+    os << "\" fill=\"" << diverging_color(umax > 0 ? us / 3 / umax : 0) << "\"/>\n";
+  }
+  os << "</g>\n</svg>\n";
+  return os.str();
+}
+
+Json run_cone_metric(const Args& args)
+{
+  const std::string& file = args.positional[0];
+  const long iterations = args.integer("iterations", 100);
+  if(iterations < 0 || iterations > 1000000)
+    throw Usage_error("option --iterations expects an integer in [0, 1000000], got '" + args.value("iterations") + "'");
+  const double tolerance = args.real("tolerance", 1e-10);
+  if(!(tolerance > 0))
+    throw Usage_error("option --tolerance expects a positive number, got '" + args.value("tolerance") + "'");
+  std::vector<std::pair<std::size_t, double>> cones, indices, kappa;
+  if(args.has("cones")) cones = parse_vertex_values("cones", args.value("cones"), parse_angle, "radians: decimal, p/q, pi/2, -4pi, 3*pi/4, ...");
+  if(args.has("cone-indices")) indices = parse_vertex_values("cone-indices", args.value("cone-indices"), parse_number, "an index k, K = 2 pi k: integer, p/q or decimal");
+  if(args.has("boundary-curvature")) kappa = parse_vertex_values("boundary-curvature", args.value("boundary-curvature"), parse_angle, "radians: decimal, p/q, pi/2, -pi/4, ...");
+  const bool want_uv = args.has("uv-out") || args.has("svg");
+  const bool progress = args.has("progress") || isatty(2);
+
+  Mesh mesh;
+  load_mesh(file, mesh);
+  const std::size_t nv = num_vertices(mesh);
+  if(want_uv) {
+    const SMDF::Mesh_topology<Mesh> topo = on_file(file, [&] { return SMDF::mesh_topology(mesh); });
+    if(topo.components.size() != 1 || topo.components[0].boundary_loops != 1 || topo.components[0].genus != 0 ||
+       topo.isolated_vertices != 0)
+      throw Usage_error(std::string("option --") + (args.has("uv-out") ? "uv-out" : "svg") +
+                        " needs a topological disk (one component, one boundary loop, genus 0, no isolated "
+                        "vertex); " + file + " has " + std::to_string(topo.components.size()) + " component(s), " +
+                        std::to_string(topo.boundary_loops.size()) + " boundary loop(s)");
+  }
+
+  // targets: 0 everywhere, then the options
+  Mesh::Property_map<vertex_descriptor, double> targets =
+    mesh.add_property_map<vertex_descriptor, double>("v:smdf_target_curvature", 0.).first;
+  std::vector<const char*> given_by(nv, nullptr);
+  auto set_target = [&](const char* option, std::size_t v, double k, bool boundary_option) {
+    if(v >= nv)
+      throw Error(std::string("--") + option + ": vertex " + std::to_string(v) + " does not exist (the mesh has " +
+                  std::to_string(nv) + " vertices)");
+    if(given_by[v])
+      throw Error(std::string("--") + option + ": vertex " + std::to_string(v) + " is given twice" +
+                  (given_by[v] == option ? std::string() : std::string(" (also by --") + given_by[v] + ")"));
+    const vertex_descriptor vd = vertex_descriptor(Mesh::size_type(v));
+    if(halfedge(vd, mesh) == boost::graph_traits<Mesh>::null_halfedge())
+      throw Error(std::string("--") + option + ": vertex " + std::to_string(v) + " is isolated");
+    const bool boundary = bool(CGAL::is_border(vd, mesh));
+    if(boundary && !boundary_option)
+      throw Error(std::string("--") + option + ": vertex " + std::to_string(v) +
+                  " is on the boundary: give its geodesic curvature with --boundary-curvature");
+    if(!boundary && boundary_option)
+      throw Error(std::string("--") + option + ": vertex " + std::to_string(v) +
+                  " is an interior vertex: give its curvature with --cones or --cone-indices");
+    given_by[v] = option;
+    put(targets, vd, k);
+  };
+  for(const auto& c : cones) set_target("cones", c.first, c.second, false);
+  for(const auto& c : indices) set_target("cone-indices", c.first, 2 * CGAL_PI * c.second, false);
+  for(const auto& c : kappa) set_target("boundary-curvature", c.first, c.second, true);
+
+  Mesh::Property_map<edge_descriptor, double> lengths =
+    mesh.add_property_map<edge_descriptor, double>("e:smdf_cone_length", 0.).first;
+  Mesh::Property_map<vertex_descriptor, double> ufac =
+    mesh.add_property_map<vertex_descriptor, double>("v:smdf_conformal_factor", 0.).first;
+  auto visitor = [progress](int it, double err) {
+    if(!progress) return;
+    std::ostringstream os;
+    os.imbue(std::locale::classic());
+    os << "smdf: cone-metric: iteration " << it << ", max curvature error " << std::setprecision(3) << err << '\n';
+    std::cerr << os.str() << std::flush;
+  };
+  SMDF::Cone_metric_status st;
+  try {
+    st = SMDF::compute_cone_metric(mesh, targets, lengths,
+                                   SMDF::parameters::conformal_factor_map(ufac)
+                                       .number_of_iterations(int(iterations))
+                                       .curvature_tolerance(tolerance)
+                                       .visitor(visitor));
+  } catch(const SMDF::Input_error& e) {
+    if(e.kind() != SMDF::Input_error::INCONSISTENT_INDICES) throw file_error(file, e.what(), SMDF::Input_error::kind_name(e.kind()));
+    // Gauss-Bonnet: also state the totals as cone indices (K / 2 pi) against chi, per component
+    std::vector<std::size_t> parent(nv);
+    for(std::size_t v = 0; v < nv; ++v) parent[v] = v;
+    std::function<std::size_t(std::size_t)> root = [&](std::size_t v) {
+      while(parent[v] != v) v = parent[v] = parent[parent[v]];
+      return v;
+    };
+    for(edge_descriptor ed : edges(mesh)) {
+      const halfedge_descriptor h = halfedge(ed, mesh);
+      parent[root(index(source(h, mesh)))] = root(index(target(h, mesh)));
+    }
+    std::map<std::size_t, std::pair<double, long>> comp;   // root -> (sum of targets, chi)
+    for(vertex_descriptor v : vertices(mesh))
+      if(halfedge(v, mesh) != boost::graph_traits<Mesh>::null_halfedge()) {
+        auto& c = comp[root(index(v))];
+        c.first += get(targets, v);
+        c.second += 1;
+      }
+    for(edge_descriptor ed : edges(mesh)) comp[root(index(source(halfedge(ed, mesh), mesh)))].second -= 1;
+    for(face_descriptor f : faces(mesh)) comp[root(index(target(halfedge(f, mesh), mesh)))].second += 1;
+    std::string detail;
+    for(const auto& c : comp)
+      if(std::abs(c.second.first - 2 * CGAL_PI * double(c.second.second)) >
+         1e-8 * (std::max)(1., 2 * CGAL_PI * std::abs(double(c.second.second)))) {
+        detail = "; as cone indices (K / 2pi): the targets sum to " + format_real(c.second.first / (2 * CGAL_PI)) +
+                 " but the Euler characteristic is " + std::to_string(c.second.second);
+        break;
+      }
+    throw file_error(file, e.what() + detail, SMDF::Input_error::kind_name(e.kind()));
+  }
+
+  if(args.has("lengths-out")) {
+    std::ostringstream os;
+    os.imbue(std::locale::classic());
+    os.precision(17);
+    for(edge_descriptor e : edges(mesh)) {
+      const halfedge_descriptor h = halfedge(e, mesh);
+      os << index(source(h, mesh)) << ' ' << index(target(h, mesh)) << ' ' << get(lengths, e) << '\n';
+    }
+    write_lines_file(args.value("lengths-out"), os.str());
+  }
+
+  std::size_t ncones = 0, nkappa = 0;
+  for(vertex_descriptor v : vertices(mesh))
+    if(get(targets, v) != 0) ++(CGAL::is_border(v, mesh) ? nkappa : ncones);
+  Json out = Json::object();
+  out["status"] = st.converged ? "converged" : "not_converged";
+  out["converged"] = st.converged;
+  out["iterations"] = st.iterations;
+  out["max_curvature_error"] = st.max_curvature_error;
+  out["time_s"] = st.seconds;
+  out["method"] = "discrete conformal vertex scaling (Newton, CHOLMOD)";
+  out["message"] = st.message;
+  out["cones"] = ncones;
+  out["boundary_corners"] = nkappa;
+
+  if(!st.converged) {
+    std::ostringstream os;
+    os.imbue(std::locale::classic());
+    os << file << ": cone metric not converged (tolerance " << std::setprecision(3) << tolerance
+       << ", " << st.iterations << " iterations): " << st.message
+       << (want_uv ? " (--uv-out/--svg not written)" : "");
+    throw Failed_result{out, os.str(), 3};
+  }
+
+  if(want_uv) {
+    std::vector<K::Point_2> uv(nv, K::Point_2(0, 0));
+    Mesh::Property_map<vertex_descriptor, K::Point_2> uvmap =
+      mesh.add_property_map<vertex_descriptor, K::Point_2>("v:smdf_uv", K::Point_2(0, 0)).first;
+    const bool injective = on_file(file, [&] {
+      return SMDF::lay_out_disk(mesh, lengths, uvmap,
+                                SMDF::parameters::curvature_tolerance((std::max)(1e-8, 10 * tolerance)));
+    });
+    for(vertex_descriptor v : vertices(mesh)) uv[index(v)] = get(uvmap, v);
+    out["uv_positively_oriented"] = injective;
+    if(args.has("uv-out")) {
+      std::ostringstream os;
+      os.imbue(std::locale::classic());
+      os.precision(17);
+      for(vertex_descriptor v : vertices(mesh)) os << uv[index(v)].x() << ' ' << uv[index(v)].y() << '\n';
+      write_lines_file(args.value("uv-out"), os.str());
+    }
+    if(args.has("svg")) {
+      std::vector<double> u(nv, 0.);
+      for(vertex_descriptor v : vertices(mesh)) u[index(v)] = get(ufac, v);
+      write_lines_file(args.value("svg"), layout_svg(mesh, uv, u));
+    }
+  }
+  return out;
+}
+
 // ---- Dispatch table -----------------------------------------------------------------------
 
 const std::vector<Command>& commands()
@@ -1159,6 +1448,40 @@ const std::vector<Command>& commands()
      "the face plane and prints {N, singularities: [{vertex, index}], generator_turning_numbers,\n"
      "max_rounding_error}. Indices are multiples of 1/N; generators are those of 'generators'.\n",
      run_singularities},
+    {"cone-metric", {"MESH"},
+     {{"cones", "LIST", "target curvatures 'v:K,...' of interior vertices, K in radians"},
+      {"cone-indices", "LIST", "the same as indices 'v:k,...', K = 2 pi k (k integer, p/q, decimal)"},
+      {"boundary-curvature", "LIST", "target geodesic curvatures 'v:kappa,...' of boundary vertices"},
+      {"lengths-out", "FILE", "write the metric: one line 'i j length' per edge"},
+      {"uv-out", "FILE", "disks only: write the flat layout, one line 'u v' per vertex"},
+      {"svg", "FILE", "disks only: draw the flat layout, faces coloured by the conformal factor"},
+      {"iterations", "n", "maximum number of Newton iterations (default 100)"},
+      {"tolerance", "t", "max curvature error accepted, radians (default 1e-10)"},
+      {"progress", "", "print the error of every iteration to stderr (default: only on a terminal)"}},
+     "flat cone metric with prescribed cone angles (discrete conformal map)",
+     "Computes edge lengths, conformally equivalent to the Euclidean ones (l_ij = l0_ij\n"
+     "exp((u_i + u_j) / 2)), whose discrete curvature is the target at every vertex: the angle\n"
+     "defect 2 pi - sum(angles) at interior vertices (0 unless given by --cones/--cone-indices;\n"
+     "must be < 2 pi) and the geodesic curvature pi - sum(angles) at boundary vertices (0 unless\n"
+     "given by --boundary-curvature; must be < pi). On every component the targets must sum to\n"
+     "2 pi chi (Gauss-Bonnet), e.g. eight cones of pi/2 on a sphere, or four boundary corners of\n"
+     "pi/2 on a disk (a rectangle). The triangulation is kept (no edge flips).\n"
+     "Angles K, kappa: a decimal or p/q in radians, or a multiple of pi written [c][*]pi[/d]\n"
+     "(pi, -pi, pi/2, 3*pi/4, -4pi, 0.5pi). Each vertex may be given once, by one option.\n"
+     "Prints {status: \"converged\"|\"not_converged\", converged, iterations,\n"
+     "max_curvature_error (radians), time_s, method, message (empty when converged), cones\n"
+     "(interior vertices with K != 0), boundary_corners (boundary vertices with kappa != 0),\n"
+     "uv_positively_oriented (with --uv-out/--svg: every laid-out triangle is counterclockwise)}.\n"
+     "--lengths-out writes 'i j length' per edge (i j the vertices of halfedge(e), 17 digits),\n"
+     "readable by 'holonomy --lengths'. --uv-out and --svg need a topological disk (usage\n"
+     "error otherwise); the layout unfolds the faces breadth-first from face 0 and may overlap\n"
+     "itself globally. The SVG colours faces by the mean conformal factor u of their vertices\n"
+     "(blue u < 0, white 0, red u > 0, scaled by max |u|).\n"
+     "Not converged (tolerance not reached in --iterations, or the target metric does not\n"
+     "exist on this triangulation): the JSON object is still printed on stdout, one error line\n"
+     "goes to stderr and the exit code is 3; --lengths-out then holds the last valid iterate\n"
+     "and --uv-out/--svg are not written.\n",
+     run_cone_metric},
   };
   return table;
 }
@@ -1201,10 +1524,20 @@ int run(const std::vector<std::string>& argv)
   const Args args = parse_args(*cmd, std::vector<std::string>(argv.begin() + 1, argv.end()));
   if(args.help) { print_command_usage(*cmd, std::cout); return EXIT_SUCCESS; }
 
-  const std::string json = cmd->run(args).str();   // fully built before anything is printed
+  std::string json;
+  std::string failure;
+  int code = EXIT_SUCCESS;
+  try {
+    json = cmd->run(args).str();   // fully built before anything is printed
+  } catch(const Failed_result& r) {
+    json = r.json.str();
+    failure = r.message;
+    code = r.exit_code;
+  }
   std::cout << json << '\n' << std::flush;
   if(!std::cout) throw Error("cannot write to standard output");
-  return EXIT_SUCCESS;
+  if(code != EXIT_SUCCESS) print_error(failure);
+  return code;
 }
 
 } // namespace
