@@ -41,11 +41,60 @@ struct Tests
   typedef std::map<vertex_descriptor, double> Cones;
   std::mt19937 rng{7};
 
-  // Runs compute_cone_metric with targets `cones` (0 elsewhere) and checks the result.
+  // Checks a metric `len` on `tri` (the input mesh, or a copy of the intrinsic triangulation,
+  // whose i-th vertex is the input's i-th): strict triangle inequalities, area, curvature of
+  // every vertex recomputed by compute_vertex_curvatures against `target` (by vertex index),
+  // Levi-Civita holonomy around non-cone interior vertices = 0 mod 2pi (sampled on large meshes)
+  // and around cones = the cone's curvature.
+  template <typename Tri, typename LengthMap>
+  void check_metric(const Tri& tri, LengthMap len, const std::vector<double>& target,
+                    const std::vector<char>& is_cone, double area_in, bool converged, const std::string& what)
+  {
+    typedef boost::graph_traits<Tri> TGT;
+    bool valid = true;
+    double area = 0;
+    for(auto f : faces(tri)) {
+      typename TGT::halfedge_descriptor h = halfedge(f, tri);
+      const double a = get(len, edge(h, tri)), b = get(len, edge(next(h, tri), tri)),
+                   c = get(len, edge(next(next(h, tri), tri), tri));
+      if(!SMDF::is_valid_triangle(a, b, c)) valid = false;
+      else area += SMDF::triangle_area(a, b, c);
+    }
+    SMDF_CHECK_MSG(valid, what << ": triangle inequalities");
+    // area normalisation (all test meshes have one component)
+    SMDF_CHECK_MSG(std::abs(area - area_in) <= 1e-10 * area_in, what << ": total area preserved " << area_in << " " << area);
+    if(!converged || !valid) return;
+    auto k = get(CGAL::dynamic_vertex_property_t<double>(), tri);
+    SMDF::compute_vertex_curvatures(tri, k, SMDF::parameters::edge_length_map(len));
+    double kerr = 0;
+    std::size_t i = 0;
+    for(auto v : vertices(tri)) {   // relative to the cone angle when it exceeds 2 pi (rounding)
+      kerr = (std::max)(kerr, std::abs(get(k, v) - target[i]) / (std::max)(1., 1 - target[i] / (2 * M_PI)));
+      ++i;
+    }
+    SMDF_CHECK_MSG(kerr <= 1e-9, what << ": curvature of the output metric, error " << kerr);
+    SMDF::Intrinsic_holonomy<Tri> hol(tri, SMDF::parameters::edge_length_map(len));
+    double herr = 0;
+    std::size_t n = 0, stride = (std::max<std::size_t>)(1, num_vertices(tri) / 3000);
+    i = 0;
+    for(auto v : vertices(tri)) {
+      const std::size_t vi = i++;
+      if(halfedge(v, tri) == TGT::null_halfedge() || is_border(v, tri) || (vi % stride != 0 && !is_cone[vi]))
+        continue;   // isolated, boundary, or not sampled
+      const double hv = hol.levi_civita_holonomy(hol.dual_cycle_around_vertex(v));
+      herr = (std::max)(herr, std::abs(smdf_test::wrap(hv - (is_cone[vi] ? target[vi] : 0.))) /
+                                  (std::max)(1., 1 - target[vi] / (2 * M_PI)));
+      ++n;
+    }
+    SMDF_CHECK_MSG(herr <= 1e-9, what << ": holonomy around " << n << " vertices, error " << herr);
+  }
+
+  // Runs compute_cone_metric with targets `cones` (0 elsewhere) and checks the result, on the
+  // input mesh or, when the flow flipped edges, on a copy of the intrinsic triangulation.
   // Returns true if it converged.
   template <typename LengthMap>
   bool run(const Mesh& mesh, const Cones& cones, LengthMap out, const std::string& what,
-           int max_iterations = 100)
+           int max_iterations = 200, bool flips = true)
   {
     auto tgt = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
     for(auto v : vertices(mesh)) put(tgt, v, 0.);
@@ -56,95 +105,170 @@ struct Tests
     SMDF::Cone_metric_status st = SMDF::compute_cone_metric(
         mesh, tgt, out,
         SMDF::parameters::conformal_factor_map(ufac).number_of_iterations(max_iterations)
+            .intrinsic_edge_flips(flips)
             .visitor([&](int it, double err) { ++calls; last_it = it; last_err = err; }));
     std::cout << what << ": converged " << st.converged << ", " << st.iterations << " iterations, error "
-              << st.max_curvature_error << ", " << st.seconds << " s" << (st.message.empty() ? "" : ", ")
-              << st.message << std::endl;
+              << st.max_curvature_error << ", " << st.seconds << " s";
+    if(st.triangulation_changed)
+      std::cout << ", intrinsic triangulation (" << st.edge_flips << " flips, "
+                << st.intrinsic_triangulation.number_of_new_edges() << " new edges)";
+    std::cout << (st.message.empty() ? "" : ", ") << st.message << std::endl;
     SMDF_CHECK_MSG(calls == st.iterations + 1 && last_it == st.iterations, what << ": visitor calls " << calls);
     SMDF_CHECK_MSG(last_err >= 0, what << ": visitor error");
+    SMDF_CHECK_MSG(flips || (st.edge_flips == 0 && !st.triangulation_changed), what << ": flips disabled");
+    SMDF_CHECK_MSG(st.triangulation_changed == !st.intrinsic_triangulation.empty(), what << ": triangulation iff changed");
     if(!st.converged) {
       SMDF_CHECK_MSG(!st.message.empty(), what << ": non-convergence has a message");
       if(what.find("1 iteration") == std::string::npos) not_converged.push_back(what + ": " + st.message);
     } else {
-      SMDF_CHECK_MSG(st.message.empty() && st.max_curvature_error <= 1e-10, what << ": " << st.max_curvature_error);
+      SMDF_CHECK_MSG(st.message.empty() && st.max_curvature_error <= 1e-10 * (1 + max_cone_angle(cones) / (2 * M_PI)), what << ": " << st.max_curvature_error);
     }
-    // the output is always a valid metric: strict triangle inequalities on every face
-    bool valid = true;
+    std::vector<vertex_descriptor> vs(vertices(mesh).begin(), vertices(mesh).end());
+    std::vector<double> tv;
+    std::vector<char> is_cone;
+    for(auto v : vs) { tv.push_back(get(tgt, v)); is_cone.push_back(cones.count(v) ? 1 : 0); }
+    auto l0 = SMDF::get_edge_length_map(mesh);
+    double area_in = 0;
     for(auto f : faces(mesh)) {
       halfedge_descriptor h = halfedge(f, mesh);
-      const double a = get(out, edge(h, mesh)), b = get(out, edge(next(h, mesh), mesh)),
-                   c = get(out, edge(next(next(h, mesh), mesh), mesh));
-      if(!SMDF::is_valid_triangle(a, b, c)) valid = false;
+      area_in += SMDF::triangle_area(get(l0, edge(h, mesh)), get(l0, edge(next(h, mesh), mesh)),
+                                     get(l0, edge(next(next(h, mesh), mesh), mesh)));
     }
-    SMDF_CHECK_MSG(valid, what << ": triangle inequalities");
-    // conformal factors reproduce the lengths
-    auto l0 = SMDF::get_edge_length_map(mesh);
-    double ferr = 0;
-    for(auto e : edges(mesh)) {
-      const double l = get(l0, e) * std::exp(0.5 * (get(ufac, source(e, mesh)) + get(ufac, target(e, mesh))));
-      ferr = (std::max)(ferr, std::abs(l - get(out, e)) / l);
+    double ferr = 0;   // conformal factors reproduce the lengths of the input edges
+    if(!st.triangulation_changed) {
+      for(auto e : edges(mesh)) {
+        const double l = get(l0, e) * std::exp(0.5 * (get(ufac, source(e, mesh)) + get(ufac, target(e, mesh))));
+        ferr = (std::max)(ferr, std::abs(l - get(out, e)) / l);
+      }
+      check_metric(mesh, out, tv, is_cone, area_in, st.converged, what);
+    } else {
+      const SMDF::Intrinsic_triangulation& it = st.intrinsic_triangulation;
+      SMDF_CHECK(it.number_of_vertices() == num_vertices(mesh) && it.number_of_faces() == num_faces(mesh));
+      std::vector<edge_descriptor> es(edges(mesh).begin(), edges(mesh).end());
+      std::vector<char> kept(es.size(), 0);
+      bool ends_ok = true;
+      for(std::size_t e = 0; e < it.number_of_edges(); ++e) {
+        const long ie = it.input_edge(int(e));
+        if(ie < 0) continue;
+        kept[ie] = 1;
+        const double l = get(l0, es[ie]) * std::exp(0.5 * (get(ufac, source(es[ie], mesh)) + get(ufac, target(es[ie], mesh))));
+        ferr = (std::max)(ferr, std::abs(l - it.length(int(e))) / l);
+        ferr = (std::max)(ferr, std::abs(get(out, es[ie]) - it.length(int(e))) / l);
+        const std::size_t a = std::size_t(it.source(2 * int(e))), b = std::size_t(it.target(2 * int(e)));
+        const vertex_descriptor c = source(es[ie], mesh), d = target(es[ie], mesh);
+        ends_ok = ends_ok && ((vs[a] == c && vs[b] == d) || (vs[a] == d && vs[b] == c));
+      }
+      SMDF_CHECK_MSG(ends_ok, what << ": input edges of the intrinsic triangulation join the same vertices");
+      bool nan_ok = true;
+      for(std::size_t e = 0; e < es.size(); ++e) nan_ok = nan_ok && (kept[e] == !std::isnan(get(out, es[e])));
+      SMDF_CHECK_MSG(nan_ok, what << ": output lengths NaN exactly on the flipped-away input edges");
+      Surface_mesh tri;
+      auto tl = tri.template add_property_map<Surface_mesh::Edge_index, double>("e:length", 0.).first;
+      SMDF::copy_intrinsic_triangulation(it, mesh, tri, tl);
+      SMDF_CHECK_MSG(tri.is_valid(false), what << ": copied intrinsic triangulation is a valid halfedge structure");
+      check_metric(tri, tl, tv, is_cone, area_in, st.converged, what + " (intrinsic)");
     }
     SMDF_CHECK_MSG(ferr < 1e-12, what << ": conformal factors give the lengths, rel. error " << ferr);
-    // area normalisation (all test meshes have one component)
-    double a_in = 0, a_out = 0;
-    for(auto f : faces(mesh)) {
-      halfedge_descriptor h = halfedge(f, mesh);
-      edge_descriptor e[3] = {edge(h, mesh), edge(next(h, mesh), mesh), edge(next(next(h, mesh), mesh), mesh)};
-      a_in += SMDF::triangle_area(get(l0, e[0]), get(l0, e[1]), get(l0, e[2]));
-      a_out += SMDF::triangle_area(get(out, e[0]), get(out, e[1]), get(out, e[2]));
-    }
-    SMDF_CHECK_MSG(std::abs(a_out - a_in) <= 1e-10 * a_in, what << ": total area preserved " << a_in << " " << a_out);
-    if(!st.converged || !valid) return st.converged;
-
-    // independent curvature of the output
-    auto k = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
-    SMDF::compute_vertex_curvatures(mesh, k, SMDF::parameters::edge_length_map(out));
-    double kerr = 0;
-    for(auto v : vertices(mesh)) kerr = (std::max)(kerr, std::abs(get(k, v) - get(tgt, v)));
-    SMDF_CHECK_MSG(kerr <= 1e-9, what << ": curvature of the output metric, error " << kerr);
-    // holonomy around non-cone interior vertices (sampled on large meshes)
-    SMDF::Intrinsic_holonomy<Mesh> hol(mesh, SMDF::parameters::edge_length_map(out));
-    double herr = 0;
-    std::size_t n = 0, i = 0, stride = (std::max<std::size_t>)(1, num_vertices(mesh) / 3000);
-    for(auto v : vertices(mesh)) {
-      if(i++ % stride != 0 || is_border(v, mesh) || cones.count(v)) continue;
-      herr = (std::max)(herr, std::abs(smdf_test::wrap(hol.levi_civita_holonomy(hol.dual_cycle_around_vertex(v)))));
-      ++n;
-    }
-    for(const auto& c : cones) if(!is_border(c.first, mesh)) {
-      const double hc = hol.levi_civita_holonomy(hol.dual_cycle_around_vertex(c.first));
-      herr = (std::max)(herr, std::abs(smdf_test::wrap(hc - c.second)));
-    }
-    SMDF_CHECK_MSG(herr <= 1e-9, what << ": holonomy around " << n << " vertices, error " << herr);
-    return true;
+    return st.converged;
   }
 
-  Cones extreme_cones(const Mesh& mesh, double k)
+  // vertex -> component (through shared edges)
+  std::map<vertex_descriptor, int> components(const Mesh& mesh, int& count)
+  {
+    std::map<vertex_descriptor, int> comp;
+    count = 0;
+    for(auto v : vertices(mesh)) {
+      if(comp.count(v) || halfedge(v, mesh) == GT::null_halfedge()) continue;
+      std::vector<vertex_descriptor> stack(1, v);
+      comp[v] = count;
+      while(!stack.empty()) {
+        vertex_descriptor w = stack.back();
+        stack.pop_back();
+        for(auto h : CGAL::halfedges_around_target(w, mesh)) {
+          vertex_descriptor x = source(h, mesh);
+          if(!comp.count(x)) { comp[x] = count; stack.push_back(x); }
+        }
+      }
+      ++count;
+    }
+    return comp;
+  }
+
+  // Targets of the shared-mesh sweep, per component (see main()).
+  Cones standard_targets(const Mesh& mesh)
+  {
+    int nc = 0;
+    const auto comp = components(mesh, nc);
+    std::vector<long> nv(nc, 0), ne(nc, 0), nf(nc, 0), nb(nc, 0);
+    for(const auto& x : comp) { ++nv[x.second]; if(is_border(x.first, mesh)) ++nb[x.second]; }
+    for(auto e : edges(mesh)) ++ne[comp.at(source(e, mesh))];
+    for(auto f : faces(mesh)) ++nf[comp.at(target(halfedge(f, mesh), mesh))];
+    Cones c;
+    for(int i = 0; i < nc; ++i) {
+      const long chi = nv[i] - ne[i] + nf[i];
+      if(nb[i] > 0) {
+        for(const auto& x : comp)
+          if(x.second == i && is_border(x.first, mesh)) c[x.first] = 2 * M_PI * double(chi) / double(nb[i]);
+      } else if(chi == 2) {
+        const Cones e = extreme_cones(mesh, M_PI / 2, &comp, i);
+        c.insert(e.begin(), e.end());
+      } else if(chi < 0) {
+        std::size_t best = 0;
+        vertex_descriptor bv = comp.begin()->first;
+        for(const auto& x : comp)
+          if(x.second == i && degree(x.first, mesh) > best) { best = degree(x.first, mesh); bv = x.first; }
+        c[bv] = 2 * M_PI * double(chi);
+      }
+    }
+    return c;
+  }
+
+  std::string describe(const Mesh& mesh, const Cones& c)
+  {
+    std::size_t interior = 0, border = 0;
+    double kmin = 0;
+    for(const auto& x : c) {
+      if(is_border(x.first, mesh)) ++border;
+      else { ++interior; kmin = (std::min)(kmin, x.second); }
+    }
+    std::ostringstream os;
+    if(c.empty()) os << "flat";
+    else {
+      os << interior << " cones";
+      if(kmin < -1) os << " (min " << kmin / M_PI << " pi)";
+      if(border) os << ", " << border << " boundary vertices with prescribed geodesic curvature";
+    }
+    return os.str();
+  }
+
+  static double max_cone_angle(const Cones& c)
+  {
+    double a = 0;
+    for(const auto& x : c) a = (std::max)(a, 2 * M_PI - x.second);
+    return a;
+  }
+
+  Cones extreme_cones(const Mesh& mesh, double k, const std::map<vertex_descriptor, int>* comp = nullptr, int which = 0)
   {
     Cones c;
     for(int sx = -1; sx <= 1; sx += 2)
       for(int sy = -1; sy <= 1; sy += 2)
         for(int sz = -1; sz <= 1; sz += 2) {
           double best = -1e300;
-          vertex_descriptor bv;
+          vertex_descriptor bv = GT::null_vertex();
           for(auto v : vertices(mesh)) {
             if(c.count(v) || is_border(v, mesh)) continue;
+            if(comp && (!comp->count(v) || comp->at(v) != which)) continue;
             const auto& p = get(CGAL::vertex_point, mesh, v);
             const double d = sx * p.x() + sy * p.y() + sz * p.z();
             if(d > best) { best = d; bv = v; }
           }
-          c[bv] = k;
+          if(bv != GT::null_vertex()) c[bv] = k;
         }
+    // fewer than 8 vertices: share 4 pi
+    if(c.size() < 8)
+      for(auto& x : c) x.second = 4 * M_PI / double(c.size());
     return c;
-  }
-
-  vertex_descriptor max_valence_vertex(const Mesh& mesh)
-  {
-    vertex_descriptor bv = *vertices(mesh).begin();
-    std::size_t best = 0;
-    for(auto v : vertices(mesh))
-      if(degree(v, mesh) > best) { best = degree(v, mesh); bv = v; }
-    return bv;
   }
 
   // random cones, multiples of pi/2 in [-pi, 3pi/2], summing to 2 pi chi
@@ -210,7 +334,7 @@ struct Tests
       SMDF_CHECK(!run(torus, c, out, "generated torus, cone pair, 1 iteration" + suffix, 1));
     }
     // a cone of -3.99 pi at a vertex of valence 6: not realisable by vertex scaling on this
-    // triangulation; the status must say so
+    // triangulation (the status must say so when flips are disabled), realised with flips
     {
       Cones c;
       auto it = vertices(torus).begin();
@@ -222,8 +346,8 @@ struct Tests
       auto tgt = get(CGAL::dynamic_vertex_property_t<double>(), torus);
       for(auto v : vertices(torus)) put(tgt, v, 0.);
       for(const auto& x : c) put(tgt, x.first, x.second);
-      SMDF::Cone_metric_status st = SMDF::compute_cone_metric(torus, tgt, out);
-      std::cout << "generated torus, cone -3.99pi at valence 6: converged " << st.converged << ", "
+      SMDF::Cone_metric_status st = SMDF::compute_cone_metric(torus, tgt, out, SMDF::parameters::intrinsic_edge_flips(false));
+      std::cout << "generated torus, cone -3.99pi at valence 6, no flips: converged " << st.converged << ", "
                 << st.iterations << " iterations, error " << st.max_curvature_error << ", " << st.message << std::endl;
       SMDF_CHECK_MSG(!st.converged && st.message.find("cannot carry") != std::string::npos,
                      "infeasible target reported: " << st.message);
@@ -234,6 +358,7 @@ struct Tests
                                                  get(out, edge(next(next(h, torus), torus), torus)));
       }
       SMDF_CHECK_MSG(valid, "the last iterate of a failed flow is a valid metric");
+      SMDF_CHECK(run(torus, c, out, "generated torus, cone -3.99pi at valence 6, with flips" + suffix));
     }
     // cylinder: straight boundary loops, flat
     auto outc = get(CGAL::dynamic_edge_property_t<double>(), cyl);
@@ -357,19 +482,27 @@ int main()
     return smdf_test::finish();
   }
   const std::string md = dir + "/meshes/";
-  // (a) flat metrics on genus-1 meshes
-  for(const std::string f : {"torus_ddg.obj", "rocker-arm_c3d.obj", "knot1_cgal.off"}) {
+  // Every usable shared mesh (manifold, oriented, triangles, no degenerate face, at most 120k
+  // faces), per component: (a) genus 1: flat; (b) genus 0: 8 cones of pi/2 at extreme vertices;
+  // (c) genus g >= 2: one cone of 2 pi (2 - 2g) at the vertex of highest valence; with boundary:
+  // flat inside, geodesic curvature 2 pi chi / n on each of the n boundary vertices.
+  // (d) random chi-consistent cone sets on the closed single-component meshes up to 40k faces.
+  for(const auto& entry : smdf_test::read_manifest(dir)) {
+    if(entry.manifold != "yes" || entry.pure_tri != "yes" || entry.orientable != "yes" ||
+       entry.degenerate_faces != 0 || entry.F > 120000)
+      continue;
     Surface_mesh mesh;
-    if(!read(md + f, mesh)) continue;
+    try { if(!read(md + entry.file, mesh)) continue; }
+    catch(const SMDF::Input_error& e) { std::cout << entry.file << ": skipped, " << e.what() << std::endl; continue; }
+    Tests<Surface_mesh>::Cones c = ts.standard_targets(mesh);
     auto out = get(CGAL::dynamic_edge_property_t<double>(), mesh);
-    ts.run(mesh, Tests<Surface_mesh>::Cones(), out, f + ", flat");
-  }
-  // (b) 8 cones of pi/2 at extreme vertices of genus-0 meshes
-  for(const std::string f : {"spot_c3d.obj", "bunny_bff.obj", "armadillo_cgal.off"}) {
-    Surface_mesh mesh;
-    if(!read(md + f, mesh)) continue;
-    auto out = get(CGAL::dynamic_edge_property_t<double>(), mesh);
-    ts.run(mesh, ts.extreme_cones(mesh, M_PI / 2), out, f + ", 8 cones pi/2");
+    ts.run(mesh, c, out, entry.file + ", " + ts.describe(mesh, c));
+    if(entry.components == 1 && entry.boundary_loops == 0 && entry.F <= 40000)
+      for(int i = 0; i < 2; ++i) {
+        const long chi = long(entry.V) - long(entry.E) + long(entry.F);
+        const auto rc = ts.random_cones(mesh, chi);
+        ts.run(mesh, rc, out, entry.file + ", random cones #" + std::to_string(i) + " (" + std::to_string(rc.size()) + " cones)");
+      }
   }
   {
     Polyhedron p;
@@ -377,26 +510,10 @@ int main()
       auto out = get(CGAL::dynamic_edge_property_t<double>(), p);
       tp.run(p, tp.extreme_cones(p, M_PI / 2), out, "spot_c3d.obj, 8 cones pi/2 (Polyhedron_3)");
     }
-  }
-  // (c) genus 2: one cone of -4pi at the vertex of highest valence
-  for(const std::string f : {"double-torus_jnd.off", "eight_directional.off"}) {
-    Surface_mesh mesh;
-    if(!read(md + f, mesh)) continue;
-    auto out = get(CGAL::dynamic_edge_property_t<double>(), mesh);
-    Tests<Surface_mesh>::Cones c;
-    const auto v = ts.max_valence_vertex(mesh);
-    c[v] = -4 * M_PI;
-    ts.run(mesh, c, out, f + ", one cone -4pi at a vertex of valence " + std::to_string(degree(v, mesh)));
-  }
-  // (d) random chi-consistent cone sets on spot
-  {
-    Surface_mesh mesh;
-    if(read(md + "spot_c3d.obj", mesh)) {
-      auto out = get(CGAL::dynamic_edge_property_t<double>(), mesh);
-      for(int i = 0; i < 4; ++i) {
-        const auto c = ts.random_cones(mesh, 2);
-        ts.run(mesh, c, out, "spot_c3d.obj, random cones #" + std::to_string(i) + " (" + std::to_string(c.size()) + " cones)");
-      }
+    Polyhedron e;
+    if(read(md + "eight_directional.off", e)) {
+      auto out = get(CGAL::dynamic_edge_property_t<double>(), e);
+      tp.run(e, tp.standard_targets(e), out, "eight_directional.off (Polyhedron_3), " + tp.describe(e, tp.standard_targets(e)));
     }
   }
   // disks -> rectangles

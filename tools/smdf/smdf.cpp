@@ -1213,7 +1213,7 @@ std::string layout_svg(const Mesh& mesh, const std::vector<K::Point_2>& uv, cons
 Json run_cone_metric(const Args& args)
 {
   const std::string& file = args.positional[0];
-  const long iterations = args.integer("iterations", 100);
+  const long iterations = args.integer("iterations", 200);
   if(iterations < 0 || iterations > 1000000)
     throw Usage_error("option --iterations expects an integer in [0, 1000000], got '" + args.value("iterations") + "'");
   const double tolerance = args.real("tolerance", 1e-10);
@@ -1455,7 +1455,7 @@ const std::vector<Command>& commands()
       {"lengths-out", "FILE", "write the metric: one line 'i j length' per edge"},
       {"uv-out", "FILE", "disks only: write the flat layout, one line 'u v' per vertex"},
       {"svg", "FILE", "disks only: draw the flat layout, faces coloured by the conformal factor"},
-      {"iterations", "n", "maximum number of Newton iterations (default 100)"},
+      {"iterations", "n", "maximum number of Newton iterations (default 200)"},
       {"tolerance", "t", "max curvature error accepted, radians (default 1e-10)"},
       {"progress", "", "print the error of every iteration to stderr (default: only on a terminal)"}},
      "flat cone metric with prescribed cone angles (discrete conformal map)",

@@ -7,6 +7,7 @@
 #include <CGAL/Surface_mesh_direction_fields/errors.h>
 #include <CGAL/Surface_mesh_direction_fields/parameters.h>
 #include <CGAL/Surface_mesh_direction_fields/intrinsic_triangle.h>
+#include <CGAL/Surface_mesh_direction_fields/Intrinsic_triangulation.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh_arrays.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/development.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/topology.h>
@@ -18,7 +19,9 @@
 #include <cmath>
 #include <deque>
 #include <sstream>
+#include <limits>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
@@ -33,6 +36,12 @@ struct Cone_metric_status
   double max_curvature_error = 0;  ///< \f$\max_v |K_v - \bar K_v|\f$ of the output metric (radians)
   std::string message;             ///< why it did not converge; empty on success
   double seconds = 0;              ///< wall-clock time of the call
+  /// `true` if the metric lives on an intrinsic triangulation that differs from the input's
+  /// (see `intrinsic_triangulation`); `false` if it is a metric on the input mesh's edges
+  bool triangulation_changed = false;
+  std::size_t edge_flips = 0;      ///< number of intrinsic edge flips performed
+  /// the triangulation carrying the metric when `triangulation_changed`, empty otherwise
+  Intrinsic_triangulation intrinsic_triangulation;
 };
 
 namespace internal {
@@ -58,11 +67,25 @@ struct No_cone_metric_visitor { void operator()(int, double) const {} };
 /// inequalities) and \f$\|K - \bar K\|_2\f$ decreases. At the end \f$u\f$ is shifted on each
 /// component so that its total area equals the input's.
 ///
-/// The triangulation is never changed (no intrinsic edge flips). If the target metric does
-/// not exist on it (a line search step would degenerate a triangle), or the tolerance is not
-/// reached within the iteration budget, the status says so (`converged == false` and a
-/// message), and `output_lengths` holds the last valid iterate, which is a valid metric but
-/// not the requested one.
+/// <b>Intrinsic edge flips.</b> Newton's method first runs on the input triangulation. Some
+/// targets have no solution there (cones far from where the input's curvature is, needle
+/// triangles): the line search then keeps shortening steps to keep triangles valid. In that case,
+/// unless `intrinsic_edge_flips` is `false`, the flow continues on an intrinsic Delaunay
+/// triangulation (Gillespie, Springborn, Crane 2021): the input lengths become Penner
+/// coordinates, and before every evaluation edges are flipped with the Ptolemy relation
+/// \f$\ell_{cd}\,\ell_{ab} = \ell_{ad}\,\ell_{bc} + \ell_{db}\,\ell_{ca}\f$ until the triangulation is
+/// Delaunay for the current metric. Delaunay triangulations always satisfy the triangle
+/// inequalities and the flow then has a solution for every target that satisfies Gauss–Bonnet
+/// (the Hessian is the cotan Laplacian of the Delaunay triangulation, with non-negative weights).
+/// If the final triangulation differs from the input, `triangulation_changed` is set, the
+/// status holds the `Intrinsic_triangulation` with its lengths and its correspondence to the
+/// input edges, `output_lengths` receives the lengths of the input edges that are still edges
+/// and a quiet NaN for the others, and the conformal factors are those of the whole flow.
+///
+/// If no solution is found (flips disabled, or the tolerance is not reached within the
+/// iteration budget), the status says so (`converged == false` and a message), and
+/// `output_lengths` holds the last valid iterate, which is a valid metric but not the requested
+/// one.
 ///
 /// Targets: the angle defect \f$\bar K_v = 2\pi - \sum\theta\f$ at interior vertices (cones
 /// have \f$\bar K_v \neq 0\f$, \f$2\pi\f$ times the index of a field singularity; all others 0)
@@ -103,12 +126,22 @@ struct No_cone_metric_visitor { void operator()(int, double) const {} };
 ///   \cgalParamNBegin{number_of_iterations}
 ///     \cgalParamDescription{maximum number of Newton iterations}
 ///     \cgalParamType{`int`}
-///     \cgalParamDefault{100}
+///     \cgalParamDefault{200}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{curvature_tolerance}
-///     \cgalParamDescription{convergence threshold on \f$\max_v |K_v - \bar K_v|\f$, in radians (scale-free)}
+///     \cgalParamDescription{convergence threshold: the flow stops when
+///       \f$|K_v - \bar K_v| \le \mathrm{tol}\cdot\max(1, \bar\Theta_v / 2\pi)\f$ at every vertex, where
+///       \f$\bar\Theta_v\f$ is the target angle sum (\f$2\pi - \bar K_v\f$ inside, \f$\pi - \bar\kappa_v\f$
+///       on the boundary): radians, independent of the mesh's scale, relative for cones whose angle
+///       exceeds \f$2\pi\f$ (the rounding error of an angle sum grows with it)}
 ///     \cgalParamType{`double`, positive}
 ///     \cgalParamDefault{`1e-10`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{intrinsic_edge_flips}
+///     \cgalParamDescription{whether the flow may continue on an intrinsic Delaunay triangulation
+///       when the input triangulation cannot carry the target metric}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{visitor}
 ///     \cgalParamDescription{progress callback, called as `visitor(iteration, max_error)` once with
@@ -129,7 +162,7 @@ Cone_metric_status compute_cone_metric(const TriangleMesh& tm,
   using parameters::get_parameter;
   const auto t0 = std::chrono::steady_clock::now();
 
-  const int max_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 100);
+  const int max_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 200);
   const double tol = choose_parameter(get_parameter(np, internal_np::curvature_tolerance), 1e-10);
   if(!(tol > 0) || !std::isfinite(tol))
     throw Input_error(Input_error::INVALID_ARGUMENT, "curvature_tolerance must be positive and finite");
@@ -180,17 +213,29 @@ Cone_metric_status compute_cone_metric(const TriangleMesh& tm,
     }
   }
 
-  // --- Newton
+  // --- Newton, first on the input triangulation, then (if needed) with intrinsic flips
+  const bool allow_flips = choose_parameter(get_parameter(np, internal_np::intrinsic_edge_flips), true);
   internal::Vertex_scaling_flow<TriangleMesh> flow(m, topo);
   std::vector<double> u(nv, 0.), len;
-  internal::Vertex_scaling_result r = flow.run(target, u, len, max_iterations, tol, visitor);
+  // With flips available, the input triangulation is abandoned after 3 consecutive steps cut
+  // short by degenerating triangles (a Delaunay flow needs fewer iterations than a stalling one).
+  internal::Vertex_scaling_result r =
+      flow.run(target, u, len, max_iterations, tol, visitor, false, allow_flips ? 3 : 10);
+  if(!r.converged && allow_flips && r.iterations < max_iterations) {
+    internal::Vertex_scaling_result r2 =
+        flow.run(target, u, len, max_iterations - r.iterations, tol, visitor, true, 0, r.iterations);
+    r2.iterations += r.iterations;
+    r = r2;
+  }
+  const internal::Flippable_triangulation& tri = flow.triangulation();
 
   // --- area normalisation per component: shift u so that the total area is preserved
   std::vector<double> a0(topo.components.size(), 0.), a1(topo.components.size(), 0.);
   for(std::size_t f = 0; f < m.number_of_faces(); ++f) {
-    const int h0 = m.face_halfedge[f], h1 = m.next[h0], h2 = m.next[h1];
     const int c = topo.face_component[f];
+    int h0 = m.face_halfedge[f], h1 = m.next[h0], h2 = m.next[h1];
     a0[c] += triangle_area(m.length[h0 >> 1], m.length[h1 >> 1], m.length[h2 >> 1]);
+    h0 = tri.face_halfedge[f]; h1 = tri.next[h0]; h2 = tri.next[h1];
     a1[c] += triangle_area(len[h0 >> 1], len[h1 >> 1], len[h2 >> 1]);
   }
   bool rescaled = false;
@@ -205,26 +250,53 @@ Cone_metric_status compute_cone_metric(const TriangleMesh& tm,
   }
   if(rescaled) {
     std::vector<double> len2, ang, k;
-    flow.lengths(u2, len2);
+    flow.lengths(u2, len2);   // a uniform scaling keeps the triangulation Delaunay
     if(flow.angles(len2, ang)) {
       flow.curvatures(ang, k);
-      const double err = flow.max_error(k, target);
+      const double err = flow.scaled_error(k, target);
       // keep the normalisation unless it costs the convergence (rounding only)
       if(err <= tol || !r.converged) {
-        len.swap(len2); u.swap(u2); r.max_error = err; r.converged = err <= tol;
+        len.swap(len2); u.swap(u2);
+        r.max_error = flow.max_error(k, target); r.scaled_error = err; r.converged = err <= tol;
       }
     }
   }
   if(r.converged) r.message.clear();
   else if(r.message.empty()) r.message = "curvature tolerance not reached";
 
-  for(std::size_t e = 0; e < m.number_of_edges(); ++e) put(output_lengths, m.edges[e], len[e]);
+  Cone_metric_status st;
+  st.edge_flips = r.flips;
+  st.triangulation_changed = flow.triangulation_changed();
+  if(!st.triangulation_changed) {
+    for(std::size_t e = 0; e < m.number_of_edges(); ++e) put(output_lengths, m.edges[e], len[e]);
+  } else {
+    // Correspondence: an edge is an input edge if it joins the same vertices with the same
+    // Penner coordinate (a flipped-back edge has exactly its old one: Ptolemy is an involution).
+    std::unordered_map<long long, std::vector<int>> by_ends;
+    auto key = [nv](int a, int b) { return (long long)(std::min)(a, b) * (long long)nv + (std::max)(a, b); };
+    for(std::size_t e = 0; e < m.number_of_edges(); ++e)
+      by_ends[key(m.target[2 * e], m.target[2 * e + 1])].push_back(int(e));
+    std::vector<long> input_edge(m.number_of_edges(), -1);
+    std::vector<double> out(m.number_of_edges(), std::numeric_limits<double>::quiet_NaN());
+    for(std::size_t e = 0; e < m.number_of_edges(); ++e) {
+      auto found = by_ends.find(key(tri.target[2 * e], tri.target[2 * e + 1]));
+      if(found == by_ends.end()) continue;
+      for(int i : found->second)
+        if(std::abs(flow.base_lengths()[e] - m.length[i]) <= 1e-12 * m.length[i]) {
+          input_edge[e] = i;
+          out[i] = len[e];
+          break;
+        }
+    }
+    for(std::size_t e = 0; e < m.number_of_edges(); ++e) put(output_lengths, m.edges[e], out[e]);
+    st.intrinsic_triangulation = Intrinsic_triangulation(nv, tri.next, tri.target, tri.face, tri.face_halfedge,
+                                                         len, std::move(input_edge));
+  }
   if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::conformal_factor_t>::value) {
     auto ufm = get_parameter(np, internal_np::conformal_factor);
     for(std::size_t v = 0; v < nv; ++v) put(ufm, m.vertices[v], u[v]);
   }
 
-  Cone_metric_status st;
   st.converged = r.converged;
   st.iterations = r.iterations;
   st.max_curvature_error = r.max_error;

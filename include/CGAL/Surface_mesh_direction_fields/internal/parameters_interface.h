@@ -15,3 +15,4 @@ CGAL_SMDF_add_named_parameter(directional_constraints_t, directional_constraints
 CGAL_SMDF_add_named_parameter(guide_directions_t, guide_directions, guide_directions)
 CGAL_SMDF_add_named_parameter(guide_weight_t, guide_weight, guide_weight)
 CGAL_SMDF_add_named_parameter(face_angle_t, face_angle, face_angle_map)
+CGAL_SMDF_add_named_parameter(intrinsic_edge_flips_t, intrinsic_edge_flips, intrinsic_edge_flips)

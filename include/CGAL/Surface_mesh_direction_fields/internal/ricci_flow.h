@@ -23,22 +23,63 @@ struct Vertex_scaling_result
 {
   bool converged = false;
   int iterations = 0;
-  double max_error = 0;
+  double max_error = 0;      // max |K - target|
+  double scaled_error = 0;   // the convergence measure, see scaled_error()
+  std::size_t flips = 0;
   std::string message;
 };
 
-// Discrete conformal vertex scaling on a fixed triangulation,
-// l_e(u) = l0_e exp((u_a + u_b) / 2), solved for K(u) = target by Newton's method.
-// dK/du is the cotan Laplacian L (L_ab = -(cot alpha + cot beta) / 2, rows summing to 0), which
-// is positive semi-definite for every valid metric with the constants of each component as
-// kernel; one vertex per component is fixed (u = 0) and the reduced matrix is positive definite.
+// Triangle connectivity that intrinsic edge flips may change, with the halfedge numbering of
+// Mesh_arrays (h = 2e + s); a flip keeps the edge's index and its two faces' indices.
+struct Flippable_triangulation
+{
+  std::vector<int> next, target, face, face_halfedge;
+
+  int prev(int h) const { return next[next[h]]; }
+  int source(int h) const { return target[h ^ 1]; }
+  bool is_flippable(int e) const
+  {
+    return face[2 * e] >= 0 && face[2 * e + 1] >= 0 && face[2 * e] != face[2 * e + 1];
+  }
+
+  // Edge ab between faces abc (halfedge h = a->b) and bad becomes cd, between dca and cdb.
+  void flip(int e)
+  {
+    const int h = 2 * e, o = h + 1;
+    const int h1 = next[h], h2 = next[h1], o1 = next[o], o2 = next[o1];
+    const int f0 = face[h], f1 = face[o];
+    const int c = target[h1], d = target[o1];
+    target[h] = c; target[o] = d;
+    next[h] = h2; next[h2] = o1; next[o1] = h;
+    next[o] = o2; next[o2] = h1; next[h1] = o;
+    face[o1] = f0; face[h1] = f1;
+    face_halfedge[f0] = h; face_halfedge[f1] = o;
+  }
+};
+
+// Discrete conformal vertex scaling, l_e(u) = l0_e exp((u_a + u_b) / 2), solved for
+// K(u) = target by Newton's method. dK/du is the cotan Laplacian L (L_ab = -(cot alpha +
+// cot beta) / 2, rows summing to 0), positive semi-definite for every valid metric with the
+// constants of each component as kernel; one vertex per component is fixed (u = 0) and the
+// reduced matrix is positive definite.
+//
+// Two modes. On the fixed input triangulation, a step is accepted only if every triangle stays
+// valid; some targets have no solution there. With intrinsic flips (Gillespie, Springborn,
+// Crane 2021), l0 are Penner coordinates: before every evaluation the triangulation is made
+// Delaunay for the current metric by Ptolemy flips (l_cd l_ab = l_ad l_bc + l_db l_ca, which
+// commutes with vertex scaling), every Delaunay triangulation satisfies the triangle
+// inequalities, and a solution exists for every target satisfying Gauss-Bonnet.
 template <typename TM>
 class Vertex_scaling_flow
 {
 public:
   Vertex_scaling_flow(const Mesh_arrays<TM>& m, const Topology_arrays& topo)
-    : m_(m), topo_(topo)
+    : m_(m), l0_(m.length)
   {
+    tri_.next = m.next;
+    tri_.target = m.target;
+    tri_.face = m.face;
+    tri_.face_halfedge = m.face_halfedge;
     const int nv = int(m.number_of_vertices());
     col_.assign(nv, -1);
     std::vector<char> comp_fixed(topo.components.size(), 0);
@@ -49,8 +90,11 @@ public:
       if(!comp_fixed[c]) { comp_fixed[c] = 1; continue; }   // gauge: first vertex of each component
       col_[v] = n_++;
     }
-    build_pattern();
   }
+
+  const Flippable_triangulation& triangulation() const { return tri_; }
+  const std::vector<double>& base_lengths() const { return l0_; }
+  bool triangulation_changed() const { return tri_.next != m_.next; }
 
   // Strictly valid triangles whose relative area is above the threshold that Mesh_arrays
   // rejects as degenerate; writes the corner angles (as Mesh_arrays::angle).
@@ -58,7 +102,7 @@ public:
   {
     ang.assign(m_.number_of_halfedges(), 0.);
     for(std::size_t f = 0; f < m_.number_of_faces(); ++f) {
-      const int h0 = m_.face_halfedge[f], h1 = m_.next[h0], h2 = m_.next[h1];
+      const int h0 = tri_.face_halfedge[f], h1 = tri_.next[h0], h2 = tri_.next[h1];
       const double l0 = len[h0 >> 1], l1 = len[h1 >> 1], l2 = len[h2 >> 1];
       const double lmax = (std::max)(l0, (std::max)(l1, l2));
       if(!is_valid_triangle(l0, l1, l2) || !(triangle_area(l0, l1, l2) > 1e-14 * lmax * lmax)) {
@@ -77,7 +121,7 @@ public:
     const std::size_t nv = m_.number_of_vertices();
     k.assign(nv, 0.);
     for(std::size_t h = 0; h < m_.number_of_halfedges(); ++h)
-      if(m_.face[h] >= 0) k[m_.source(int(h))] += ang[h];
+      if(tri_.face[h] >= 0) k[tri_.source(int(h))] += ang[h];
     for(std::size_t v = 0; v < nv; ++v)
       if(!m_.is_isolated(int(v)))
         k[v] = (m_.is_boundary_vertex(int(v)) ? CGAL_PI : 2 * CGAL_PI) - k[v];
@@ -87,7 +131,21 @@ public:
   {
     len.resize(m_.number_of_edges());
     for(std::size_t e = 0; e < m_.number_of_edges(); ++e)
-      len[e] = m_.length[e] * std::exp(0.5 * (u[m_.target[2 * e]] + u[m_.target[2 * e + 1]]));
+      len[e] = l0_[e] * std::exp(0.5 * (u[tri_.target[2 * e]] + u[tri_.target[2 * e + 1]]));
+  }
+
+  // max_v |K_v - target_v| / max(1, target angle sum / 2 pi): the rounding error of an angle sum
+  // grows with the number of angles, hence with the cone angle (a -528 pi cone on a genus-133
+  // mesh sums angles to 530 pi and stagnates at about 5e-10 absolute error).
+  double scaled_error(const std::vector<double>& k, const std::vector<double>& target) const
+  {
+    double err = 0;
+    for(std::size_t v = 0; v < k.size(); ++v) {
+      if(m_.is_isolated(int(v))) continue;
+      const double sum = (m_.is_boundary_vertex(int(v)) ? CGAL_PI : 2 * CGAL_PI) - target[v];
+      err = (std::max)(err, std::abs(k[v] - target[v]) / (std::max)(1., sum / (2 * CGAL_PI)));
+    }
+    return err;
   }
 
   double max_error(const std::vector<double>& k, const std::vector<double>& target) const
@@ -98,38 +156,97 @@ public:
     return err;
   }
 
+  // Flips edges until the triangulation is Delaunay for the lengths `len` (updated, as are the
+  // Penner coordinates l0 of the flipped edges). Returns false if flipping does not terminate
+  // (a safeguard: on exact arithmetic it always does).
+  bool make_delaunay(const std::vector<double>& u, std::vector<double>& len)
+  {
+    const int ne = int(m_.number_of_edges());
+    std::vector<int>& queue = queue_;
+    queue.clear();
+    in_queue_.assign(ne, 1);
+    for(int e = ne - 1; e >= 0; --e) queue.push_back(e);
+    const std::size_t budget = 100 * std::size_t(ne) + 1000;
+    std::size_t flips = 0;
+    while(!queue.empty()) {
+      const int e = queue.back();
+      queue.pop_back();
+      in_queue_[e] = 0;
+      if(!tri_.is_flippable(e)) continue;
+      const int h = 2 * e, o = h + 1;
+      const int h1 = tri_.next[h], h2 = tri_.next[h1], o1 = tri_.next[o], o2 = tri_.next[o1];
+      const double le = len[e], a1 = len[h1 >> 1], a2 = len[h2 >> 1], b1 = len[o1 >> 1], b2 = len[o2 >> 1];
+      // cos of the two corners opposite e, by the law of cosines, defined (and the right test,
+      // Gillespie et al. 2021) even when a triangle violates the triangle inequality
+      const double cos_sum = (a1 * a1 + a2 * a2 - le * le) / (2 * a1 * a2) +
+                             (b1 * b1 + b2 * b2 - le * le) / (2 * b1 * b2);
+      if(!(cos_sum < -1e-12)) continue;
+      if(++flips > budget) return false;
+      const double l_new = (b1 * a1 + b2 * a2) / le;   // Ptolemy
+      if(!std::isfinite(l_new) || !(l_new > 0)) return false;
+      tri_.flip(e);
+      len[e] = l_new;
+      l0_[e] = l_new * std::exp(-0.5 * (u[tri_.target[h]] + u[tri_.target[o]]));
+      for(int g : {h1, h2, o1, o2})
+        if(!in_queue_[g >> 1]) { in_queue_[g >> 1] = 1; queue.push_back(g >> 1); }
+    }
+    flips_ += flips;
+    return true;
+  }
+
+  std::size_t flips() const { return flips_; }
+
   // u: in/out conformal factors (start value on input); len: output lengths.
+  // `stall_window`: give up when that many consecutive Newton steps had to be shortened to keep
+  // the (fixed) triangulation valid without a 10% decrease of the error.
   template <typename Callback>
   Vertex_scaling_result run(const std::vector<double>& target, std::vector<double>& u,
                             std::vector<double>& len, int max_iterations, double tol,
-                            Callback& callback)
+                            Callback& callback, bool flip, int stall_window = 10, int first_iteration = 0)
   {
     Vertex_scaling_result res;
     std::vector<double> ang, k, u_try, len_try, ang_try, k_try;
-    lengths(u, len);
     int bad = -1;
-    if(!angles(len, ang, &bad)) {
-      res.message = "the initial conformal factors give a degenerate triangle (face " +
-                    std::to_string(bad) + ")";
+    // lengths, Delaunay flips (flip mode), angles and curvatures at u
+    auto evaluate = [&](const std::vector<double>& uu, std::vector<double>& l, std::vector<double>& a,
+                        std::vector<double>& kk, int* bad_face) {
+      lengths(uu, l);
+      // conformal factors beyond the range of double (exp overflow): not a metric, and flipping
+      // on such lengths would corrupt the Penner coordinates
+      for(double x : l) if(!(x > 0) || !std::isfinite(x)) return false;
+      if(flip && !make_delaunay(uu, l)) return false;
+      if(!angles(l, a, bad_face)) return false;
+      curvatures(a, kk);
+      return true;
+    };
+    if(!evaluate(u, len, ang, k, &bad)) {
+      res.message = flip ? std::string("intrinsic edge flips did not produce a valid triangulation")
+                         : "the initial conformal factors give a degenerate triangle (face " +
+                               std::to_string(bad) + ")";
       return res;
     }
-    curvatures(ang, k);
-    double err = max_error(k, target);
+    if(flip) snapshot();
+    double err = scaled_error(k, target);
     double norm2 = residual_norm2(k, target);
-    callback(0, err);
-    bool analysed = false;
+    if(first_iteration == 0) callback(0, max_error(k, target));
+    double best = err;
+    int best_iteration = 0;
     int it = 0;
-    // Stagnation against the boundary of the valid metrics: steps cut short by degenerating
-    // triangles while the error hardly decreases.
     std::vector<double> err_history(1, err);
     int cut_streak = 0, cut_face = -1;
+    std::size_t version_at_analysis = 0;
+    bool analysed = false;
     while(err > tol && it < max_iterations) {
-      fill_values(ang);
+      // rejected trial points of the last line search may have flipped edges
+      if(flip) restore();
+      const bool same_pattern = analysed && version_at_analysis == version_;
+      fill_values(ang, same_pattern);
       std::string msg;
-      const bool ok = analysed ? chol_.refactor(L_, msg) : chol_.factor(L_, msg);
+      const bool ok = same_pattern ? chol_.refactor(L_, msg) : chol_.factor(L_, msg);
       analysed = true;
+      version_at_analysis = version_;
       if(!ok) {
-        res.message = "iteration " + std::to_string(it + 1) + ": " + msg;
+        res.message = "iteration " + std::to_string(first_iteration + it + 1) + ": " + msg;
         break;
       }
       Eigen::VectorXd rhs(n_);
@@ -137,11 +254,16 @@ public:
         if(col_[v] >= 0) rhs[col_[v]] = target[v] - k[v];
       const Eigen::VectorXd du = n_ > 0 ? chol_.solve(rhs) : Eigen::VectorXd();
       if(!du.allFinite()) {
-        res.message = "iteration " + std::to_string(it + 1) + ": the Newton step is not finite";
+        res.message = "iteration " + std::to_string(first_iteration + it + 1) + ": the Newton step is not finite";
         break;
       }
-      // Backtracking (Armijo on |K - target|^2, for which the Newton step is a descent
-      // direction) that only accepts metrics with valid triangles.
+      // Backtracking that only accepts metrics with valid triangles, and a step t if either
+      // |K - target|^2 decreases enough (Armijo; the Newton step is a descent direction for it),
+      // or t is at most the minimiser of the convex energy E (grad E = K - target, Hessian L)
+      // along the step: phi'(t) = du . (K(t) - target) <= 0. Halving from 1 stops in
+      // [t*/2, t*], which by convexity gains at least half of the best decrease of E along the
+      // line: global convergence without evaluating E (far from the solution, where the residual
+      // may not decrease along any step).
       double t = 1;
       bool accepted = false, last_invalid = false, any_invalid = false;
       int last_bad = -1;
@@ -149,57 +271,71 @@ public:
         u_try = u;
         for(std::size_t v = 0; v < col_.size(); ++v)
           if(col_[v] >= 0) u_try[v] += t * du[col_[v]];
-        lengths(u_try, len_try);
-        if(!angles(len_try, ang_try, &last_bad)) {
+        if(!evaluate(u_try, len_try, ang_try, k_try, &last_bad)) {
           last_invalid = any_invalid = true;
           cut_face = last_bad;
           continue;
         }
         last_invalid = false;
-        curvatures(ang_try, k_try);
         const double n2 = residual_norm2(k_try, target);
         if(n2 <= (1 - 2e-4 * t) * norm2) { accepted = true; break; }
+        double dphi = 0;
+        for(std::size_t v = 0; v < col_.size(); ++v)
+          if(col_[v] >= 0) dphi += du[col_[v]] * (k_try[v] - target[v]);
+        if(dphi <= 0) { accepted = true; break; }
       }
       if(!accepted) {
         std::ostringstream os;
         os.precision(3);
-        if(last_invalid)
-          os << "iteration " << it + 1 << ": the line search cannot keep the triangles valid (face "
-             << last_bad << " degenerates); the fixed triangulation cannot carry the target metric"
-             << " (intrinsic edge flips or better-placed cones would be needed)";
+        if(last_invalid && !flip)
+          os << "iteration " << first_iteration + it + 1 << ": the line search cannot keep the triangles valid (face "
+             << last_bad << " degenerates); the fixed triangulation cannot carry the target metric";
         else
-          os << "iteration " << it + 1 << ": the line search found no decrease of the curvature"
+          os << "iteration " << first_iteration + it + 1 << ": the line search found no decrease of the curvature"
              << " error (stagnation at " << err << ", rounding level of this metric)";
         res.message = os.str();
         break;
       }
       u.swap(u_try); len.swap(len_try); ang.swap(ang_try); k.swap(k_try);
+      if(flip) snapshot();
       norm2 = residual_norm2(k, target);
-      err = max_error(k, target);
+      err = scaled_error(k, target);
       ++it;
-      callback(it, err);
-      err_history.push_back(err);
-      cut_streak = any_invalid ? cut_streak + 1 : 0;
-      const int window = 10;
-      if(err > tol && cut_streak >= window && err > 0.9 * err_history[err_history.size() - 1 - window]) {
+      callback(first_iteration + it, max_error(k, target));
+      if(err < 0.5 * best) { best = err; best_iteration = it; }
+      if(err > tol && best < 1e-6 && it - best_iteration >= 20) {
         std::ostringstream os;
         os.precision(3);
-        os << "stopped after iteration " << it << ": for " << window << " iterations every Newton "
-           << "step had to be shortened to keep the triangles valid (face " << cut_face
-           << " degenerates) and the curvature error only went from "
-           << err_history[err_history.size() - 1 - window] << " to " << err
-           << "; the fixed triangulation cannot carry the target metric"
-           << " (intrinsic edge flips or better-placed cones would be needed)";
+        os << "stopped after iteration " << first_iteration + it << ": the curvature error has not halved"
+           << " in 20 iterations (" << best << " at best): rounding level of this metric";
+        res.message = os.str();
+        break;
+      }
+      err_history.push_back(err);
+      cut_streak = any_invalid ? cut_streak + 1 : 0;
+      if(!flip && err > tol && cut_streak >= stall_window &&
+         err > 0.9 * err_history[err_history.size() - 1 - stall_window]) {
+        std::ostringstream os;
+        os.precision(3);
+        os << "stopped after iteration " << first_iteration + it << ": for " << stall_window
+           << " iterations every Newton step had to be shortened to keep the triangles valid (face "
+           << cut_face << " degenerates) and the curvature error only went from "
+           << err_history[err_history.size() - 1 - stall_window] << " to " << err
+           << "; the fixed triangulation cannot carry the target metric";
         res.message = os.str();
         break;
       }
     }
+    if(flip) restore();   // the triangulation of the returned metric
     res.iterations = it;
-    res.max_error = err;
+    res.max_error = max_error(k, target);
+    res.scaled_error = err;
     res.converged = err <= tol;
+    res.flips = flips_;
     if(!res.converged && res.message.empty()) {
       std::ostringstream os;
-      os << "no convergence after " << it << " iterations (maximum curvature error " << err << ")";
+      os << "no convergence after " << first_iteration + it << " iterations (maximum curvature error "
+         << res.max_error << ")";
       res.message = os.str();
     }
     return res;
@@ -207,7 +343,32 @@ public:
 
 private:
   const Mesh_arrays<TM>& m_;
-  const Topology_arrays& topo_;
+  Flippable_triangulation tri_;
+  std::vector<double> l0_;          // per edge: length at u = 0 (Penner coordinate once flipped)
+  std::vector<int> queue_;
+  std::vector<char> in_queue_;
+  std::size_t flips_ = 0;
+  // Triangulation and Penner coordinates of the last accepted iterate (trial points of the line
+  // search flip edges too); version_ counts its changes (the Hessian's pattern follows it).
+  Flippable_triangulation saved_tri_;
+  std::vector<double> saved_l0_;
+  std::size_t flips_at_snapshot_ = 0, version_ = 0;
+
+  void snapshot()
+  {
+    if(flips_ == flips_at_snapshot_ && !saved_l0_.empty()) return;
+    saved_tri_ = tri_;
+    saved_l0_ = l0_;
+    flips_at_snapshot_ = flips_;
+    ++version_;
+  }
+  void restore()
+  {
+    if(flips_ == flips_at_snapshot_) return;
+    tri_ = saved_tri_;
+    l0_ = saved_l0_;
+    flips_at_snapshot_ = flips_;
+  }
   std::vector<int> col_;   // per vertex: column of the reduced system, -1 if fixed or isolated
   int n_ = 0;
   Sparse_matrix_int L_;    // lower triangle of the reduced Hessian
@@ -232,13 +393,16 @@ private:
     return int(p - inner);
   }
 
+  // Sparsity pattern of the reduced Hessian on the current triangulation (several edges may
+  // join the same two vertices after flips; an edge from a vertex to itself adds nothing).
   void build_pattern()
   {
     std::vector<Eigen::Triplet<double, int>> trip;
+    trip.reserve(n_ + m_.number_of_edges());
     for(int c = 0; c < n_; ++c) trip.emplace_back(c, c, 1.);
     for(std::size_t e = 0; e < m_.number_of_edges(); ++e) {
-      const int a = col_[m_.target[2 * e]], b = col_[m_.target[2 * e + 1]];
-      if(a >= 0 && b >= 0) trip.emplace_back((std::max)(a, b), (std::min)(a, b), 1.);
+      const int a = col_[tri_.target[2 * e]], b = col_[tri_.target[2 * e + 1]];
+      if(a >= 0 && b >= 0 && a != b) trip.emplace_back((std::max)(a, b), (std::min)(a, b), 1.);
     }
     L_.resize(n_, n_);
     L_.setFromTriplets(trip.begin(), trip.end());
@@ -247,24 +411,26 @@ private:
     for(int c = 0; c < n_; ++c) diag_pos_[c] = position(c, c);
     edge_pos_.assign(m_.number_of_edges(), -1);
     for(std::size_t e = 0; e < m_.number_of_edges(); ++e) {
-      const int a = col_[m_.target[2 * e]], b = col_[m_.target[2 * e + 1]];
-      if(a >= 0 && b >= 0) edge_pos_[e] = position((std::max)(a, b), (std::min)(a, b));
+      const int a = col_[tri_.target[2 * e]], b = col_[tri_.target[2 * e + 1]];
+      if(a >= 0 && b >= 0 && a != b) edge_pos_[e] = position((std::max)(a, b), (std::min)(a, b));
     }
   }
 
   // Cotan Laplacian of the metric with corner angles `ang`, restricted to the free vertices.
-  void fill_values(const std::vector<double>& ang)
+  void fill_values(const std::vector<double>& ang, bool same_pattern)
   {
+    if(!same_pattern) build_pattern();
     w_.assign(m_.number_of_edges(), 0.);
     for(std::size_t h = 0; h < m_.number_of_halfedges(); ++h) {
-      if(m_.face[h] < 0) continue;
-      const double opp = ang[m_.prev(int(h))];   // corner opposite to the edge of h
+      if(tri_.face[h] < 0) continue;
+      const double opp = ang[tri_.prev(int(h))];   // corner opposite to the edge of h
       w_[h >> 1] += 0.5 * std::cos(opp) / std::sin(opp);
     }
     double* val = L_.valuePtr();
     std::fill(val, val + L_.nonZeros(), 0.);
     for(std::size_t e = 0; e < m_.number_of_edges(); ++e) {
-      const int a = col_[m_.target[2 * e]], b = col_[m_.target[2 * e + 1]];
+      const int a = col_[tri_.target[2 * e]], b = col_[tri_.target[2 * e + 1]];
+      if(a == b && a >= 0) continue;
       if(a >= 0) val[diag_pos_[a]] += w_[e];
       if(b >= 0) val[diag_pos_[b]] += w_[e];
       if(edge_pos_[e] >= 0) val[edge_pos_[e]] -= w_[e];
