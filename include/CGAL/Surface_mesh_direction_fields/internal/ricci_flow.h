@@ -197,8 +197,9 @@ public:
   std::size_t flips() const { return flips_; }
 
   // u: in/out conformal factors (start value on input); len: output lengths.
-  // `stall_window`: give up when that many consecutive Newton steps had to be shortened to keep
-  // the (fixed) triangulation valid without a 10% decrease of the error.
+  // `stall_window` w: give up when |w| consecutive Newton steps had to be shortened to keep the
+  // (fixed) triangulation valid without a 10% decrease of the error; if w < 0, also when two
+  // consecutive steps were cut to t <= 1/4 (flips will take over).
   template <typename Callback>
   Vertex_scaling_result run(const std::vector<double>& target, std::vector<double>& u,
                             std::vector<double>& len, int max_iterations, double tol,
@@ -233,7 +234,7 @@ public:
     int best_iteration = 0;
     int it = 0;
     std::vector<double> err_history(1, err);
-    int cut_streak = 0, cut_face = -1;
+    int cut_streak = 0, small_cut_streak = 0, cut_face = -1;
     std::size_t version_at_analysis = 0;
     bool analysed = false;
     while(err > tol && it < max_iterations) {
@@ -313,14 +314,17 @@ public:
       }
       err_history.push_back(err);
       cut_streak = any_invalid ? cut_streak + 1 : 0;
-      if(!flip && err > tol && cut_streak >= stall_window &&
-         err > 0.9 * err_history[err_history.size() - 1 - stall_window]) {
+      small_cut_streak = (any_invalid && t <= 0.25) ? small_cut_streak + 1 : 0;
+      const int w = std::abs(stall_window);
+      if(!flip && err > tol && stall_window != 0 &&
+         ((cut_streak >= w && err > 0.9 * err_history[err_history.size() - 1 - w]) ||
+          (stall_window < 0 && small_cut_streak >= 2))) {
         std::ostringstream os;
         os.precision(3);
-        os << "stopped after iteration " << first_iteration + it << ": for " << stall_window
+        os << "stopped after iteration " << first_iteration + it << ": for " << w
            << " iterations every Newton step had to be shortened to keep the triangles valid (face "
            << cut_face << " degenerates) and the curvature error only went from "
-           << err_history[err_history.size() - 1 - stall_window] << " to " << err
+           << err_history[err_history.size() - 1 - w] << " to " << err
            << "; the fixed triangulation cannot carry the target metric";
         res.message = os.str();
         break;
