@@ -11,10 +11,13 @@ and the error behaviour (one stderr line, nothing on stdout, exit 1 or 2).
 It also runs `connection` (prescribed singularities, N-RoSy indices, constraints, output
 files, editing benchmark, errors) and `singularities` on the field it writes, and checks the
 SVG picture of `connection --svg` (well-formed XML, faces, glyphs, singularity markers), and
-`cone-metric` (flat torus, cones, the curvature recomputed from --lengths-out, errors, exit 3).
+`cone-metric` (flat torus, cones, the curvature recomputed from --lengths-out, errors, exit 3,
+intrinsic flips: --triangulation-out, --lengths-out on the intrinsic edges, --no-flips, and a
+generated disk laid out with --uv-out/--svg on its intrinsic triangulation).
 Part "shared" runs `info` on the meshes of SHARED_DATA_DIR/MANIFEST.tsv and compares with the
 manifest, `generators` on meshes with handles or boundary, checks the documented failures,
-and runs `cone-metric` on a disk (4 boundary corners, --uv-out, --svg) and a sphere (8 cones);
+and runs `cone-metric` on a disk (4 boundary corners, --uv-out, --svg), a sphere (8 cones, no
+flips) and a genus-2 surface whose single cone of index -2 needs intrinsic flips;
 it exits 77 (skipped) when SHARED_DATA_DIR is absent.
 Prints one line per check and "N passed, N failed"; exits 1 on failure.
 """
@@ -831,6 +834,51 @@ def cone_metric_failure(smdf, c, args, label, contains=None):
             % (label, rc, err.decode("utf-8", "replace")[:300]))
 
 
+def read_length_rows(path):
+    """[(i, j, length)] of a --lengths-out file, in file order (pairs may repeat after flips)."""
+    return [(int(r[0]), int(r[1]), float(r[2])) for r in read_rows(path)]
+
+
+def check_intrinsic(c, label, rows, tri_faces, targets=None):
+    """Checks a --lengths-out file against the faces of --triangulation-out (an intrinsic
+    triangulation of a closed surface or of a disk): every face side is an edge of the file, a
+    pair joined by k edges is the side of 2k faces at most (exactly 2k on interior edges), every
+    face satisfies the triangle inequalities for some choice among the edges joining its
+    vertices, and, if targets is given ({vertex: K}, closed surfaces), the angle defects
+    recomputed at vertices away from multiple edges match. Returns the length of every pair."""
+    by_pair = {}
+    for i, j, x in rows:
+        by_pair.setdefault((min(i, j), max(i, j)), []).append(x)
+    sides = {}
+    for f in tri_faces:
+        for k in range(3):
+            e = (min(f[k], f[(k + 1) % 3]), max(f[k], f[(k + 1) % 3]))
+            sides[e] = sides.get(e, 0) + 1
+    c.check(set(sides) == set(by_pair),
+            "%s: the pairs of --lengths-out are exactly the face sides of --triangulation-out "
+            "(%d missing, %d extra)" % (label, len(set(sides) - set(by_pair)), len(set(by_pair) - set(sides))))
+    c.check(all(0 < sides.get(e, 0) <= 2 * len(v) for e, v in by_pair.items()) and
+            (targets is None or all(sides.get(e, 0) == 2 * len(v) for e, v in by_pair.items())),
+            "%s: each pair joined by k edges is a side of %s2k faces" % (label, "" if targets is not None else "<= "))
+    bad = 0
+    for f in tri_faces:
+        cand = [by_pair.get((min(f[k], f[(k + 1) % 3]), max(f[k], f[(k + 1) % 3])), []) for k in range(3)]
+        if not any(a < b + d and b < a + d and d < a + b for a in cand[0] for b in cand[1] for d in cand[2]):
+            bad += 1
+    c.check(bad == 0, "%s: triangle inequalities hold on every face (%d faces fail)" % (label, bad))
+    multi = {v for e, x in by_pair.items() if len(x) > 1 for v in e}
+    if targets is not None and bad == 0:
+        simple = [f for f in tri_faces if not (set(f) & multi)]
+        single = {e: x[0] for e, x in by_pair.items() if len(x) == 1}
+        sums = angle_sums(simple, single)
+        near = {v for f in tri_faces if set(f) & multi for v in f}
+        inner = [v for v in sums if v not in near]
+        worst = max([abs(TWO_PI - sums[v] - targets.get(v, 0)) for v in inner] + [0])
+        c.check(len(inner) > 0 and worst <= 1e-8,
+                "%s: angle defects recomputed at %d vertices away from multiple edges match (max %.3g)"
+                % (label, len(inner), worst))
+
+
 def test_cone_metric(smdf, c, torus, tmp, verts, faces):
     edges = {(min(f[i], f[(i + 1) % 3]), max(f[i], f[(i + 1) % 3])) for f in faces for i in range(3)}
     lf = os.path.join(tmp, "torus_flat.txt")
@@ -843,6 +891,9 @@ def test_cone_metric(smdf, c, torus, tmp, verts, faces):
         c.check(isinstance(r.get("iterations"), int) and r["iterations"] >= 0 and
                 is_number(r.get("time_s")) and r["time_s"] >= 0 and "Newton" in r.get("method", ""),
                 "cone-metric torus: iterations, time_s, method")
+        c.check(r.get("triangulation_changed") is False and r.get("edge_flips") == 0 and
+                "intrinsic_triangulation" not in r and "flips" in r.get("method", ""),
+                "cone-metric torus: triangulation_changed false, 0 flips, the method mentions flips")
         lengths, nlines = read_lengths(lf)
         c.check(nlines == len(edges) and set(lengths) == edges,
                 "cone-metric torus: --lengths-out has one line per edge (%d lines, %d edges)"
@@ -901,7 +952,103 @@ def test_cone_metric(smdf, c, torus, tmp, verts, faces):
                         "cone-metric --iterations 1", ["not converged"])
     rc, out, err = smdf.run(["cone-metric", "--help"])
     c.check(rc == 0 and not err and out.decode().startswith("usage: smdf cone-metric") and "exit code is 3"
-            in out.decode(), "smdf cone-metric --help prints usage (documents exit code 3)")
+            in out.decode() and "--no-flips" in out.decode() and "--triangulation-out" in out.decode(),
+            "smdf cone-metric --help prints usage (documents exit code 3, --no-flips, --triangulation-out)")
+
+    # --triangulation-out without flips: the input faces
+    tf = os.path.join(tmp, "torus_tri.off")
+    r = smdf.json(["cone-metric", torus, "--cones", "0:pi/2,100:-pi/2", "--triangulation-out", tf],
+                  "smdf cone-metric torus --triangulation-out (no flips)")
+    if r:
+        tv, tfaces = read_off(tf)
+        rot = lambda f: min(f[k:] + f[:k] for k in range(3))
+        c.check(r.get("triangulation_changed") is False and len(tv) == len(verts) and
+                all(abs(a - b) <= 1e-12 * max(1, abs(b)) for p, q in zip(tv, verts) for a, b in zip(p, q)) and
+                sorted(map(rot, tfaces)) == sorted(map(rot, faces)),
+                "cone-metric torus: without flips --triangulation-out holds the input vertices and faces")
+
+    # a target the input triangulation cannot carry: one cone of -3 pi, two of 1.5 pi
+    cones = "0:-3pi,100:1.5pi,50:1.5pi"
+    targets = {0: -3 * math.pi, 100: 1.5 * math.pi, 50: 1.5 * math.pi}
+    lf, tf = os.path.join(tmp, "torus_flip_lengths.txt"), os.path.join(tmp, "torus_flip.off")
+    r = smdf.json(["cone-metric", torus, "--cones", cones, "--lengths-out", lf, "--triangulation-out", tf],
+                  "smdf cone-metric torus --cones " + cones)
+    if r:
+        it = r.get("intrinsic_triangulation", {})
+        c.check(r.get("converged") is True and r.get("max_curvature_error", 1) <= 1e-9 and
+                r.get("triangulation_changed") is True and isinstance(r.get("edge_flips"), int) and
+                r["edge_flips"] > 0, "cone-metric torus %s: converged after %r intrinsic flips" % (cones, r.get("edge_flips")))
+        c.check(it.get("faces") == len(faces) and it.get("edges") == len(edges) and
+                isinstance(it.get("new_edges"), int) and 0 < it["new_edges"] <= r.get("edge_flips", 0),
+                "cone-metric torus %s: intrinsic_triangulation %r (input %d faces, %d edges)"
+                % (cones, it, len(faces), len(edges)))
+        tv, tfaces = read_off(tf)
+        rows = read_length_rows(lf)
+        c.check(len(tv) == len(verts) and len(tfaces) == len(faces) and all(len(f) == 3 for f in tfaces),
+                "cone-metric torus flips: --triangulation-out has the input's %d vertices and %d triangles"
+                % (len(verts), len(faces)))
+        c.check(len(rows) == len(edges) and all(math.isfinite(x) and x > 0 for _, _, x in rows),
+                "cone-metric torus flips: --lengths-out has %d finite positive lengths (%d)" % (len(edges), len(rows)))
+        check_intrinsic(c, "cone-metric torus flips", rows, tfaces, targets)
+    nl = os.path.join(tmp, "torus_noflip_lengths.txt")
+    cone_metric_failure(smdf, c, ["cone-metric", torus, "--cones", cones, "--no-flips", "--lengths-out", nl],
+                        "cone-metric torus %s --no-flips" % cones, ["not converged", "triangulation"])
+    rc, out, _ = smdf.run(["cone-metric", torus, "--cones", cones, "--no-flips"])
+    try:
+        doc = json.loads(out.decode("utf-8"))
+    except ValueError:
+        doc = {}
+    c.check(doc.get("triangulation_changed") is False and doc.get("edge_flips") == 0 and
+            len(read_rows(nl)) == len(edges),
+            "cone-metric --no-flips: triangulation unchanged, 0 flips, --lengths-out has the input edges")
+
+    # a disk whose boundary curvatures need flips: --uv-out and --svg lay out the intrinsic faces
+    n = 11
+    grid = os.path.join(tmp, "grid.off")
+    with open(grid, "w") as f:
+        f.write("OFF\n%d %d 0\n" % (n * n, 2 * (n - 1) ** 2))
+        for j in range(n):
+            for i in range(n):
+                f.write("%d %d 0\n" % (i, j))
+        for j in range(n - 1):
+            for i in range(n - 1):
+                a = j * n + i
+                f.write("3 %d %d %d\n3 %d %d %d\n" % (a, a + 1, a + n + 1, a, a + n + 1, a + n))
+    loop = list(range(n)) + [j * n + n - 1 for j in range(1, n)] + \
+        [(n - 1) * n + i for i in range(n - 2, -1, -1)] + [j * n for j in range(n - 2, 0, -1)]
+    corners = {loop[0]: "0.9pi", loop[len(loop) // 3]: "0.9pi", loop[2 * len(loop) // 3]: "0.2pi"}
+    uvf, svg = os.path.join(tmp, "grid_uv.txt"), os.path.join(tmp, "grid.svg")
+    lf, tf = os.path.join(tmp, "grid_lengths.txt"), os.path.join(tmp, "grid_tri.off")
+    r = smdf.json(["cone-metric", grid, "--boundary-curvature", ",".join("%d:%s" % x for x in corners.items()),
+                   "--uv-out", uvf, "--svg", svg, "--lengths-out", lf, "--triangulation-out", tf],
+                  "smdf cone-metric grid disk, 3 boundary corners (0.9pi, 0.9pi, 0.2pi)")
+    if r:
+        c.check(r.get("converged") is True and r.get("triangulation_changed") is True and
+                r.get("edge_flips", 0) > 0 and r.get("uv_positively_oriented") is True,
+                "grid disk: converged with %r flips, layout positively oriented" % r.get("edge_flips"))
+        _, tfaces = read_off(tf)
+        rows = read_length_rows(lf)
+        c.check(len(tfaces) == 2 * (n - 1) ** 2, "grid disk: --triangulation-out has %d faces" % len(tfaces))
+        check_intrinsic(c, "grid disk flips", rows, tfaces)
+        uv = [tuple(float(x) for x in row) for row in read_rows(uvf)]
+        by_pair = {}
+        for i, j, x in rows:
+            by_pair.setdefault((min(i, j), max(i, j)), []).append(x)
+        worst, neg = 0.0, 0
+        for f in tfaces:
+            a, b, d = uv[f[0]], uv[f[1]], uv[f[2]]
+            neg += not ((b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]) > 0)
+            for k in range(3):
+                i, j = f[k], f[(k + 1) % 3]
+                dist = math.hypot(uv[i][0] - uv[j][0], uv[i][1] - uv[j][1])
+                worst = max(worst, min(abs(dist - x) for x in by_pair.get((min(i, j), max(i, j)), [float("inf")])))
+        c.check(len(uv) == n * n and neg == 0 and worst <= 1e-8,
+                "grid disk: the layout realises the intrinsic lengths on every intrinsic face "
+                "(max error %.3g, %d faces not counterclockwise)" % (worst, neg))
+        root = parse_svg(c, svg, "grid.svg")
+        if root is not None:
+            polys = root.findall(".//" + SVG_NS + "polygon")
+            c.check(len(polys) == len(tfaces), "grid.svg: one triangle per intrinsic face (%d)" % len(polys))
 
 
 def test_shared_cone_metric(smdf, c, meshes):
@@ -964,6 +1111,35 @@ def test_shared_cone_metric(smdf, c, meshes):
         c.check(r.get("converged") is True and r.get("max_curvature_error", 1) <= 1e-9 and r.get("cones") == 8,
                 "spot: converged with 8 cones (error %r, %r iterations)"
                 % (r.get("max_curvature_error"), r.get("iterations")))
+        c.check(r.get("triangulation_changed") is False and r.get("edge_flips") == 0,
+                "spot: 8 cones of pi/2 need no flips (triangulation_changed %r, %r flips)"
+                % (r.get("triangulation_changed"), r.get("edge_flips")))
+
+    # genus 2: one cone of index -2 at the vertex of highest valence needs intrinsic flips
+    path = os.path.join(meshes, "eight_directional.off")
+    if not os.path.isfile(path):
+        print("skip: eight_directional.off not found")
+        return
+    verts, faces = read_off(path)
+    valence = {}
+    for f in faces:
+        for v in f:
+            valence[v] = valence.get(v, 0) + 1
+    top = max(sorted(valence), key=lambda v: valence[v])
+    with tempfile.TemporaryDirectory(prefix="smdf_test_") as tmp:
+        lf, tf = os.path.join(tmp, "eight_lengths.txt"), os.path.join(tmp, "eight.off")
+        r = smdf.json(["cone-metric", path, "--cone-indices", "%d:-2" % top, "--lengths-out", lf,
+                       "--triangulation-out", tf], "smdf cone-metric eight_directional.off %d:-2" % top)
+        if r:
+            c.check(r.get("converged") is True and r.get("triangulation_changed") is True and
+                    r.get("edge_flips", 0) > 0 and r.get("intrinsic_triangulation", {}).get("faces") == len(faces),
+                    "eight: converged on an intrinsic triangulation (%r flips, %r)"
+                    % (r.get("edge_flips"), r.get("intrinsic_triangulation")))
+            _, tfaces = read_off(tf)
+            c.check(len(tfaces) == len(faces), "eight: --triangulation-out has %d faces" % len(tfaces))
+            check_intrinsic(c, "eight flips", read_length_rows(lf), tfaces, {top: -2 * TWO_PI})
+        cone_metric_failure(smdf, c, ["cone-metric", path, "--cone-indices", "%d:-2" % top, "--no-flips"],
+                            "eight %d:-2 --no-flips" % top, ["not converged"])
 
 
 def main():

@@ -30,6 +30,7 @@
 #include <CGAL/Surface_mesh_direction_fields/trivial_connection.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cerrno>
 #include <chrono>
@@ -1284,6 +1285,7 @@ Json run_cone_metric(const Args& args)
                                    SMDF::parameters::conformal_factor_map(ufac)
                                        .number_of_iterations(int(iterations))
                                        .curvature_tolerance(tolerance)
+                                       .intrinsic_edge_flips(!args.has("no-flips"))
                                        .visitor(visitor));
   } catch(const SMDF::Input_error& e) {
     if(e.kind() != SMDF::Input_error::INCONSISTENT_INDICES) throw file_error(file, e.what(), SMDF::Input_error::kind_name(e.kind()));
@@ -1318,15 +1320,47 @@ Json run_cone_metric(const Args& args)
     throw file_error(file, e.what() + detail, SMDF::Input_error::kind_name(e.kind()));
   }
 
+  // With flips the metric lives on the intrinsic triangulation: its edges (not the input's)
+  // go to --lengths-out, its faces to --triangulation-out.
+  const bool changed = st.triangulation_changed;
+  const SMDF::Intrinsic_triangulation& itri = st.intrinsic_triangulation;
   if(args.has("lengths-out")) {
     std::ostringstream os;
     os.imbue(std::locale::classic());
     os.precision(17);
-    for(edge_descriptor e : edges(mesh)) {
-      const halfedge_descriptor h = halfedge(e, mesh);
-      os << index(source(h, mesh)) << ' ' << index(target(h, mesh)) << ' ' << get(lengths, e) << '\n';
+    if(changed) {
+      for(std::size_t e = 0; e < itri.number_of_edges(); ++e)
+        os << itri.source(int(2 * e)) << ' ' << itri.target(int(2 * e)) << ' ' << itri.length(int(e)) << '\n';
+    } else {
+      for(edge_descriptor e : edges(mesh)) {
+        const halfedge_descriptor h = halfedge(e, mesh);
+        os << index(source(h, mesh)) << ' ' << index(target(h, mesh)) << ' ' << get(lengths, e) << '\n';
+      }
     }
     write_lines_file(args.value("lengths-out"), os.str());
+  }
+  if(args.has("triangulation-out")) {
+    std::ostringstream os;
+    os.imbue(std::locale::classic());
+    os.precision(17);
+    os << "OFF\n" << nv << ' ' << num_faces(mesh) << " 0\n";
+    for(vertex_descriptor v : vertices(mesh)) {
+      const K::Point_3& p = mesh.point(v);
+      os << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+    }
+    if(changed) {
+      for(std::size_t f = 0; f < itri.number_of_faces(); ++f) {
+        const std::array<int, 3> t = itri.face_vertices(int(f));
+        os << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+      }
+    } else {
+      for(face_descriptor f : faces(mesh)) {
+        os << '3';
+        for(vertex_descriptor v : vertices_around_face(halfedge(f, mesh), mesh)) os << ' ' << index(v);
+        os << '\n';
+      }
+    }
+    write_lines_file(args.value("triangulation-out"), os.str());
   }
 
   std::size_t ncones = 0, nkappa = 0;
@@ -1338,10 +1372,22 @@ Json run_cone_metric(const Args& args)
   out["iterations"] = st.iterations;
   out["max_curvature_error"] = st.max_curvature_error;
   out["time_s"] = st.seconds;
-  out["method"] = "discrete conformal vertex scaling (Newton, CHOLMOD)";
+  out["method"] = args.has("no-flips")
+                    ? "discrete conformal vertex scaling (Newton, CHOLMOD) on the input triangulation"
+                    : "discrete conformal vertex scaling (Newton, CHOLMOD), continued on an intrinsic "
+                      "Delaunay triangulation (edge flips) if the input triangulation cannot carry the metric";
   out["message"] = st.message;
   out["cones"] = ncones;
   out["boundary_corners"] = nkappa;
+  out["triangulation_changed"] = changed;
+  out["edge_flips"] = st.edge_flips;
+  if(changed) {
+    Json t = Json::object();
+    t["faces"] = itri.number_of_faces();
+    t["edges"] = itri.number_of_edges();
+    t["new_edges"] = itri.number_of_new_edges();
+    out["intrinsic_triangulation"] = std::move(t);
+  }
 
   if(!st.converged) {
     std::ostringstream os;
@@ -1353,14 +1399,20 @@ Json run_cone_metric(const Args& args)
   }
 
   if(want_uv) {
+    // with flips, lay out (and draw) a copy of the intrinsic triangulation: same vertices
+    Mesh copy;
+    Mesh::Property_map<edge_descriptor, double> copy_lengths =
+      copy.add_property_map<edge_descriptor, double>("e:smdf_intrinsic_length", 0.).first;
+    if(changed) SMDF::copy_intrinsic_triangulation(itri, mesh, copy, copy_lengths);
+    Mesh& flat = changed ? copy : mesh;   // vertex i of the copy is vertex i of the input
     std::vector<K::Point_2> uv(nv, K::Point_2(0, 0));
     Mesh::Property_map<vertex_descriptor, K::Point_2> uvmap =
-      mesh.add_property_map<vertex_descriptor, K::Point_2>("v:smdf_uv", K::Point_2(0, 0)).first;
+      flat.add_property_map<vertex_descriptor, K::Point_2>("v:smdf_uv", K::Point_2(0, 0)).first;
     const bool injective = on_file(file, [&] {
-      return SMDF::lay_out_disk(mesh, lengths, uvmap,
-                                SMDF::parameters::curvature_tolerance((std::max)(1e-8, 10 * tolerance)));
+      const auto np = SMDF::parameters::curvature_tolerance((std::max)(1e-8, 10 * tolerance));
+      return changed ? SMDF::lay_out_disk(copy, copy_lengths, uvmap, np) : SMDF::lay_out_disk(mesh, lengths, uvmap, np);
     });
-    for(vertex_descriptor v : vertices(mesh)) uv[index(v)] = get(uvmap, v);
+    for(vertex_descriptor v : vertices(flat)) uv[index(v)] = get(uvmap, v);
     out["uv_positively_oriented"] = injective;
     if(args.has("uv-out")) {
       std::ostringstream os;
@@ -1372,7 +1424,7 @@ Json run_cone_metric(const Args& args)
     if(args.has("svg")) {
       std::vector<double> u(nv, 0.);
       for(vertex_descriptor v : vertices(mesh)) u[index(v)] = get(ufac, v);
-      write_lines_file(args.value("svg"), layout_svg(mesh, uv, u));
+      write_lines_file(args.value("svg"), layout_svg(flat, uv, u));
     }
   }
   return out;
@@ -1452,11 +1504,13 @@ const std::vector<Command>& commands()
      {{"cones", "LIST", "target curvatures 'v:K,...' of interior vertices, K in radians"},
       {"cone-indices", "LIST", "the same as indices 'v:k,...', K = 2 pi k (k integer, p/q, decimal)"},
       {"boundary-curvature", "LIST", "target geodesic curvatures 'v:kappa,...' of boundary vertices"},
-      {"lengths-out", "FILE", "write the metric: one line 'i j length' per edge"},
+      {"lengths-out", "FILE", "write the metric: one line 'i j length' per edge (intrinsic edges after flips)"},
+      {"triangulation-out", "FILE", "write the triangulation carrying the metric as OFF (input faces if no flips)"},
       {"uv-out", "FILE", "disks only: write the flat layout, one line 'u v' per vertex"},
       {"svg", "FILE", "disks only: draw the flat layout, faces coloured by the conformal factor"},
       {"iterations", "n", "maximum number of Newton iterations (default 200)"},
       {"tolerance", "t", "max curvature error accepted, radians (default 1e-10)"},
+      {"no-flips", "", "keep the input triangulation (no intrinsic edge flips)"},
       {"progress", "", "print the error of every iteration to stderr (default: only on a terminal)"}},
      "flat cone metric with prescribed cone angles (discrete conformal map)",
      "Computes edge lengths, conformally equivalent to the Euclidean ones (l_ij = l0_ij\n"
@@ -1465,22 +1519,39 @@ const std::vector<Command>& commands()
      "must be < 2 pi) and the geodesic curvature pi - sum(angles) at boundary vertices (0 unless\n"
      "given by --boundary-curvature; must be < pi). On every component the targets must sum to\n"
      "2 pi chi (Gauss-Bonnet), e.g. eight cones of pi/2 on a sphere, or four boundary corners of\n"
-     "pi/2 on a disk (a rectangle). The triangulation is kept (no edge flips).\n"
+     "pi/2 on a disk (a rectangle).\n"
+     "Newton's method runs on the input triangulation first; if that triangulation cannot\n"
+     "carry the target metric (triangles degenerate), the flow continues on an intrinsic\n"
+     "Delaunay triangulation of the same vertices (edge flips; same numbers of edges and faces),\n"
+     "unless --no-flips is given.\n"
      "Angles K, kappa: a decimal or p/q in radians, or a multiple of pi written [c][*]pi[/d]\n"
      "(pi, -pi, pi/2, 3*pi/4, -4pi, 0.5pi). Each vertex may be given once, by one option.\n"
      "Prints {status: \"converged\"|\"not_converged\", converged, iterations,\n"
      "max_curvature_error (radians), time_s, method, message (empty when converged), cones\n"
      "(interior vertices with K != 0), boundary_corners (boundary vertices with kappa != 0),\n"
+     "triangulation_changed (the metric lives on an intrinsic triangulation that differs from\n"
+     "the input's), edge_flips (intrinsic flips performed), intrinsic_triangulation: {faces,\n"
+     "edges, new_edges (edges that are not input edges)} (only when triangulation_changed),\n"
      "uv_positively_oriented (with --uv-out/--svg: every laid-out triangle is counterclockwise)}.\n"
-     "--lengths-out writes 'i j length' per edge (i j the vertices of halfedge(e), 17 digits),\n"
-     "readable by 'holonomy --lengths'. --uv-out and --svg need a topological disk (usage\n"
-     "error otherwise); the layout unfolds the faces breadth-first from face 0 and may overlap\n"
-     "itself globally. The SVG colours faces by the mean conformal factor u of their vertices\n"
-     "(blue u < 0, white 0, red u > 0, scaled by max |u|).\n"
-     "Not converged (tolerance not reached in --iterations, or the target metric does not\n"
-     "exist on this triangulation): the JSON object is still printed on stdout, one error line\n"
-     "goes to stderr and the exit code is 3; --lengths-out then holds the last valid iterate\n"
-     "and --uv-out/--svg are not written.\n",
+     "--lengths-out writes 'i j length' per edge (i j 0-based vertex indices in file order, 17\n"
+     "digits). Without flips these are the input's edges (i j the vertices of halfedge(e)),\n"
+     "readable by 'holonomy --lengths'. When triangulation_changed they are the intrinsic\n"
+     "triangulation's edges in its order: the edge list differs from the input's (some input\n"
+     "edges are gone, new ones join other vertex pairs, two edges may join the same pair) and\n"
+     "the faces are those of --triangulation-out. --triangulation-out writes an OFF file with\n"
+     "the input vertex positions (for display only: the geometry is in the lengths) and the\n"
+     "faces of the triangulation carrying the metric (the input faces if it did not change).\n"
+     "An intrinsic triangulation may have two edges joining the same vertices or a face with a\n"
+     "repeated vertex; smdf cannot read such an OFF back (its reader rejects non-manifold\n"
+     "soups). --uv-out and --svg need a topological disk (usage error otherwise); the layout\n"
+     "unfolds the faces (of the intrinsic triangulation when triangulation_changed, also the\n"
+     "faces drawn by --svg) breadth-first from face 0 and may overlap itself globally. The SVG\n"
+     "colours faces by the mean conformal factor u of their vertices (blue u < 0, white 0,\n"
+     "red u > 0, scaled by max |u|).\n"
+     "Not converged (tolerance not reached in --iterations, or, with --no-flips, the target\n"
+     "metric does not exist on this triangulation): the JSON object is still printed on stdout,\n"
+     "one error line goes to stderr and the exit code is 3; --lengths-out and\n"
+     "--triangulation-out then hold the last valid iterate and --uv-out/--svg are not written.\n",
      run_cone_metric},
   };
   return table;
