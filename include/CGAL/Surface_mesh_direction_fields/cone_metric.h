@@ -217,8 +217,9 @@ Cone_metric_status compute_cone_metric(const TriangleMesh& tm,
   const bool allow_flips = choose_parameter(get_parameter(np, internal_np::intrinsic_edge_flips), true);
   internal::Vertex_scaling_flow<TriangleMesh> flow(m, topo);
   std::vector<double> u(nv, 0.), len;
-  // With flips available, the input triangulation is abandoned after 2 consecutive steps cut to
-  // t <= 1/4 by degenerating triangles, or 3 cut steps without 10% progress: on a decimated
+  // With flips available, the input triangulation is abandoned after a step cut to t <= 1/8 by
+  // degenerating triangles, 2 consecutive steps cut to t <= 1/4, or 3 cut steps without 10%
+  // progress: on a decimated
   // 20k-face armadillo with 8 cones the cut steps keep shrinking (t = 1/8 ... 1/128) while the
   // Delaunay flow then converges in 5 full steps; steps cut to t = 1/2 usually still converge
   // on the input triangulation (armadillo, 52k faces, 7 iterations).

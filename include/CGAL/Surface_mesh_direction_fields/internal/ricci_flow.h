@@ -199,7 +199,7 @@ public:
   // u: in/out conformal factors (start value on input); len: output lengths.
   // `stall_window` w: give up when |w| consecutive Newton steps had to be shortened to keep the
   // (fixed) triangulation valid without a 10% decrease of the error; if w < 0, also when two
-  // consecutive steps were cut to t <= 1/4 (flips will take over).
+  // consecutive steps were cut to t <= 1/4 or one to t <= 1/8 (flips will take over).
   template <typename Callback>
   Vertex_scaling_result run(const std::vector<double>& target, std::vector<double>& u,
                             std::vector<double>& len, int max_iterations, double tol,
@@ -235,25 +235,36 @@ public:
     int it = 0;
     std::vector<double> err_history(1, err);
     int cut_streak = 0, small_cut_streak = 0, cut_face = -1;
-    std::size_t version_at_analysis = 0;
-    bool analysed = false;
+    std::size_t version_at_analysis = 0, pattern_version = 0;
+    bool analysed = false, has_pattern = false, last_full_step = false;
     while(err > tol && it < max_iterations) {
       // rejected trial points of the last line search may have flipped edges
       if(flip) restore();
-      const bool same_pattern = analysed && version_at_analysis == version_;
-      fill_values(ang, same_pattern);
-      std::string msg;
-      const bool ok = same_pattern ? chol_.refactor(L_, msg) : chol_.factor(L_, msg);
-      analysed = true;
-      version_at_analysis = version_;
-      if(!ok) {
-        res.message = "iteration " + std::to_string(first_iteration + it + 1) + ": " + msg;
-        break;
-      }
-      Eigen::VectorXd rhs(n_);
+      fill_values(ang, has_pattern && pattern_version == version_);
+      has_pattern = true;
+      pattern_version = version_;
+      Eigen::VectorXd rhs(n_), du;
       for(std::size_t v = 0; v < col_.size(); ++v)
         if(col_[v] >= 0) rhs[col_[v]] = target[v] - k[v];
-      const Eigen::VectorXd du = n_ > 0 ? chol_.solve(rhs) : Eigen::VectorXd();
+      // Inexact Newton: close to the solution (full steps, small error) the Hessian changes
+      // little between iterations, and conjugate gradients preconditioned by the previous
+      // factorisation reach the forcing tolerance in a few triangular solves, much cheaper than a
+      // new factorisation (433k faces: 0.57 s refactorisation, 1.2 s with a new analysis).
+      bool solved = false;
+      if(analysed && last_full_step && err < 1e-2 && n_ > 0)
+        solved = preconditioned_cg(rhs, du, (std::min)(1e-2, err), 8);
+      if(!solved) {
+        std::string msg;
+        const bool same_pattern = analysed && version_at_analysis == version_;
+        const bool ok = same_pattern ? chol_.refactor(L_, msg) : chol_.factor(L_, msg);
+        analysed = true;
+        version_at_analysis = version_;
+        if(!ok) {
+          res.message = "iteration " + std::to_string(first_iteration + it + 1) + ": " + msg;
+          break;
+        }
+        if(n_ > 0) du = chol_.solve(rhs);
+      }
       if(!du.allFinite()) {
         res.message = "iteration " + std::to_string(first_iteration + it + 1) + ": the Newton step is not finite";
         break;
@@ -297,6 +308,7 @@ public:
         res.message = os.str();
         break;
       }
+      last_full_step = (t == 1);
       u.swap(u_try); len.swap(len_try); ang.swap(ang_try); k.swap(k_try);
       if(flip) snapshot();
       norm2 = residual_norm2(k, target);
@@ -318,7 +330,7 @@ public:
       const int w = std::abs(stall_window);
       if(!flip && err > tol && stall_window != 0 &&
          ((cut_streak >= w && err > 0.9 * err_history[err_history.size() - 1 - w]) ||
-          (stall_window < 0 && small_cut_streak >= 2))) {
+          (stall_window < 0 && (small_cut_streak >= 2 || (any_invalid && t <= 0.125))))) {
         std::ostringstream os;
         os.precision(3);
         os << "stopped after iteration " << first_iteration + it << ": for " << w
@@ -386,6 +398,31 @@ private:
     for(std::size_t v = 0; v < k.size(); ++v)
       if(!m_.is_isolated(int(v))) s += (k[v] - target[v]) * (k[v] - target[v]);
     return s;
+  }
+
+  // Conjugate gradients on L_ du = rhs, preconditioned by the kept factorisation (of an earlier
+  // Hessian); true if |rhs - L_ du| <= eta |rhs| within max_iterations.
+  bool preconditioned_cg(const Eigen::VectorXd& rhs, Eigen::VectorXd& x, double eta, int max_iterations) const
+  {
+    const auto A = L_.template selfadjointView<Eigen::Lower>();
+    x = Eigen::VectorXd::Zero(rhs.size());
+    Eigen::VectorXd r = rhs, z = chol_.solve(r), p = z, Ap(rhs.size());
+    double rz = r.dot(z);
+    const double stop = eta * rhs.norm();
+    for(int i = 0; i < max_iterations; ++i) {
+      Ap.noalias() = A * p;
+      const double pAp = p.dot(Ap);
+      if(!(pAp > 0)) return false;
+      const double alpha = rz / pAp;
+      x += alpha * p;
+      r -= alpha * Ap;
+      if(r.norm() <= stop) return x.allFinite();
+      z = chol_.solve(r);
+      const double rz_new = r.dot(z);
+      p = z + (rz_new / rz) * p;
+      rz = rz_new;
+    }
+    return false;
   }
 
   int position(int row, int col) const
