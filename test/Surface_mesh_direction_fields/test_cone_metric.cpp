@@ -241,6 +241,80 @@ struct Tests
     return os.str();
   }
 
+  // Cones of index >= 1 (`big`, target >= 2 pi) punched as holes: checks the status, NaN exactly
+  // on the edges inside the holes, and the curvature of the output on the holed surface, recomputed
+  // from the lengths: geodesic curvature (K_w + (K_v - 2 pi) / d) at the ring of each hole.
+  void punched(const Mesh& mesh, const Cones& cones, const std::string& what)
+  {
+    auto tgt = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+    for(auto v : vertices(mesh)) put(tgt, v, 0.);
+    for(const auto& c : cones) put(tgt, c.first, c.second);
+    auto out = get(CGAL::dynamic_edge_property_t<double>(), mesh);
+    SMDF::Cone_metric_status st = SMDF::compute_cone_metric(mesh, tgt, out);
+    std::cout << what << ": converged " << st.converged << ", " << st.iterations << " iterations, error "
+              << st.max_curvature_error << ", " << st.punched_vertices.size() << " hole(s)"
+              << (st.triangulation_changed ? ", intrinsic triangulation" : "") << std::endl;
+    std::map<vertex_descriptor, std::size_t> index;
+    for(auto v : vertices(mesh)) index.emplace(v, index.size());
+    std::set<vertex_descriptor> big;
+    for(const auto& c : cones) if(c.second >= 2 * M_PI) big.insert(c.first);
+    std::vector<std::size_t> expected;
+    for(auto v : big) expected.push_back(index[v]);
+    std::sort(expected.begin(), expected.end());
+    SMDF_CHECK_MSG(st.converged && st.punched_vertices == expected, what << ": punched " << st.punched_vertices.size());
+    if(!st.converged) return;
+    std::map<vertex_descriptor, double> ring_kappa;
+    for(auto v : big) {
+      const double d = double(degree(v, mesh));
+      for(auto h : CGAL::halfedges_around_target(v, mesh)) ring_kappa[source(h, mesh)] = (get(tgt, v) - 2 * M_PI) / d;
+    }
+    if(st.triangulation_changed) {   // holed intrinsic triangulation: punched vertices isolated
+      Surface_mesh tri;
+      auto tl = tri.add_property_map<Surface_mesh::Edge_index, double>("e:length", 0.).first;
+      SMDF::copy_intrinsic_triangulation(st.intrinsic_triangulation, mesh, tri, tl);
+      auto k = tri.add_property_map<Surface_mesh::Vertex_index, double>("v:k", 0.).first;
+      SMDF::compute_vertex_curvatures(tri, k, SMDF::parameters::edge_length_map(tl));
+      double err = 0;
+      std::size_t i = 0;
+      for(auto v : vertices(mesh)) {
+        const Surface_mesh::Vertex_index w(Surface_mesh::size_type(i++));
+        if(big.count(v)) { SMDF_CHECK(tri.is_isolated(w)); continue; }
+        const double expect = get(tgt, v) + (ring_kappa.count(v) ? ring_kappa[v] : 0.);
+        err = (std::max)(err, std::abs(k[w] - expect));
+      }
+      SMDF_CHECK_MSG(err <= 1e-9, what << ": curvature on the holed intrinsic triangulation, error " << err);
+      return;
+    }
+    bool nan_ok = true;
+    for(auto e : edges(mesh)) {
+      const bool spoke = big.count(source(e, mesh)) || big.count(target(e, mesh));
+      nan_ok = nan_ok && (spoke == std::isnan(get(out, e)));
+    }
+    SMDF_CHECK_MSG(nan_ok, what << ": NaN exactly on the edges inside the holes");
+    std::map<vertex_descriptor, double> angle_sum;
+    bool valid = true;
+    for(auto f : faces(mesh)) {
+      halfedge_descriptor h = halfedge(f, mesh);
+      vertex_descriptor a = source(h, mesh), b = target(h, mesh), c = target(next(h, mesh), mesh);
+      if(big.count(a) || big.count(b) || big.count(c)) continue;
+      const double lab = get(out, edge(h, mesh)), lbc = get(out, edge(next(h, mesh), mesh)),
+                   lca = get(out, edge(prev(h, mesh), mesh));
+      valid = valid && SMDF::is_valid_triangle(lab, lbc, lca);
+      angle_sum[a] += SMDF::corner_angle(lbc, lab, lca);
+      angle_sum[b] += SMDF::corner_angle(lca, lab, lbc);
+      angle_sum[c] += SMDF::corner_angle(lab, lbc, lca);
+    }
+    SMDF_CHECK_MSG(valid, what << ": triangle inequalities");
+    double err = 0;
+    for(const auto& x : angle_sum) {
+      const bool border = is_border(x.first, mesh) || ring_kappa.count(x.first);
+      const double k = (border ? M_PI : 2 * M_PI) - x.second;
+      const double expect = get(tgt, x.first) + (ring_kappa.count(x.first) ? ring_kappa[x.first] : 0.);
+      err = (std::max)(err, std::abs(k - expect));
+    }
+    SMDF_CHECK_MSG(err <= 1e-9, what << ": curvature on the holed surface, error " << err);
+  }
+
   static double max_cone_angle(const Cones& c)
   {
     double a = 0;
@@ -360,6 +434,13 @@ struct Tests
       SMDF_CHECK_MSG(valid, "the last iterate of a failed flow is a valid metric");
       SMDF_CHECK(run(torus, c, out, "generated torus, cone -3.99pi at valence 6, with flips" + suffix));
     }
+    // a cone of index +1 (a hole with geodesic boundary) and one of index -1
+    {
+      Cones c;
+      c[*vertices(torus).begin()] = 2 * M_PI;
+      c[*std::next(vertices(torus).begin(), 300)] = -2 * M_PI;
+      punched(torus, c, "generated torus, cones of index +1 (hole) and -1" + suffix);
+    }
     // cylinder: straight boundary loops, flat
     auto outc = get(CGAL::dynamic_edge_property_t<double>(), cyl);
     SMDF_CHECK(run(cyl, Cones(), outc, "generated cylinder, flat with geodesic boundary" + suffix));
@@ -385,9 +466,14 @@ struct Tests
     expect(SMDF::Input_error::INCONSISTENT_INDICES, {"Gauss-Bonnet", "1.5707963267948", "2*pi*chi = 0", "component 0"},
            "Gauss-Bonnet violation on a torus");
     reset();
-    put(target, *vertices(torus).begin(), 2 * M_PI);
-    put(target, *std::next(vertices(torus).begin()), -2 * M_PI);
-    expect(SMDF::Input_error::INVALID_ARGUMENT, {">= 2*pi", "hole"}, "cone of index 1");
+    {   // two adjacent cones of index 1: their holes would overlap
+      vertex_descriptor v0 = *vertices(torus).begin();
+      vertex_descriptor v1 = source(halfedge(v0, torus), torus);
+      put(target, v0, 2 * M_PI);
+      put(target, v1, 2 * M_PI);
+      put(target, *std::next(vertices(torus).begin(), 300), -4 * M_PI);
+      expect(SMDF::Input_error::INVALID_ARGUMENT, {"cannot punch a hole", "another such cone"}, "adjacent cones of index 1");
+    }
     reset();
     put(target, *vertices(torus).begin(), std::nan(""));
     expect(SMDF::Input_error::INVALID_ARGUMENT, {"not finite"}, "NaN target");
@@ -503,6 +589,19 @@ int main()
         const auto rc = ts.random_cones(mesh, chi);
         ts.run(mesh, rc, out, entry.file + ", random cones #" + std::to_string(i) + " (" + std::to_string(rc.size()) + " cones)");
       }
+  }
+  {   // a single cone of index +2 on genus 0 (Lai et al. Figure 8), and +3/2 with two of +1/4
+    Surface_mesh mesh;
+    if(read(md + "spot_c3d.obj", mesh)) {
+      Tests<Surface_mesh>::Cones c;
+      c[*std::next(vertices(mesh).begin(), 100)] = 4 * M_PI;
+      ts.punched(mesh, c, "spot_c3d.obj, one cone of index +2 (hole)");
+      c.clear();
+      c[*std::next(vertices(mesh).begin(), 100)] = 3 * M_PI;
+      c[*std::next(vertices(mesh).begin(), 1500)] = M_PI / 2;
+      c[*std::next(vertices(mesh).begin(), 2500)] = M_PI / 2;
+      ts.punched(mesh, c, "spot_c3d.obj, cones of index +3/2 (hole), +1/4, +1/4");
+    }
   }
   {
     Polyhedron p;

@@ -931,7 +931,21 @@ def test_cone_metric(smdf, c, torus, tmp, verts, faces):
                      "cone indices summing to 1/2 != chi = 0", 1, ["[inconsistent_indices]"])
     c.check("0.5" in msg and "Euler characteristic is 0" in msg and "3.14159" in msg,
             "the Gauss-Bonnet error names both totals (indices 0.5 vs chi 0, radians pi vs 0): %r" % msg)
-    smdf.error(["cone-metric", torus, "--cones", "0:7,100:-7"], "--cones 0:7 (>= 2 pi)", 1, ["2*pi", "vertex 0"])
+    # a cone of index >= 1 is punched as a hole (Lai et al. 4.1.1); the files describe the holed surface
+    lpath, tpath = os.path.join(tmp, "punched.lengths"), os.path.join(tmp, "punched.off")
+    r = smdf.json(["cone-metric", torus, "--cones", "0:7,100:-7", "--lengths-out", lpath, "--triangulation-out", tpath],
+                  "smdf cone-metric torus, cone 0:7 (>= 2 pi, punched)")
+    c.check(r is not None and r.get("converged") is True and r.get("punched_vertices") == [0],
+            "cone-metric: a cone >= 2 pi is punched: %r" % (r and r.get("punched_vertices")))
+    if r is not None and os.path.exists(lpath) and os.path.exists(tpath):
+        _, tfaces = read_off(tpath)
+        with open(lpath) as f:
+            lines = [l.split() for l in f if l.strip()]
+        c.check(all(0 not in t for t in tfaces) and all(l[0] != "0" and l[1] != "0" for l in lines)
+                and all(math.isfinite(float(l[2])) for l in lines),
+                "cone-metric: the punched vertex has no face and no edge in the output files")
+    smdf.error(["cone-metric", torus, "--cones", "0:7,1:7,100:-14"], "two adjacent cones >= 2 pi", 1,
+               ["cannot punch a hole", "vertex 0"])
     smdf.error(["cone-metric", torus, "--cones", "0:2pi"], "--cones 0:2pi", 1, "2*pi")
     smdf.error(["cone-metric", torus, "--cones", "0:pi/2,0:-pi/2"], "vertex given twice", 1, "twice")
     smdf.error(["cone-metric", torus, "--cones", "0:pi/2", "--cone-indices", "0:-1/4"],

@@ -1333,6 +1333,7 @@ Json run_cone_metric(const Args& args)
         os << itri.source(int(2 * e)) << ' ' << itri.target(int(2 * e)) << ' ' << itri.length(int(e)) << '\n';
     } else {
       for(edge_descriptor e : edges(mesh)) {
+        if(std::isnan(get(lengths, e))) continue;   // inside a punched hole
         const halfedge_descriptor h = halfedge(e, mesh);
         os << index(source(h, mesh)) << ' ' << index(target(h, mesh)) << ' ' << get(lengths, e) << '\n';
       }
@@ -1343,7 +1344,15 @@ Json run_cone_metric(const Args& args)
     std::ostringstream os;
     os.imbue(std::locale::classic());
     os.precision(17);
-    os << "OFF\n" << nv << ' ' << num_faces(mesh) << " 0\n";
+    std::vector<char> punched(nv, 0);
+    for(std::size_t v : st.punched_vertices) punched[v] = 1;
+    std::vector<face_descriptor> kept;   // without the faces of punched holes
+    for(face_descriptor f : faces(mesh)) {
+      bool in_hole = false;
+      for(vertex_descriptor v : vertices_around_face(halfedge(f, mesh), mesh)) in_hole = in_hole || punched[index(v)];
+      if(!in_hole) kept.push_back(f);
+    }
+    os << "OFF\n" << nv << ' ' << (changed ? itri.number_of_faces() : kept.size()) << " 0\n";
     for(vertex_descriptor v : vertices(mesh)) {
       const K::Point_3& p = mesh.point(v);
       os << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
@@ -1354,7 +1363,7 @@ Json run_cone_metric(const Args& args)
         os << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
       }
     } else {
-      for(face_descriptor f : faces(mesh)) {
+      for(face_descriptor f : kept) {
         os << '3';
         for(vertex_descriptor v : vertices_around_face(halfedge(f, mesh), mesh)) os << ' ' << index(v);
         os << '\n';
@@ -1379,6 +1388,9 @@ Json run_cone_metric(const Args& args)
   out["message"] = st.message;
   out["cones"] = ncones;
   out["boundary_corners"] = nkappa;
+  Json holes = Json::array();
+  for(std::size_t v : st.punched_vertices) holes.push_back(v);
+  out["punched_vertices"] = holes;
   out["triangulation_changed"] = changed;
   out["edge_flips"] = st.edge_flips;
   if(changed) {
@@ -1516,7 +1528,8 @@ const std::vector<Command>& commands()
      "Computes edge lengths, conformally equivalent to the Euclidean ones (l_ij = l0_ij\n"
      "exp((u_i + u_j) / 2)), whose discrete curvature is the target at every vertex: the angle\n"
      "defect 2 pi - sum(angles) at interior vertices (0 unless given by --cones/--cone-indices;\n"
-     "must be < 2 pi) and the geodesic curvature pi - sum(angles) at boundary vertices (0 unless\n"
+     "a cone K >= 2 pi, index >= 1, is punched as a hole whose d ring vertices get the geodesic\n"
+     "curvature (K - 2 pi) / d; the output files then describe the holed surface) and the geodesic curvature pi - sum(angles) at boundary vertices (0 unless\n"
      "given by --boundary-curvature; must be < pi). On every component the targets must sum to\n"
      "2 pi chi (Gauss-Bonnet), e.g. eight cones of pi/2 on a sphere, or four boundary corners of\n"
      "pi/2 on a disk (a rectangle).\n"
@@ -1532,7 +1545,8 @@ const std::vector<Command>& commands()
      "triangulation_changed (the metric lives on an intrinsic triangulation that differs from\n"
      "the input's), edge_flips (intrinsic flips performed), intrinsic_triangulation: {faces,\n"
      "edges, new_edges (edges that are not input edges)} (only when triangulation_changed),\n"
-     "uv_positively_oriented (with --uv-out/--svg: every laid-out triangle is counterclockwise)}.\n"
+     "punched_vertices (cones of index >= 1 punched as holes), uv_positively_oriented (with\n"
+     "--uv-out/--svg: every laid-out triangle is counterclockwise)}.\n"
      "--lengths-out writes 'i j length' per edge (i j 0-based vertex indices in file order, 17\n"
      "digits). Without flips these are the input's edges (i j the vertices of halfedge(e)),\n"
      "readable by 'holonomy --lengths'. When triangulation_changed they are the intrinsic\n"

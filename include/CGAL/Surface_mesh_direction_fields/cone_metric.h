@@ -15,8 +15,12 @@
 
 #include <CGAL/boost/graph/named_params_helper.h>
 
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <deque>
 #include <sstream>
 #include <limits>
@@ -42,6 +46,9 @@ struct Cone_metric_status
   std::size_t edge_flips = 0;      ///< number of intrinsic edge flips performed
   /// the triangulation carrying the metric when `triangulation_changed`, empty otherwise
   Intrinsic_triangulation intrinsic_triangulation;
+  /// interior vertices with a target curvature \f$\ge 2\pi\f$ (cones of index \f$\ge 1\f$) at which a
+  /// hole was punched, in vertex order
+  std::vector<std::size_t> punched_vertices;
 };
 
 namespace internal {
@@ -92,10 +99,19 @@ struct No_cone_metric_visitor { void operator()(int, double) const {} };
 /// and the geodesic curvature \f$\bar\kappa_v = \pi - \sum\theta\f$ at boundary vertices
 /// (\f$\pi/2\f$ at the corners of a rectangle, 0 along straight sides).
 ///
+/// <b>Cones of index \f$\geq 1\f$.</b> An interior target \f$\bar K_v \geq 2\pi\f$ has no positive
+/// angle sum at a single vertex. As Lai et al. (2010, section 4.1.1), a hole is punched there:
+/// the faces around \f$v\f$ are removed, and each of the \f$d\f$ vertices \f$w\f$ of its ring
+/// becomes a boundary vertex with target geodesic curvature
+/// \f$\bar\kappa_w = \bar K_w + (\bar K_v - 2\pi)/d\f$, so that the index of the hole is
+/// \f$\sum_w \bar\kappa_w / 2\pi + 1 = \bar K_v / 2\pi\f$ (for \f$\bar K_w = 0\f$). The metric
+/// is computed on the holed surface; `output_lengths` is a quiet NaN on the edges inside the
+/// holes, the conformal factor of \f$v\f$ is NaN, the status lists the punched vertices, and
+/// its curvature error is measured on the holed surface (at the ring: geodesic curvature).
+///
 /// Throws `Input_error` if the mesh is invalid (see `compute_vertex_curvatures()`), if a target
-/// is not finite, if an interior target is \f$\geq 2\pi\f$ (a cone of index \f$\geq 1\f$ has no
-/// positive angle sum at a single vertex; Lai et al. punch a hole there, which this function
-/// does not do: cut a hole and prescribe its boundary curvature instead), if a boundary target
+/// is not finite, if a cone of index \f$\geq 1\f$ has a neighbour on the boundary or in the ring
+/// of another such cone, or its ring would need \f$\bar\kappa_w \geq \pi\f$, if a boundary target
 /// is \f$\geq \pi\f$, or (kind `INCONSISTENT_INDICES`) if on a connected component the targets
 /// do not sum to \f$2\pi\chi\f$ (Gauss–Bonnet) within \f$10^{-8}\max(1, 2\pi|\chi|)\f$.
 ///
@@ -177,6 +193,7 @@ Cone_metric_status compute_cone_metric(const TriangleMesh& tm,
 
   // --- validation of the targets
   std::vector<double> target(nv, 0.);
+  std::vector<int> punched;   // interior vertices with a target >= 2 pi
   std::vector<double> sum(topo.components.size(), 0.);
   for(std::size_t v = 0; v < nv; ++v) {
     if(m.is_isolated(int(v))) continue;
@@ -188,12 +205,7 @@ Cone_metric_status compute_cone_metric(const TriangleMesh& tm,
       os << "target curvature of vertex " << v << " is not finite";
       throw Input_error(Input_error::INVALID_ARGUMENT, os.str());
     }
-    if(!boundary && k >= 2 * CGAL_PI) {
-      os << "target curvature " << k << " of interior vertex " << v << " is >= 2*pi: a cone of "
-         << "index >= 1 has no positive angle sum at a single vertex; punching a hole (Lai et al. "
-         << "2010, section 4.1.1) is not supported: cut a hole and prescribe its boundary curvature";
-      throw Input_error(Input_error::INVALID_ARGUMENT, os.str());
-    }
+    if(!boundary && k >= 2 * CGAL_PI) punched.push_back(int(v));
     if(boundary && k >= CGAL_PI) {
       os << "target geodesic curvature " << k << " of boundary vertex " << v << " is >= pi";
       throw Input_error(Input_error::INVALID_ARGUMENT, os.str());
@@ -211,6 +223,87 @@ Cone_metric_status compute_cone_metric(const TriangleMesh& tm,
          << " but 2*pi*chi = " << expected << " (Euler characteristic " << chi << ")";
       throw Input_error(Input_error::INCONSISTENT_INDICES, os.str());
     }
+  }
+
+  if(!punched.empty()) {
+    // --- cones of index >= 1 (Lai et al. 2010, section 4.1.1): punch a hole at each, i.e.
+    // remove its faces; the ring of the hole becomes boundary with geodesic curvature
+    // kappa_w = K_w + (K_v - 2 pi) / d on each of its d vertices (Gauss-Bonnet: the hole's
+    // boundary turns by 2 pi - K_v less than the cone would need), then solve on the rest.
+    std::vector<char> removed(m.number_of_faces(), 0), is_ring(nv, 0), is_punched(nv, 0);
+    for(int v : punched) is_punched[v] = 1;
+    std::vector<double> hole_target = target;
+    for(int v : punched) {
+      std::vector<int> ring;
+      int h = m.vertex_out[v];
+      do { ring.push_back(m.target[h]); removed[m.face[h]] = 1; h = m.ccw_out(h); } while(h != m.vertex_out[v]);
+      for(int w : ring) {
+        std::ostringstream os;
+        os.precision(17);
+        if(is_punched[w] || is_ring[w] || m.is_boundary_vertex(w)) {
+          os << "cannot punch a hole at vertex " << v << " (target curvature " << target[v]
+             << " >= 2*pi, a cone of index >= 1): its neighbour " << w << " is "
+             << (is_punched[w] ? "another such cone" : m.is_boundary_vertex(w) ? "on the boundary"
+                                                                                : "next to another such cone")
+             << "; cones of index >= 1 need disjoint interior one-rings";
+          throw Input_error(Input_error::INVALID_ARGUMENT, os.str());
+        }
+        is_ring[w] = 1;
+        hole_target[w] = target[w] + (target[v] - 2 * CGAL_PI) / double(ring.size());
+        if(hole_target[w] >= CGAL_PI) {
+          os << "cannot punch a hole at vertex " << v << " (target curvature " << target[v]
+             << "): its " << ring.size() << " neighbours would need a geodesic curvature of "
+             << hole_target[w] << " >= pi each; refine the mesh around it";
+          throw Input_error(Input_error::INVALID_ARGUMENT, os.str());
+        }
+      }
+      hole_target[v] = 0;
+    }
+    // The holed surface: the same vertices (punched ones isolated), the other faces, the input
+    // lengths, solved by this function.
+    typedef CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3> Holed;
+    Holed holed;
+    for(std::size_t v = 0; v < nv; ++v) holed.add_vertex();
+    for(std::size_t f = 0; f < m.number_of_faces(); ++f) {
+      if(removed[f]) continue;
+      const int h0 = m.face_halfedge[f], h1 = m.next[h0];
+      holed.add_face(typename Holed::Vertex_index(m.source(h0)), typename Holed::Vertex_index(m.target[h0]),
+                     typename Holed::Vertex_index(m.target[h1]));
+    }
+    std::map<std::pair<int, int>, double> input_length;
+    for(std::size_t e = 0; e < m.number_of_edges(); ++e)
+      input_length[std::minmax(m.target[2 * e], m.target[2 * e + 1])] = m.length[e];
+    auto hl = holed.template add_property_map<typename Holed::Edge_index, double>("e:input_length", 0.).first;
+    auto out = holed.template add_property_map<typename Holed::Edge_index, double>("e:output_length", 0.).first;
+    auto ht = holed.template add_property_map<typename Holed::Vertex_index, double>("v:target", 0.).first;
+    auto hu = holed.template add_property_map<typename Holed::Vertex_index, double>("v:u", 0.).first;
+    for(typename Holed::Edge_index e : edges(holed)) {
+      const int a = int(CGAL::source(e, holed)), b = int(CGAL::target(e, holed));
+      hl[e] = input_length.at(std::minmax(a, b));
+    }
+    for(std::size_t v = 0; v < nv; ++v) ht[typename Holed::Vertex_index(v)] = hole_target[v];
+    Cone_metric_status st = compute_cone_metric(
+        holed, ht, out,
+        parameters::edge_length_map(hl).conformal_factor_map(hu).number_of_iterations(max_iterations)
+            .curvature_tolerance(tol).visitor(visitor)
+            .intrinsic_edge_flips(choose_parameter(get_parameter(np, internal_np::intrinsic_edge_flips), true)));
+    // back to the input: spokes of the holes and flipped-away edges have no length
+    std::map<std::pair<int, int>, double> result;
+    for(typename Holed::Edge_index e : edges(holed))
+      result[std::minmax(int(CGAL::source(e, holed)), int(CGAL::target(e, holed)))] = out[e];
+    for(std::size_t e = 0; e < m.number_of_edges(); ++e) {
+      auto it = result.find(std::minmax(m.target[2 * e], m.target[2 * e + 1]));
+      put(output_lengths, m.edges[e], it == result.end() ? std::numeric_limits<double>::quiet_NaN() : it->second);
+    }
+    if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::conformal_factor_t>::value) {
+      auto ufm = get_parameter(np, internal_np::conformal_factor);
+      for(std::size_t v = 0; v < nv; ++v)
+        put(ufm, m.vertices[v], is_punched[v] ? std::numeric_limits<double>::quiet_NaN()
+                                              : hu[typename Holed::Vertex_index(v)]);
+    }
+    st.punched_vertices.assign(punched.begin(), punched.end());
+    st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return st;
   }
 
   // --- Newton, first on the input triangulation, then (if needed) with intrinsic flips
