@@ -490,18 +490,20 @@ struct Tests
     } catch(const SMDF::Input_error& e) { SMDF_CHECK_MSG(std::string(e.what()).find("2 boundary loop") != std::string::npos, e.what()); }
   }
 
-  // 4 corners of pi/2 at quarter positions of the boundary loop -> rectangle
-  void rectangle(const Mesh& mesh, const std::string& what)
+  // n corners of 2 pi / n at equal steps along the boundary loop, straight sides: a rectangle
+  // (n = 4), an equilateral triangle (n = 3)
+  void rectangle(const Mesh& mesh, const std::string& what, int n = 4)
   {
+    const std::string shape = n == 4 ? ", rectangle" : n == 3 ? ", equilateral triangle" : ", polygon";
     halfedge_descriptor b = GT::null_halfedge();
     for(auto h : halfedges(mesh)) if(is_border(h, mesh)) { b = h; break; }
     std::vector<vertex_descriptor> loop;
     halfedge_descriptor h = b;
     do { loop.push_back(target(h, mesh)); h = next(h, mesh); } while(h != b);
     Cones c;
-    for(int i = 0; i < 4; ++i) c[loop[i * loop.size() / 4]] = M_PI / 2;
+    for(int i = 0; i < n; ++i) c[loop[i * loop.size() / n]] = 2 * M_PI / n;
     auto out = get(CGAL::dynamic_edge_property_t<double>(), mesh);
-    if(!run(mesh, c, out, what + ", rectangle")) return;
+    if(!run(mesh, c, out, what + shape, 200, false)) return;
     auto uv = get(CGAL::dynamic_vertex_property_t<SMDF::Point_2>(), mesh);
     const bool ok = SMDF::lay_out_disk(mesh, out, uv);
     SMDF_CHECK_MSG(ok, what << ": layout without flipped triangles");
@@ -520,8 +522,9 @@ struct Tests
     }
     SMDF_CHECK_MSG(min_area > 0, what << ": min signed area " << min_area);
     SMDF_CHECK_MSG(lerr <= 1e-8 * lmax * std::sqrt(double(num_faces(mesh))), what << ": layout edge length error " << lerr);
-    // turning of the laid-out boundary polygon: 4 corners of pi/2, straight elsewhere
+    // turning of the laid-out boundary polygon: n corners of 2 pi / n, straight elsewhere
     int corners = 0;
+    std::vector<SMDF::Point_2> corner_points;
     double straight = 0, corner_err = 0;
     for(std::size_t i = 0; i < loop.size(); ++i) {
       // the border halfedges run clockwise around the disk; walk it reversed (counterclockwise)
@@ -530,11 +533,22 @@ struct Tests
       const auto& r = get(uv, loop[(i + loop.size() - 1) % loop.size()]);
       const double turn = std::atan2((q.x() - p.x()) * (r.y() - q.y()) - (q.y() - p.y()) * (r.x() - q.x()),
                                      (q.x() - p.x()) * (r.x() - q.x()) + (q.y() - p.y()) * (r.y() - q.y()));
-      if(std::abs(turn) > 1e-6) { ++corners; corner_err = (std::max)(corner_err, std::abs(turn - M_PI / 2)); }
+      if(std::abs(turn) > 1e-6) {
+        ++corners;
+        corner_err = (std::max)(corner_err, std::abs(turn - 2 * M_PI / n));
+        corner_points.push_back(q);
+      }
       else straight = (std::max)(straight, std::abs(turn));
     }
-    SMDF_CHECK_MSG(corners == 4 && corner_err < 1e-7, what << ": layout boundary has " << corners
+    SMDF_CHECK_MSG(corners == n && corner_err < 1e-7, what << shape << ": layout boundary has " << corners
                    << " corners, corner error " << corner_err << ", straight turning " << straight);
+    if(n == 3 && corners == 3) {
+      double side[3];
+      for(int i = 0; i < 3; ++i)
+        side[i] = std::sqrt(CGAL::squared_distance(corner_points[i], corner_points[(i + 1) % 3]));
+      const double spread = (std::max)({side[0], side[1], side[2]}) - (std::min)({side[0], side[1], side[2]});
+      SMDF_CHECK_MSG(spread <= 1e-7 * side[0], what << shape << ": sides " << side[0] << " " << side[1] << " " << side[2]);
+    }
   }
 };
 
@@ -618,7 +632,7 @@ int main()
   // disks -> rectangles
   for(const std::string f : {"mushroom_cgal.off", "face_bff.obj"}) {
     Surface_mesh mesh;
-    if(read(md + f, mesh)) ts.rectangle(mesh, f);
+    if(read(md + f, mesh)) { ts.rectangle(mesh, f); ts.rectangle(mesh, f, 3); }
   }
   {
     Polyhedron p;
