@@ -251,7 +251,7 @@ public:
       // factorisation reach the forcing tolerance in a few triangular solves, much cheaper than a
       // new factorisation (433k faces: 0.57 s refactorisation, 1.2 s with a new analysis).
       bool solved = false;
-      if(analysed && last_full_step && err < 1e-2 && n_ > 0)
+      if(analysed && last_full_step && n_ > 0)
         solved = preconditioned_cg(rhs, du, (std::min)(1e-2, err), 8);
       if(!solved) {
         std::string msg;
