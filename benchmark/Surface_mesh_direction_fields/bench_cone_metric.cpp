@@ -97,16 +97,7 @@ std::unique_ptr<smdf_bench::Bench_mesh> build_cone_mesh(std::size_t target_faces
   b->mesh = cone_base_mesh();
   std::ostringstream src;
   src << smdf_bench::base_name(cone_base_mesh_path());
-  int steps = 0;
-  while(double(num_faces(b->mesh)) < 0.97 * double(target_faces)) {
-    CGAL::Subdivision_method_3::Loop_subdivision(b->mesh, CGAL::parameters::number_of_iterations(1));
-    ++steps;
-  }
-  if(steps > 0) src << " Loop^" << steps;
-  if(double(num_faces(b->mesh)) > 1.10 * double(target_faces)) {
-    smdf_bench::decimate(b->mesh, target_faces);
-    src << " decimated";
-  }
+  smdf_bench::refine_to_size(b->mesh, target_faces, src);
   smdf_bench::describe(*b);
   b->build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   b->source = src.str();
@@ -195,12 +186,7 @@ void BM_cone_metric(benchmark::State& state)
 void register_sizes(const char* name, const std::vector<std::int64_t>& sizes)
 {
   for(std::int64_t size : sizes)
-    benchmark::RegisterBenchmark(name, BM_cone_metric)
-        ->Arg(size)
-        ->Unit(benchmark::kMillisecond)
-        ->UseRealTime()
-        ->Repetitions(size >= 400000 ? 3 : 5)
-        ->ReportAggregatesOnly(true);
+    smdf_bench::sized(benchmark::RegisterBenchmark(name, BM_cone_metric), size);
 }
 
 const bool registered = [] {

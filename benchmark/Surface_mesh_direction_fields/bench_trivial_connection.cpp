@@ -177,12 +177,7 @@ void register_sizes(const char* name, void (*fn)(benchmark::State&, int, SMDF::C
 {
   for(std::int64_t size : smdf_bench::target_sizes()) {
     if(max_faces >= 0 && size > max_faces) continue;
-    benchmark::RegisterBenchmark(name, fn, N, solver)
-        ->Arg(size)
-        ->Unit(benchmark::kMillisecond)
-        ->UseRealTime()
-        ->Repetitions(size >= 400000 ? 3 : 5)
-        ->ReportAggregatesOnly(true);
+    smdf_bench::sized(benchmark::RegisterBenchmark(name, fn, N, solver), size);
   }
 }
 

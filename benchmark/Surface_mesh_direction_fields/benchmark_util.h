@@ -305,6 +305,35 @@ inline void decimate(Mesh& mesh, std::size_t target_faces)
   mesh.collect_garbage();
 }
 
+// Loop subdivision until `mesh` has at least 97% of `target_faces` (3% slack, so that feline,
+// 99,732 faces, counts as 100k and one Loop step, 398,928, as 400k), then Lindstrom-Turk
+// decimation down to the target if it overshoots by more than 10%; appends what was done to
+// `src` (" Loop^2 decimated").
+inline void refine_to_size(Mesh& mesh, std::size_t target_faces, std::ostream& src)
+{
+  int steps = 0;
+  while(double(num_faces(mesh)) < 0.97 * double(target_faces)) {
+    CGAL::Subdivision_method_3::Loop_subdivision(mesh, CGAL::parameters::number_of_iterations(1));
+    ++steps;
+  }
+  if(steps > 0) src << " Loop^" << steps;
+  if(double(num_faces(mesh)) > 1.10 * double(target_faces)) {
+    decimate(mesh, target_faces);
+    src << " decimated";
+  }
+}
+
+// The registration settings shared by the drivers: milliseconds, wall-clock time, medians of
+// 5 repetitions (3 from 400k faces on).
+inline benchmark::internal::Benchmark* sized(benchmark::internal::Benchmark* b, std::int64_t size)
+{
+  return b->Arg(size)
+      ->Unit(benchmark::kMillisecond)
+      ->UseRealTime()
+      ->Repetitions(size >= 400000 ? 3 : 5)
+      ->ReportAggregatesOnly(true);
+}
+
 // Builds a mesh with about `target_faces` faces from the base mesh (see the top of this file).
 inline std::unique_ptr<Bench_mesh> build_mesh(std::size_t target_faces)
 {
@@ -319,17 +348,7 @@ inline std::unique_ptr<Bench_mesh> build_mesh(std::size_t target_faces)
   } else {
     b->mesh = *base;
     src << base_name(base_mesh_path());
-    int steps = 0;
-    // 3% slack, so that feline (99,732 faces) counts as 100k and one Loop step (398,928) as 400k
-    while(double(num_faces(b->mesh)) < 0.97 * double(target_faces)) {
-      CGAL::Subdivision_method_3::Loop_subdivision(b->mesh, CGAL::parameters::number_of_iterations(1));
-      ++steps;
-    }
-    if(steps > 0) src << " Loop^" << steps;
-    if(double(num_faces(b->mesh)) > 1.10 * double(target_faces)) {
-      decimate(b->mesh, target_faces);
-      src << " decimated";
-    }
+    refine_to_size(b->mesh, target_faces, src);
   }
   describe(*b);
   b->build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

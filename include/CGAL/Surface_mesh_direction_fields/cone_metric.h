@@ -186,6 +186,7 @@ Cone_metric_status compute_cone_metric(const TriangleMesh& tm,
     throw Input_error(Input_error::INVALID_ARGUMENT, "number_of_iterations must be non-negative");
   auto visitor = choose_parameter(get_parameter(np, CGAL::internal_np::visitor),
                                   internal::No_cone_metric_visitor());
+  const bool allow_flips = choose_parameter(get_parameter(np, internal_np::intrinsic_edge_flips), true);
 
   internal::Mesh_arrays<TriangleMesh> m(tm, np);
   internal::Topology_arrays topo(m);
@@ -286,7 +287,7 @@ Cone_metric_status compute_cone_metric(const TriangleMesh& tm,
         holed, ht, out,
         parameters::edge_length_map(hl).conformal_factor_map(hu).number_of_iterations(max_iterations)
             .curvature_tolerance(tol).visitor(visitor)
-            .intrinsic_edge_flips(choose_parameter(get_parameter(np, internal_np::intrinsic_edge_flips), true)));
+            .intrinsic_edge_flips(allow_flips));
     // back to the input: spokes of the holes and flipped-away edges have no length
     std::map<std::pair<int, int>, double> result;
     for(typename Holed::Edge_index e : edges(holed))
@@ -307,8 +308,8 @@ Cone_metric_status compute_cone_metric(const TriangleMesh& tm,
   }
 
   // --- Newton, first on the input triangulation, then (if needed) with intrinsic flips
-  const bool allow_flips = choose_parameter(get_parameter(np, internal_np::intrinsic_edge_flips), true);
-  internal::Vertex_scaling_flow<TriangleMesh> flow(m, topo);
+  typedef internal::Vertex_scaling_flow<TriangleMesh> Flow;
+  Flow flow(m, topo);
   std::vector<double> u(nv, 0.), len;
   // With flips available, the input triangulation is abandoned after a step cut to t <= 1/8 by
   // degenerating triangles, 2 consecutive steps cut to t <= 1/4, or 3 cut steps without 10%
@@ -317,10 +318,10 @@ Cone_metric_status compute_cone_metric(const TriangleMesh& tm,
   // Delaunay flow then converges in 5 full steps; steps cut to t = 1/2 usually still converge
   // on the input triangulation (armadillo, 52k faces, 7 iterations).
   internal::Vertex_scaling_result r =
-      flow.run(target, u, len, max_iterations, tol, visitor, false, allow_flips ? -3 : 10);
+      flow.run(target, u, len, max_iterations, tol, visitor, allow_flips ? Flow::FIXED_BEFORE_FLIPS : Flow::FIXED);
   if(!r.converged && allow_flips && r.iterations < max_iterations) {
     internal::Vertex_scaling_result r2 =
-        flow.run(target, u, len, max_iterations - r.iterations, tol, visitor, true, 0, r.iterations);
+        flow.run(target, u, len, max_iterations - r.iterations, tol, visitor, Flow::FLIPS, r.iterations);
     r2.iterations += r.iterations;
     r = r2;
   }

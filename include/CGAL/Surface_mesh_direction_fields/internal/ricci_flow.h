@@ -194,17 +194,22 @@ public:
     return true;
   }
 
-  std::size_t flips() const { return flips_; }
+  enum Mode {
+    FIXED,               // input triangulation; give up after 10 consecutive Newton steps shortened
+                         // to keep triangles valid without a 10% decrease of the error
+    FIXED_BEFORE_FLIPS,  // the same, but after 3 such steps, or as soon as two consecutive steps
+                         // were cut to t <= 1/4 or one to t <= 1/8 (flips will take over)
+    FLIPS                // intrinsic Delaunay triangulation
+  };
 
-  // u: in/out conformal factors (start value on input); len: output lengths.
-  // `stall_window` w: give up when |w| consecutive Newton steps had to be shortened to keep the
-  // (fixed) triangulation valid without a 10% decrease of the error; if w < 0, also when two
-  // consecutive steps were cut to t <= 1/4 or one to t <= 1/8 (flips will take over).
+  // u: in/out conformal factors (start value on input); len: output lengths; first_iteration:
+  // iterations done by an earlier run (numbering of the callback and messages).
   template <typename Callback>
   Vertex_scaling_result run(const std::vector<double>& target, std::vector<double>& u,
                             std::vector<double>& len, int max_iterations, double tol,
-                            Callback& callback, bool flip, int stall_window = 10, int first_iteration = 0)
+                            Callback& callback, Mode mode, int first_iteration = 0)
   {
+    const bool flip = mode == FLIPS;
     Vertex_scaling_result res;
     std::vector<double> ang, k, u_try, len_try, ang_try, k_try;
     int bad = -1;
@@ -329,16 +334,17 @@ public:
       err_history.push_back(err);
       cut_streak = any_invalid ? cut_streak + 1 : 0;
       small_cut_streak = (any_invalid && t <= 0.25) ? small_cut_streak + 1 : 0;
-      const int w = std::abs(stall_window);
-      if(!flip && err > tol && stall_window != 0 &&
-         ((cut_streak >= w && err > 0.9 * err_history[err_history.size() - 1 - w]) ||
-          (stall_window < 0 && (small_cut_streak >= 2 || (any_invalid && t <= 0.125))))) {
+      const int w = mode == FIXED ? 10 : 3;
+      const bool stalled = cut_streak >= w && err > 0.9 * err_history[err_history.size() - 1 - w];
+      const bool collapsing = mode == FIXED_BEFORE_FLIPS && (small_cut_streak >= 2 || (any_invalid && t <= 0.125));
+      if(!flip && err > tol && (stalled || collapsing)) {
         std::ostringstream os;
         os.precision(3);
-        os << "stopped after iteration " << first_iteration + it << ": for " << w
-           << " iterations every Newton step had to be shortened to keep the triangles valid (face "
-           << cut_face << " degenerates) and the curvature error only went from "
-           << err_history[err_history.size() - 1 - w] << " to " << err
+        os << "stopped after iteration " << first_iteration + it << ": " << cut_streak
+           << " consecutive Newton steps had to be shortened to keep the triangles valid (face "
+           << cut_face << " degenerates, last step " << t << ") and the curvature error (relative to the"
+           << " cone angle where it exceeds 2 pi) only went from "
+           << err_history[err_history.size() - 1 - (std::min)(cut_streak, it)] << " to " << err
            << "; the fixed triangulation cannot carry the target metric";
         res.message = os.str();
         break;
