@@ -177,6 +177,28 @@ def test_torus(smdf, c, torus, tmp):
         for k, v in expected.items():
             c.check(info.get(k) == v, "torus info %s = %r (got %r)" % (k, v, info.get(k)))
 
+    # the same torus as ASCII PLY and as OBJ: same counts, same vertex and face order
+    ply, obj = os.path.join(tmp, "torus.ply"), os.path.join(tmp, "torus.obj")
+    with open(ply, "w") as f:
+        f.write("ply\nformat ascii 1.0\nelement vertex %d\nproperty double x\nproperty double y\n"
+                "property double z\nelement face %d\nproperty list uchar int vertex_indices\nend_header\n"
+                % (len(verts), len(faces)))
+        f.writelines("%r %r %r\n" % tuple(p) for p in verts)
+        f.writelines("3 %d %d %d\n" % tuple(t) for t in faces)
+    with open(obj, "w") as f:
+        f.writelines("v %r %r %r\n" % tuple(p) for p in verts)
+        f.writelines("f %d %d %d\n" % tuple(i + 1 for i in t) for t in faces)
+    for path in (ply, obj):
+        other = smdf.json(["info", path])
+        c.check(info is not None and other is not None and
+                all(other.get(k) == info.get(k) for k in ("vertices", "edges", "faces", "genus", "betti_1")),
+                "smdf info reads %s with the counts of the OFF file" % os.path.basename(path))
+        hol_a, hol_b = smdf.json(["holonomy", torus]), smdf.json(["holonomy", path])
+        c.check(hol_a is not None and hol_b is not None and
+                [g["levi_civita_holonomy"] for g in hol_a.get("generators", [])] ==
+                [g["levi_civita_holonomy"] for g in hol_b.get("generators", [])],
+                "smdf holonomy on %s equals that on the OFF file (same vertex and face order)" % os.path.basename(path))
+
     # generators
     gens = smdf.json(["generators", torus])
     if gens:
