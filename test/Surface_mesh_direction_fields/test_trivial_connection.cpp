@@ -10,7 +10,10 @@
 
 #include <CGAL/Surface_mesh_direction_fields.h>
 
+#include <Eigen/SparseCholesky>
+
 #include <algorithm>
+#include <random>
 #include <memory>
 #include <map>
 #include <set>
@@ -310,6 +313,73 @@ struct Tests
   }
 };
 
+// The two-thread factorisation (internal/two_domain_cholesky.h) against Eigen's LDL^T on SPD
+// matrices with the structure it must handle: a periodic grid (one component, level-set
+// separator), two grids (components split without separator), and dense rows that join the
+// separator; refactor() with new values and a matrix that is not positive definite.
+void two_domain_solver()
+{
+  namespace SI = SMDF::internal;
+  typedef Eigen::Triplet<double> T;
+  auto grid = [](int nx, int ny, int offset, double shift, std::vector<T>& t) {
+    for(int i = 0; i < nx; ++i)
+      for(int j = 0; j < ny; ++j) {
+        const int v = offset + i * ny + j, right = offset + ((i + 1) % nx) * ny + j, up = offset + i * ny + (j + 1) % ny;
+        const double w1 = 1 + 0.5 * std::sin(0.3 * v), w2 = 1 + 0.5 * std::cos(0.7 * v);
+        for(auto e : {std::make_pair(right, w1), std::make_pair(up, w2)}) {
+          t.emplace_back(v, v, e.second); t.emplace_back(e.first, e.first, e.second);
+          t.emplace_back((std::max)(v, e.first), (std::min)(v, e.first), -e.second);
+        }
+        t.emplace_back(v, v, shift);
+      }
+  };
+  std::mt19937 rng(7);
+  for(int variant = 0; variant < 3; ++variant) {
+    std::vector<T> t;
+    int n = 0;
+    grid(90, 60, 0, 1e-3, t);
+    n = 5400;
+    if(variant == 1) { grid(60, 90, n, 1e-2, t); n += 5400; }
+    if(variant == 2) {
+      for(int r = 0; r < 3; ++r, ++n)   // dense rows
+        for(int k = 0; k < 300; ++k) {
+          const int v = int(rng() % 5400);
+          t.emplace_back(n, v, -0.01); t.emplace_back(v, v, 0.01); t.emplace_back(n, n, 0.011);
+        }
+    }
+    SI::Sparse_matrix_int L(n, n);
+    L.setFromTriplets(t.begin(), t.end());
+    L.makeCompressed();
+    Eigen::VectorXd b(n);
+    for(int i = 0; i < n; ++i) b[i] = std::sin(1.3 * i) + 0.1;
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> ref(L.cast<double>());
+    for(int pass = 0; pass < 2; ++pass) {
+      SI::Cholmod_factor f;
+      std::string msg;
+      SMDF_CHECK(f.factor(L, msg));
+      SMDF_CHECK(f.separator_size() >= 0);   // the two-domain path was taken
+      if(variant == 1) SMDF_CHECK(f.separator_size() == 0);
+      const Eigen::VectorXd x = f.solve(b), xr = ref.solve(b);
+      const Eigen::VectorXd r = L.selfadjointView<Eigen::Lower>() * x - b;
+      SMDF_CHECK_MSG((x - xr).norm() <= 1e-9 * xr.norm(), "variant " << variant << ": |x - x_ref| / |x_ref| = " << (x - xr).norm() / xr.norm());
+      SMDF_CHECK_MSG(r.norm() <= 1e-10 * b.norm(), "variant " << variant << ": residual " << r.norm());
+      // same pattern, new values
+      SI::Sparse_matrix_int L2 = L * 2.0;
+      SMDF_CHECK(f.refactor(L2, msg));
+      SMDF_CHECK((f.solve(b) - 0.5 * xr).norm() <= 1e-9 * xr.norm());
+      // not positive definite: reported, not a crash
+      SI::Sparse_matrix_int L3 = L;
+      L3.coeffRef(n - 1, n - 1) = -1;
+      SI::Cholmod_factor g;
+      std::string msg3;
+      SMDF_CHECK(!g.factor(L3, msg3) && msg3.find("not positive definite") != std::string::npos);
+      L = L2;
+      b *= 2.0;
+      ref.compute(L.cast<double>());
+    }
+  }
+}
+
 // Several components (a torus and an open cylinder side by side): indices are checked per
 // closed component, and the one-call function with its named parameters.
 void multiple_components()
@@ -354,6 +424,7 @@ void multiple_components()
 
 int main()
 {
+  two_domain_solver();
   multiple_components();
   Tests<Surface_mesh> ts;
   Tests<Polyhedron> tp;

@@ -370,21 +370,25 @@ Cone_metric_status compute_cone_metric(const TriangleMesh& tm,
   } else {
     // Correspondence: an edge is an input edge if it joins the same vertices with the same
     // Penner coordinate (a flipped-back edge has exactly its old one: Ptolemy is an involution).
-    std::unordered_map<long long, std::vector<int>> by_ends;
+    // (input edges sorted by their end points: a hash map of vectors cost 0.4 s at 433k faces)
     auto key = [nv](int a, int b) { return (long long)(std::min)(a, b) * (long long)nv + (std::max)(a, b); };
+    std::vector<std::pair<long long, int>> by_ends(m.number_of_edges());
     for(std::size_t e = 0; e < m.number_of_edges(); ++e)
-      by_ends[key(m.target[2 * e], m.target[2 * e + 1])].push_back(int(e));
+      by_ends[e] = std::make_pair(key(m.target[2 * e], m.target[2 * e + 1]), int(e));
+    std::sort(by_ends.begin(), by_ends.end());
     std::vector<long> input_edge(m.number_of_edges(), -1);
     std::vector<double> out(m.number_of_edges(), std::numeric_limits<double>::quiet_NaN());
     for(std::size_t e = 0; e < m.number_of_edges(); ++e) {
-      auto found = by_ends.find(key(tri.target[2 * e], tri.target[2 * e + 1]));
-      if(found == by_ends.end()) continue;
-      for(int i : found->second)
+      const long long k = key(tri.target[2 * e], tri.target[2 * e + 1]);
+      for(auto it = std::lower_bound(by_ends.begin(), by_ends.end(), std::make_pair(k, -1));
+          it != by_ends.end() && it->first == k; ++it) {
+        const int i = it->second;
         if(std::abs(flow.base_lengths()[e] - m.length[i]) <= 1e-12 * m.length[i]) {
           input_edge[e] = i;
           out[i] = len[e];
           break;
         }
+      }
     }
     for(std::size_t e = 0; e < m.number_of_edges(); ++e) put(output_lengths, m.edges[e], out[e]);
     st.intrinsic_triangulation = Intrinsic_triangulation(nv, tri.next, tri.target, tri.face, tri.face_halfedge,

@@ -296,12 +296,16 @@ public:
       build_system();
       if(solver_kind_ == CHOLMOD_NORMAL_EQUATIONS) {
         Sparse_matrix_int L = normal_matrix();
-        // Rows in vertex_order_ with the few generator and constraint rows last are as good as
+        // Rows in vertex_split_.order with the few generator and constraint rows last are as good as
         // CHOLMOD's AMD on the whole matrix (400k faces: 1.29e9 vs 1.24e9 flops); many
         // constraint rows would fill in as a dense block there, so CHOLMOD orders those systems.
+        // The same holds for the two-domain split (the vertex graph's domains, then its
+        // separator and the extra rows), factored on two threads.
         const bool ordered = vertex_order_is_amd_ && rows_ - first_generator_row_ <= 32;
+        const bool split = ordered && vertex_split_.is_split();
         if(!chol_.factor(L, st.message, ordered ? internal::Cholmod_factor::PRESERVE_ORDERING
-                                                : internal::Cholmod_factor::CHOLMOD_ORDERING))
+                                                : internal::Cholmod_factor::CHOLMOD_ORDERING,
+                         split ? domain_rows_[0] : 0, split ? domain_rows_[1] : 0, true))
           return st;
         prepare_guides();
       }
@@ -513,7 +517,22 @@ private:
     col_begin[nv] = k;
     rows.resize(std::size_t(k));
     vertex_order_future_ = std::async(std::launch::async,
-        [nv](std::vector<int> cb, std::vector<int> r) { return internal::amd_ordering(nv, cb, r); },
+        [nv](std::vector<int> cb, std::vector<int> r) {
+          internal::Two_domain_ordering o;
+          if(nv < internal::Cholmod_factor::two_domain_min_rows) {
+            o.order = internal::amd_ordering(nv, cb, r);
+            return o;
+          }
+          // symmetric adjacency for the split (the pattern above is the strict lower triangle)
+          std::vector<int> adj_begin(std::size_t(nv) + 1, 0), adj(2 * r.size());
+          for(int v = 0; v < nv; ++v)
+            for(int p = cb[v]; p < cb[v + 1]; ++p) { ++adj_begin[std::size_t(v) + 1]; ++adj_begin[std::size_t(r[p]) + 1]; }
+          for(int v = 0; v < nv; ++v) adj_begin[v + 1] += adj_begin[v];
+          std::vector<int> fill(adj_begin.begin(), adj_begin.end() - 1);
+          for(int v = 0; v < nv; ++v)
+            for(int p = cb[v]; p < cb[v + 1]; ++p) { adj[fill[v]++] = r[p]; adj[fill[r[p]]++] = v; }
+          return internal::two_domain_ordering(nv, adj_begin, adj, (std::numeric_limits<int>::max)());
+        },
         std::move(col_begin), std::move(rows));
   }
 
@@ -565,15 +584,23 @@ private:
     }
     // vertex rows numbered in the fill-reducing order when there is one
     if(vertex_order_future_.valid()) {
-      vertex_order_ = vertex_order_future_.get();
-      vertex_order_is_amd_ = vertex_order_.size() == m_.number_of_vertices();
+      vertex_split_ = vertex_order_future_.get();
+      vertex_order_is_amd_ = vertex_split_.order.size() == m_.number_of_vertices();
     }
-    if(vertex_order_.size() != m_.number_of_vertices()) {
-      vertex_order_.resize(m_.number_of_vertices());
-      std::iota(vertex_order_.begin(), vertex_order_.end(), 0);
+    if(vertex_split_.order.size() != m_.number_of_vertices()) {
+      vertex_split_ = internal::Two_domain_ordering();
+      vertex_split_.order.resize(m_.number_of_vertices());
+      std::iota(vertex_split_.order.begin(), vertex_split_.order.end(), 0);
     }
+    // rows of the two domains of the split (the separator rows and all others follow them)
+    domain_rows_[0] = domain_rows_[1] = 0;
     int r = 0;
-    for(int v : vertex_order_) if(has_row[v]) row_of_vertex_[v] = r++;
+    for(std::size_t k = 0; k < vertex_split_.order.size(); ++k) {
+      const int v = vertex_split_.order[k];
+      if(has_row[v]) row_of_vertex_[v] = r++;
+      if(k + 1 == std::size_t(vertex_split_.n1)) domain_rows_[0] = r;
+      if(k + 1 == std::size_t(vertex_split_.n1 + vertex_split_.n2)) domain_rows_[1] = r - domain_rows_[0];
+    }
     // sparse rows beyond the vertex rows: (column, row, value)
     struct Entry { int col, row; double value; };
     std::vector<Entry> extra;
@@ -958,8 +985,9 @@ private:
   Sparse_matrix_int A_;
   Eigen::Index rows_ = 0, first_generator_row_ = 0, first_constraint_row_ = 0;
   internal::Cholmod_factor chol_;
-  std::future<std::vector<int>> vertex_order_future_;
-  std::vector<int> vertex_order_;   // order of the vertex rows
+  std::future<internal::Two_domain_ordering> vertex_order_future_;
+  internal::Two_domain_ordering vertex_split_;   // order of the vertex rows
+  int domain_rows_[2] = {0, 0};                  // rows in the two domains of vertex_split_
   bool vertex_order_is_amd_ = false;
   bool factored_ = false, solved_ = false;
 

@@ -10,6 +10,8 @@
 
 #include <SuiteSparseQR.hpp>
 
+#include <CGAL/Surface_mesh_direction_fields/internal/two_domain_cholesky.h>
+
 #include <memory>
 #include <string>
 #include <vector>
@@ -19,7 +21,6 @@ namespace Surface_mesh_direction_fields {
 namespace internal {
 
 typedef Eigen::SparseMatrix<double, Eigen::ColMajor, SuiteSparse_long> Sparse_matrix;
-typedef Eigen::SparseMatrix<double, Eigen::ColMajor, int> Sparse_matrix_int;
 
 // Sparse Cholesky factorisation of a symmetric positive definite matrix kept for repeated
 // solves. CHOLMOD and not SPQR: the normal-equation matrix of the trivial-connection system is a
@@ -45,11 +46,48 @@ public:
     PRESERVE_ORDERING   ///< the rows are already in a fill-reducing order
   };
 
+  // Matrices with at least this many rows are factored on two threads when a small separator
+  // is found (Two_domain_cholesky). The tests lower it to run that path on small meshes.
+#ifdef CGAL_SMDF_TWO_DOMAIN_MIN_ROWS
+  static constexpr int two_domain_min_rows = CGAL_SMDF_TWO_DOMAIN_MIN_ROWS;
+#else
+  static constexpr int two_domain_min_rows = 100000;
+#endif
+  // Largest separator accepted: its dense Schur complement costs |S|^3 / 3 flops and 8 |S|^2 bytes.
+  static constexpr int max_separator = 2500;
+
   Cholmod_factor() { solver_.reset(new Solver()); }
 
   // Analyses the pattern and factors; returns false (with a message) if not positive definite.
-  bool factor(const Sparse_matrix_int& lower, std::string& message, Ordering ordering = CHOLMOD_ORDERING)
+  // With PRESERVE_ORDERING, n1 > 0 and n2 > 0 say that the rows are ordered as two domains of
+  // n1 and n2 rows that share no entry, followed by their separator. solve_often: the factor
+  // will serve many solves and few or no refactor() calls (it may then be stored differently).
+  bool factor(const Sparse_matrix_int& lower, std::string& message, Ordering ordering = CHOLMOD_ORDERING,
+              int n1 = 0, int n2 = 0, bool solve_often = false)
   {
+    two_domain_.reset();
+    const int n = int(lower.rows());
+    Two_domain_ordering split;
+    if(ordering == PRESERVE_ORDERING && n1 > 0 && n2 > 0) {
+      split.order.resize(std::size_t(n));
+      for(int i = 0; i < n; ++i) split.order[i] = i;
+      split.n1 = n1;
+      split.n2 = n2;
+    } else if(ordering == CHOLMOD_ORDERING && n >= two_domain_min_rows) {
+      std::vector<int> adj_begin, adj;
+      adjacency_of_lower(lower, adj_begin, adj);
+      split = two_domain_ordering(n, adj_begin, adj, 64);
+    }
+    if(split.is_split() && n - split.n1 - split.n2 <= max_separator) {
+      std::unique_ptr<Two_domain_cholesky> td(new Two_domain_cholesky());
+      std::string why;
+      if(td->factor(lower, split, why, solve_often)) {
+        solver_.reset();
+        two_domain_ = std::move(td);
+        return true;
+      }
+      if(why.compare(0, 9, "internal:") != 0) { message = why; return false; }
+    }
     solver_.reset(new Solver());
     solver_->setMode(lower.rows() < 300000 ? Eigen::CholmodSimplicialLLt : Eigen::CholmodSupernodalLLt);
     if(ordering == PRESERVE_ORDERING) {
@@ -57,12 +95,17 @@ public:
       solver_->cholmod().method[0].ordering = CHOLMOD_NATURAL;
       solver_->cholmod().postorder = 1;
     }
-    solver_->analyzePattern(lower);
+    {
+      Single_thread_openmp_scope one_openmp_thread;
+      solver_->analyzePattern(lower);
+    }
     return refactor(lower, message);
   }
   // Numeric factorisation with the previous analysis (same pattern).
   bool refactor(const Sparse_matrix_int& lower, std::string& message)
   {
+    if(two_domain_) return two_domain_->refactor(lower, message);
+    Single_thread_openmp_scope one_openmp_thread;
     solver_->factorize(lower);
     if(solver_->info() != Eigen::Success) {
       message = "CHOLMOD could not factor the normal equations (matrix not positive definite)";
@@ -70,42 +113,18 @@ public:
     }
     return true;
   }
-  Eigen::VectorXd solve(const Eigen::VectorXd& b) const { return solver_->solve(b); }
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) const
+  {
+    return two_domain_ ? two_domain_->solve(b) : Eigen::VectorXd(solver_->solve(b));
+  }
+  // Rows of the separator when the last factorisation used two threads, -1 otherwise.
+  int separator_size() const { return two_domain_ ? two_domain_->separator_size() : -1; }
 
 private:
   typedef Eigen::CholmodDecomposition<Sparse_matrix_int, Eigen::Lower> Solver;
   std::unique_ptr<Solver> solver_;
+  std::unique_ptr<Two_domain_cholesky> two_domain_;
 };
-
-// AMD fill-reducing ordering of the symmetric pattern with n nodes whose strictly lower
-// triangle is given in compressed columns (col_begin of size n + 1, sorted rows without
-// duplicates): order[k] is the node eliminated k-th. Empty if CHOLMOD fails. Used to order the
-// vertex rows of a mesh Laplacian before the rest of the system exists (it only needs the
-// connectivity), so that the ordering can run concurrently with the assembly.
-inline std::vector<int> amd_ordering(int n, std::vector<int>& col_begin, std::vector<int>& rows)
-{
-  std::vector<int> order(std::size_t(n), 0);
-  if(n == 0) return order;
-  cholmod_common cc;
-  cholmod_start(&cc);
-  cholmod_sparse A;
-  A.nrow = A.ncol = std::size_t(n);
-  A.nzmax = rows.size();
-  A.p = col_begin.data();
-  A.i = rows.data();
-  A.nz = nullptr;
-  A.x = A.z = nullptr;
-  A.stype = -1;
-  A.itype = CHOLMOD_INT;
-  A.xtype = CHOLMOD_PATTERN;
-  A.dtype = CHOLMOD_DOUBLE;
-  A.sorted = 1;
-  A.packed = 1;
-  const bool ok = cholmod_amd(&A, nullptr, 0, order.data(), &cc) && cc.status == CHOLMOD_OK;
-  cholmod_finish(&cc);
-  if(!ok) order.clear();
-  return order;
-}
 
 // Minimum 2-norm solution of an underdetermined system M y = r by SuiteSparseQR
 // (SuiteSparseQR_min2norm: QR of M^T). This is the reference path, used to validate the

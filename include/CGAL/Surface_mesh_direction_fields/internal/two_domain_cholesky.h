@@ -1,0 +1,719 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_TWO_DOMAIN_CHOLESKY_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_TWO_DOMAIN_CHOLESKY_H
+
+// Sparse Cholesky factorisation on two threads by one level of nested dissection: the
+// unknowns are split into two domains D1, D2 that do not touch and a separator S,
+//
+//       [ A11   0   A1s ]
+//   A = [  0   A22  A2s ]
+//       [ As1  As2  Ass ],
+//
+// and the two principal submatrices M_i = [Aii Ais; Asi Ass] are factored concurrently by
+// CHOLMOD with S ordered last. The trailing block of each factor is the Cholesky factor of
+// S_i = Ass - Asi Aii^-1 Ais, so the Schur complement of the whole matrix is
+// S = S_1 + S_2 - Ass (dense, |S| x |S|, a few thousand at most on a mesh), factored with
+// LAPACK. Solves run the two triangular solves of each M_i on its own thread.
+//
+// Why: CHOLMOD 3's numeric factorisation of a mesh Laplacian is sequential (its supernodes are
+// too small for threaded BLAS to help), and the machines this package targets have 2 cores.
+
+#include <cholmod.h>
+
+#include <Eigen/Dense>
+#include <Eigen/SparseCore>
+
+#include <algorithm>
+#include <cmath>
+#include <future>
+#include <limits>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+// Dense BLAS/LAPACK kernels (the libraries CHOLMOD links). Declared under local names bound to
+// the Fortran symbols so that they cannot clash with other declarations of dsyrk_ and friends.
+#if defined(__GNUC__) && !defined(CGAL_SMDF_NO_DIRECT_BLAS)
+#define CGAL_SMDF_DIRECT_BLAS 1
+extern "C" {
+void cgal_smdf_dsyrk(const char* uplo, const char* trans, const int* n, const int* k, const double* alpha,
+                     const double* a, const int* lda, const double* beta, double* c, const int* ldc) __asm__("dsyrk_");
+void cgal_smdf_dpotrf(const char* uplo, const int* n, double* a, const int* lda, int* info) __asm__("dpotrf_");
+void cgal_smdf_dtrmv(const char* uplo, const char* trans, const char* diag, const int* n, const double* a,
+                     const int* lda, double* x, const int* incx) __asm__("dtrmv_");
+void cgal_smdf_dtrsv(const char* uplo, const char* trans, const char* diag, const int* n, const double* a,
+                     const int* lda, double* x, const int* incx) __asm__("dtrsv_");
+}
+#endif
+
+#if defined(__unix__) || defined(__APPLE__)
+#include <dlfcn.h>
+#define CGAL_SMDF_HAS_DLSYM 1
+#endif
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+namespace internal {
+
+// CHOLMOD 3 (SuiteSparse 5) runs the assembly loops of large supernodes in OpenMP regions of a
+// hard-coded 4 threads; next to our own factorisation threads that oversubscribed the 2 cores of
+// the target machine (433k faces: 1.2 s instead of 0.25 s per half). While alive, this guard
+// limits the OpenMP regions started by the calling thread to one thread, through the per-thread
+// ICVs dyn-var and nthreads-var (with dynamic adjustment on, libgomp caps a region at
+// nthreads-var threads), and restores them on exit. The OpenMP runtime is looked up at run time:
+// it is present only when CHOLMOD was built with OpenMP, and then nothing needs to be linked.
+class Single_thread_openmp_scope
+{
+public:
+  Single_thread_openmp_scope()
+  {
+    const Api& api = get_api();
+    if(!api.ok) return;
+    active_ = true;
+    dynamic_ = api.get_dynamic();
+    threads_ = api.get_max_threads();
+    api.set_dynamic(1);
+    api.set_num_threads(1);
+  }
+  ~Single_thread_openmp_scope()
+  {
+    if(!active_) return;
+    const Api& api = get_api();
+    api.set_dynamic(dynamic_);
+    api.set_num_threads(threads_);
+  }
+  Single_thread_openmp_scope(const Single_thread_openmp_scope&) = delete;
+  Single_thread_openmp_scope& operator=(const Single_thread_openmp_scope&) = delete;
+
+private:
+  struct Api
+  {
+    typedef void (*Setter)(int);
+    typedef int (*Getter)();
+    Setter set_dynamic = nullptr, set_num_threads = nullptr;
+    Getter get_dynamic = nullptr, get_max_threads = nullptr;
+    bool ok = false;
+  };
+  static const Api& get_api()
+  {
+    static const Api api = [] {
+      Api a;
+#ifdef CGAL_SMDF_HAS_DLSYM
+      a.set_dynamic = reinterpret_cast<Api::Setter>(dlsym(RTLD_DEFAULT, "omp_set_dynamic"));
+      a.set_num_threads = reinterpret_cast<Api::Setter>(dlsym(RTLD_DEFAULT, "omp_set_num_threads"));
+      a.get_dynamic = reinterpret_cast<Api::Getter>(dlsym(RTLD_DEFAULT, "omp_get_dynamic"));
+      a.get_max_threads = reinterpret_cast<Api::Getter>(dlsym(RTLD_DEFAULT, "omp_get_max_threads"));
+      a.ok = a.set_dynamic && a.set_num_threads && a.get_dynamic && a.get_max_threads;
+#endif
+      return a;
+    }();
+    return api;
+  }
+  bool active_ = false;
+  int dynamic_ = 0, threads_ = 1;
+};
+
+typedef Eigen::SparseMatrix<double, Eigen::ColMajor, int> Sparse_matrix_int;
+
+// AMD fill-reducing ordering of the symmetric pattern with n nodes whose strictly lower
+// triangle is given in compressed columns (col_begin of size n + 1, sorted rows without
+// duplicates): order[k] is the node eliminated k-th. Empty if CHOLMOD fails. Used to order the
+// vertex rows of a mesh Laplacian before the rest of the system exists (it only needs the
+// connectivity), so that the ordering can run concurrently with the assembly.
+inline std::vector<int> amd_ordering(int n, std::vector<int>& col_begin, std::vector<int>& rows)
+{
+  std::vector<int> order(std::size_t(n), 0);
+  if(n == 0) return order;
+  cholmod_common cc;
+  cholmod_start(&cc);
+  cholmod_sparse A;
+  A.nrow = A.ncol = std::size_t(n);
+  A.nzmax = rows.size();
+  A.p = col_begin.data();
+  A.i = rows.data();
+  A.nz = nullptr;
+  A.x = A.z = nullptr;
+  A.stype = -1;
+  A.itype = CHOLMOD_INT;
+  A.xtype = CHOLMOD_PATTERN;
+  A.dtype = CHOLMOD_DOUBLE;
+  A.sorted = 1;
+  A.packed = 1;
+  const bool ok = cholmod_amd(&A, nullptr, 0, order.data(), &cc) && cc.status == CHOLMOD_OK;
+  cholmod_finish(&cc);
+  if(!ok) order.clear();
+  return order;
+}
+
+// Column-major dense lower-triangular kernels on n x n arrays.
+namespace dense {
+
+typedef Eigen::Map<Eigen::MatrixXd> Matrix_map;
+typedef Eigen::Map<const Eigen::MatrixXd> Const_matrix_map;
+
+// lower(C) = L L^T, L lower triangular (its upper part must be zero)
+inline void lower_times_transpose(int n, const double* L, double* C)
+{
+  if(n == 0) return;
+#ifdef CGAL_SMDF_DIRECT_BLAS
+  const double one = 1, zero = 0;
+  cgal_smdf_dsyrk("L", "N", &n, &n, &one, L, &n, &zero, C, &n);
+#else
+  Matrix_map c(C, n, n);
+  c.setZero();
+  c.selfadjointView<Eigen::Lower>().rankUpdate(Const_matrix_map(L, n, n));
+#endif
+}
+
+// Cholesky factor in place (lower); false if not positive definite
+inline bool cholesky(int n, double* C)
+{
+  if(n == 0) return true;
+#ifdef CGAL_SMDF_DIRECT_BLAS
+  int info = 0;
+  cgal_smdf_dpotrf("L", &n, C, &n, &info);
+  return info == 0;
+#else
+  Matrix_map c(C, n, n);
+  Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> llt(c);
+  return llt.info() == Eigen::Success;
+#endif
+}
+
+// x = L x (transpose = false) or x = L^T x
+inline void triangular_multiply(int n, const double* L, double* x, bool transpose)
+{
+  if(n == 0) return;
+#ifdef CGAL_SMDF_DIRECT_BLAS
+  const int one = 1;
+  cgal_smdf_dtrmv("L", transpose ? "T" : "N", "N", &n, L, &n, x, &one);
+#else
+  Eigen::Map<Eigen::VectorXd> v(x, n);
+  Const_matrix_map l(L, n, n);
+  const Eigen::VectorXd r = transpose ? Eigen::VectorXd(l.triangularView<Eigen::Lower>().transpose() * v)
+                                      : Eigen::VectorXd(l.triangularView<Eigen::Lower>() * v);
+  v = r;
+#endif
+}
+
+// x = L^-1 x (transpose = false) or x = L^-T x
+inline void triangular_solve(int n, const double* L, double* x, bool transpose)
+{
+  if(n == 0) return;
+#ifdef CGAL_SMDF_DIRECT_BLAS
+  const int one = 1;
+  cgal_smdf_dtrsv("L", transpose ? "T" : "N", "N", &n, L, &n, x, &one);
+#else
+  Eigen::Map<Eigen::VectorXd> v(x, n);
+  Const_matrix_map l(L, n, n);
+  if(transpose) l.triangularView<Eigen::Lower>().transpose().solveInPlace(v);
+  else l.triangularView<Eigen::Lower>().solveInPlace(v);
+#endif
+}
+
+} // namespace dense
+
+// The split: order[k] is the unknown eliminated k-th, the n1 unknowns of D1 first, then the n2
+// of D2, then the separator. n1 = n2 = 0 when no useful split was found (order is then a plain
+// fill-reducing order of the whole graph).
+struct Two_domain_ordering
+{
+  std::vector<int> order;
+  int n1 = 0, n2 = 0;
+  bool is_split() const { return n1 > 0 && n2 > 0; }
+};
+
+// Splits the graph of a symmetric matrix (adjacency in compressed rows, both directions, no self
+// loops) by a level set of a breadth-first search from a pseudo-peripheral node, chosen as the
+// smallest level that leaves at least 35% of the nodes on each side, then thinned (a separator
+// node with no neighbour on one side moves to the other). Nodes of degree above dense_degree
+// (generator rows, constraint rows) join the separator; components other than the largest go
+// to the smaller domain. Each domain is then ordered by AMD, the two concurrently. No split
+// (AMD on the whole graph) when the largest component is too small or no level qualifies.
+inline Two_domain_ordering two_domain_ordering(int n, const std::vector<int>& adj_begin,
+                                               const std::vector<int>& adj, int dense_degree)
+{
+  enum { D1 = 0, D2 = 1, SEP = 2, NONE = 3 };
+  Two_domain_ordering result;
+  std::vector<char> part(static_cast<std::size_t>(n), static_cast<char>(NONE));
+  auto degree = [&](int v) { return adj_begin[v + 1] - adj_begin[v]; };
+  int n_dense = 0;
+  for(int v = 0; v < n; ++v) if(degree(v) > dense_degree) { part[v] = SEP; ++n_dense; }
+
+  // breadth-first levels from `root` over non-dense nodes; returns the nodes in visiting order
+  std::vector<int> level(std::size_t(n), -1), queue;
+  queue.reserve(std::size_t(n));
+  auto bfs = [&](int root, std::vector<int>& visited) {
+    visited.clear();
+    level[root] = 0;
+    visited.push_back(root);
+    for(std::size_t q = 0; q < visited.size(); ++q) {
+      const int v = visited[q];
+      for(int p = adj_begin[v]; p < adj_begin[v + 1]; ++p) {
+        const int w = adj[p];
+        if(part[w] == SEP || level[w] >= 0) continue;
+        level[w] = level[v] + 1;
+        visited.push_back(w);
+      }
+    }
+  };
+  // components: find the largest
+  std::vector<int> component(std::size_t(n), -1), comp_size, visited;
+  int largest = -1;
+  for(int v = 0; v < n; ++v) {
+    if(part[v] == SEP || level[v] >= 0) continue;
+    bfs(v, visited);
+    const int c = int(comp_size.size());
+    for(int w : visited) component[w] = c;
+    comp_size.push_back(int(visited.size()));
+    if(largest < 0 || comp_size[c] > comp_size[largest]) largest = c;
+  }
+  const int n_free = n - n_dense;
+  bool split = largest >= 0 && n_free >= 4;
+  if(split && comp_size[largest] * 2 <= n_free) {
+    // several components of similar size: they are independent, so no separator is needed
+    std::vector<int> by_size(comp_size.size());
+    for(std::size_t c = 0; c < by_size.size(); ++c) by_size[c] = int(c);
+    std::sort(by_size.begin(), by_size.end(), [&](int a, int b) { return comp_size[a] > comp_size[b]; });
+    std::vector<char> side(comp_size.size(), 0);
+    long long size[2] = {0, 0};
+    for(int c : by_size) { const int s = size[0] <= size[1] ? 0 : 1; side[c] = char(s); size[s] += comp_size[c]; }
+    for(int v = 0; v < n; ++v) if(part[v] != SEP) part[v] = side[component[v]] ? D2 : D1;
+  } else if(split) {
+    // pseudo-peripheral root: the last node of a search from any node of the component
+    int root = 0;
+    while(component[root] != largest) ++root;
+    for(int v = 0; v < n; ++v) if(component[v] == largest) level[v] = -1;
+    bfs(root, visited);
+    root = visited.back();
+    for(int v : visited) level[v] = -1;
+    bfs(root, visited);
+    const int depth = level[visited.back()] + 1;
+    std::vector<long long> count(std::size_t(depth), 0);
+    for(int v : visited) ++count[std::size_t(level[v])];
+    const long long m = (long long)visited.size();
+    long long before = 0, best_count = -1;
+    int k = -1;
+    for(int l = 0; l < depth; ++l) {
+      const long long after = m - before - count[l];
+      if(10 * (std::min)(before, after) >= 35 * m / 10 && (best_count < 0 || count[l] < best_count)) {
+        best_count = count[l];
+        k = l;
+      }
+      before += count[l];
+    }
+    if(k < 0) {
+      split = false;
+    } else {
+      for(int v : visited) part[v] = level[v] < k ? D1 : level[v] > k ? D2 : SEP;
+      // thinning: a separator node none of whose neighbours lies in D2 can join D1, and the
+      // converse; decided against the current assignment, so D1 and D2 never touch
+      for(int v : visited) {
+        if(level[v] != k) continue;
+        bool touches[2] = {false, false};
+        for(int p = adj_begin[v]; p < adj_begin[v + 1]; ++p) {
+          const int q = part[adj[p]];
+          if(q == D1 || q == D2) touches[q] = true;
+        }
+        if(!touches[D2]) part[v] = D1;
+        else if(!touches[D1]) part[v] = D2;
+      }
+      long long size[2] = {0, 0};
+      for(int v : visited) if(part[v] == D1 || part[v] == D2) ++size[int(part[v])];
+      // the other components, each whole, to the smaller side
+      std::vector<char> side(comp_size.size(), char(NONE));
+      for(int v = 0; v < n; ++v) {
+        if(part[v] != NONE || component[v] < 0) continue;
+        char& s = side[std::size_t(component[v])];
+        if(s == NONE) { s = char(size[0] <= size[1] ? D1 : D2); size[int(s)] += comp_size[std::size_t(component[v])]; }
+        part[v] = s;
+      }
+    }
+  }
+  for(int v = 0; v < n; ++v) if(part[v] == NONE) part[v] = D1;   // isolated nodes
+
+  // AMD within each domain (the whole graph when there is no split), concurrently
+  auto order_part = [&](int which) {
+    std::vector<int> local(std::size_t(n), -1), nodes;
+    for(int v = 0; v < n; ++v) if(!split || part[v] == which) { local[v] = int(nodes.size()); nodes.push_back(v); }
+    const int m = int(nodes.size());
+    std::vector<int> col_begin(std::size_t(m) + 1, 0), rows;
+    for(int j = 0; j < m; ++j) {
+      const int v = nodes[j];
+      for(int p = adj_begin[v]; p < adj_begin[v + 1]; ++p) {
+        const int i = local[adj[p]];
+        if(i > j) rows.push_back(i);
+      }
+      std::sort(rows.begin() + col_begin[j], rows.end());
+      rows.erase(std::unique(rows.begin() + col_begin[j], rows.end()), rows.end());
+      col_begin[j + 1] = int(rows.size());
+    }
+    std::vector<int> o = amd_ordering(m, col_begin, rows);
+    if(int(o.size()) != m) { o.resize(std::size_t(m)); for(int i = 0; i < m; ++i) o[i] = i; }
+    for(int& i : o) i = nodes[i];
+    return o;
+  };
+  if(!split) {
+    result.order = order_part(D1);
+    return result;
+  }
+  auto second = std::async(std::launch::async, order_part, int(D2));
+  std::vector<int> first = order_part(D1);
+  std::vector<int> other = second.get();
+  result.n1 = int(first.size());
+  result.n2 = int(other.size());
+  result.order = std::move(first);
+  result.order.insert(result.order.end(), other.begin(), other.end());
+  for(int v = 0; v < n; ++v) if(part[v] == SEP) result.order.push_back(v);
+  return result;
+}
+
+// Symmetric adjacency (both directions, no diagonal) of the pattern of a lower-triangular matrix.
+inline void adjacency_of_lower(const Sparse_matrix_int& lower, std::vector<int>& adj_begin, std::vector<int>& adj)
+{
+  const int n = int(lower.rows());
+  adj_begin.assign(std::size_t(n) + 1, 0);
+  for(int j = 0; j < n; ++j)
+    for(Sparse_matrix_int::InnerIterator it(lower, j); it; ++it)
+      if(it.row() != j) { ++adj_begin[std::size_t(it.row()) + 1]; ++adj_begin[std::size_t(j) + 1]; }
+  for(int v = 0; v < n; ++v) adj_begin[v + 1] += adj_begin[v];
+  adj.resize(std::size_t(adj_begin[n]));
+  std::vector<int> fill(adj_begin.begin(), adj_begin.end() - 1);
+  for(int j = 0; j < n; ++j)
+    for(Sparse_matrix_int::InnerIterator it(lower, j); it; ++it)
+      if(it.row() != j) { adj[fill[it.row()]++] = j; adj[fill[j]++] = int(it.row()); }
+}
+
+class Two_domain_cholesky
+{
+public:
+  Two_domain_cholesky() = default;
+  Two_domain_cholesky(const Two_domain_cholesky&) = delete;
+  Two_domain_cholesky& operator=(const Two_domain_cholesky&) = delete;
+
+  int separator_size() const { return s_; }
+
+  // Analyses and factors `lower` (lower triangle with the diagonal of an SPD matrix) in the
+  // given split ordering. False with a message if the split is invalid (an entry couples the
+  // two domains) or the matrix is not positive definite. solve_often: many solves will follow
+  // and few or no refactor() calls.
+  bool factor(const Sparse_matrix_int& lower, const Two_domain_ordering& ord, std::string& message,
+              bool solve_often = false)
+  {
+    half_[0].solve_often = half_[1].solve_often = solve_often;
+    n_ = int(lower.rows());
+    n1_ = ord.n1;
+    n2_ = ord.n2;
+    s_ = n_ - n1_ - n2_;
+    pos_.assign(std::size_t(n_), 0);
+    for(int k = 0; k < n_; ++k) pos_[ord.order[k]] = k;
+    half_[0].rows.assign(ord.order.begin(), ord.order.begin() + n1_);
+    half_[1].rows.assign(ord.order.begin() + n1_, ord.order.begin() + n1_ + n2_);
+    sep_rows_.assign(ord.order.begin() + n1_ + n2_, ord.order.end());
+    if(!build_halves(lower, message)) return false;
+    for(Half& h : half_) h.analysed = false;
+    return refactor(lower, message);
+  }
+
+  // Numeric factorisation of a matrix with the pattern of the last factor().
+  bool refactor(const Sparse_matrix_int& lower, std::string& message)
+  {
+    const double* value = lower.valuePtr();
+    const std::size_t nnz = std::size_t(lower.nonZeros());
+    for(int i = 0; i < 2; ++i) {
+      Half& h = half_[i];
+      std::fill(h.x.begin(), h.x.end(), 0.);
+      for(std::size_t k = 0; k < nnz; ++k) if(h.dest[k] >= 0) h.x[std::size_t(h.dest[k])] += value[k];
+    }
+    std::vector<double> ass(std::size_t(s_) * std::size_t(s_), 0.);
+    for(const auto& d : sep_dest_) ass[std::size_t(d.second)] += value[d.first];
+    auto second = std::async(std::launch::async, [this] { return half_[1].factor_and_schur(s_); });
+    std::string m0 = half_[0].factor_and_schur(s_);
+    std::string m1 = second.get();
+    if(!m0.empty() || !m1.empty()) { message = m0.empty() ? m1 : m0; return false; }
+    // S = S_1 + S_2 - Ass (lower triangles), then its Cholesky factor
+    schur_.resize(ass.size());
+    for(int c = 0; c < s_; ++c)
+      for(int r = c; r < s_; ++r) {
+        const std::size_t k = std::size_t(c) * std::size_t(s_) + std::size_t(r);
+        schur_[k] = half_[0].schur[k] + half_[1].schur[k] - ass[k];
+      }
+    for(int c = 0; c < s_; ++c)
+      for(int r = 0; r < c; ++r) schur_[std::size_t(c) * std::size_t(s_) + std::size_t(r)] = 0;
+    if(!dense::cholesky(s_, schur_.data())) {
+      message = "CHOLMOD could not factor the normal equations (matrix not positive definite)";
+      return false;
+    }
+    return true;
+  }
+
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) const
+  {
+    Eigen::VectorXd x(n_);
+    if(n_ == 0) return x;
+    std::vector<double> sep(static_cast<std::size_t>(s_));
+    for(int k = 0; k < s_; ++k) sep[std::size_t(k)] = b[sep_rows_[std::size_t(k)]];
+    // forward: L_i [z_i; w_i] = [b_i; 0], and Asi Aii^-1 bi = -Lss_i w_i
+    std::vector<double> c[2];
+    auto forward = [&](int i) {
+      const Half& h = half_[i];
+      std::vector<double>& z = h.work;
+      z.assign(std::size_t(h.n), 0.);
+      for(int k = 0; k < h.nd; ++k) z[std::size_t(k)] = b[h.rows[std::size_t(k)]];
+      h.solve(CHOLMOD_L, z);
+      c[i].assign(z.begin() + h.nd, z.end());
+      dense::triangular_multiply(s_, h.lss.data(), c[i].data(), false);
+    };
+    // back: L_i^T [x_i; y] = [z_i; Lss_i^T xs] gives y = xs and x_i = Lii^-T (z_i - Ls_i^T xs)
+    auto back = [&](int i, const std::vector<double>& xs) {
+      const Half& h = half_[i];
+      std::vector<double>& z = h.work;
+      std::copy(xs.begin(), xs.end(), z.begin() + h.nd);
+      dense::triangular_multiply(s_, h.lss.data(), z.data() + h.nd, true);
+      h.solve(CHOLMOD_Lt, z);
+      for(int k = 0; k < h.nd; ++k) x[h.rows[std::size_t(k)]] = z[std::size_t(k)];
+    };
+    {
+      auto f = std::async(std::launch::async, forward, 1);
+      forward(0);
+      f.get();
+    }
+    for(int k = 0; k < s_; ++k) sep[std::size_t(k)] += c[0][std::size_t(k)] + c[1][std::size_t(k)];
+    dense::triangular_solve(s_, schur_.data(), sep.data(), false);
+    dense::triangular_solve(s_, schur_.data(), sep.data(), true);
+    {
+      auto f = std::async(std::launch::async, back, 1, std::cref(sep));
+      back(0, sep);
+      f.get();
+    }
+    for(int k = 0; k < s_; ++k) x[sep_rows_[std::size_t(k)]] = sep[std::size_t(k)];
+    return x;
+  }
+
+private:
+  // M_i = [Aii Ais; Asi Ass] in compressed lower columns, factored by CHOLMOD in natural order
+  // (the domain's AMD order, separator last) so that the last s columns of L are Lss_i.
+  struct Half
+  {
+    cholmod_common cc;
+    cholmod_factor* factor = nullptr;
+    int nd = 0, n = 0;               // domain size, domain + separator
+    std::vector<int> p, i;           // pattern of M_i
+    std::vector<double> x;
+    std::vector<long long> dest;     // per nonzero of the input: position in x, or -1
+    std::vector<double> lss, schur;  // s x s column-major: Lss_i and Lss_i Lss_i^T
+    std::vector<int> rows;           // input row of each domain unknown, in elimination order
+    bool analysed = false;
+    bool solve_often = false;        // convert the factor to simplicial form for the solves
+    // solve workspace (a solve is not reentrant, as with CHOLMOD itself)
+    mutable std::vector<double> work;
+    mutable cholmod_dense *X = nullptr, *Y = nullptr, *E = nullptr;
+
+    Half()
+    {
+      cholmod_start(&cc);
+      cc.nmethods = 1;
+      cc.method[0].ordering = CHOLMOD_NATURAL;
+      cc.postorder = 0;
+      // supernodal always: the trailing separator block is dense and goes through BLAS
+      cc.supernodal = CHOLMOD_SUPERNODAL;
+      cc.final_ll = 1;
+    }
+    ~Half()
+    {
+      cholmod_dense** ws[3] = {&X, &Y, &E};
+      for(cholmod_dense** w : ws) if(*w) cholmod_free_dense(w, &cc);
+      if(factor) cholmod_free_factor(&factor, &cc);
+      cholmod_finish(&cc);
+    }
+    cholmod_sparse view()
+    {
+      cholmod_sparse A;
+      A.nrow = A.ncol = std::size_t(n);
+      A.nzmax = x.size();
+      A.p = p.data();
+      A.i = i.data();
+      A.nz = nullptr;
+      A.x = x.data();
+      A.z = nullptr;
+      A.stype = -1;
+      A.itype = CHOLMOD_INT;
+      A.xtype = CHOLMOD_REAL;
+      A.dtype = CHOLMOD_DOUBLE;
+      A.sorted = 1;
+      A.packed = 1;
+      return A;
+    }
+    // empty string on success
+    std::string factor_and_schur(int s)
+    {
+      Single_thread_openmp_scope one_openmp_thread;
+      cholmod_sparse A = view();
+      if(!analysed) {
+        if(factor) cholmod_free_factor(&factor, &cc);
+        factor = cholmod_analyze(&A, &cc);
+        if(!factor) return "CHOLMOD analysis failed (status " + std::to_string(cc.status) + ")";
+        const int* perm = static_cast<const int*>(factor->Perm);
+        for(int k = 0; k < n; ++k)
+          if(perm[k] != k) return "CHOLMOD did not keep the two-domain ordering";
+        analysed = true;
+      }
+      if(!cholmod_factorize(&A, factor, &cc) || cc.status != CHOLMOD_OK || factor->minor < factor->n)
+        return "CHOLMOD could not factor the normal equations (matrix not positive definite)";
+      extract_lss(s);
+      schur.assign(lss.size(), 0.);
+      dense::lower_times_transpose(s, lss.data(), schur.data());
+      if(solve_often) {
+        // simplicial triangular solves are faster than supernodal ones on the small supernodes
+        // of a mesh (400k faces: 27 vs 34 ms per solve); refactor() then analyses again
+        cholmod_change_factor(CHOLMOD_REAL, 1, 0, 1, 1, factor, &cc);
+        analysed = false;
+      }
+      return std::string();
+    }
+    void extract_lss(int s)
+    {
+      lss.assign(std::size_t(s) * std::size_t(s), 0.);
+      const double* fx = static_cast<const double*>(factor->x);
+      if(factor->is_super) {
+        const int* super = static_cast<const int*>(factor->super);
+        const int* pi = static_cast<const int*>(factor->pi);
+        const int* px = static_cast<const int*>(factor->px);
+        const int* rows = static_cast<const int*>(factor->s);
+        for(std::size_t k = 0; k < factor->nsuper; ++k) {
+          const int c0 = super[k], c1 = super[k + 1];
+          if(c1 <= nd) continue;
+          const int nsrow = pi[k + 1] - pi[k];
+          for(int c = (std::max)(c0, nd); c < c1; ++c)
+            for(int t = c - c0; t < nsrow; ++t)
+              lss[std::size_t(c - nd) * std::size_t(s) + std::size_t(rows[pi[k] + t] - nd)] =
+                  fx[std::size_t(px[k]) + std::size_t(t) + std::size_t(c - c0) * std::size_t(nsrow)];
+        }
+      } else {
+        const int* fp = static_cast<const int*>(factor->p);
+        const int* fi = static_cast<const int*>(factor->i);
+        const int* fnz = static_cast<const int*>(factor->nz);
+        for(int c = nd; c < n; ++c)
+          for(int q = fp[c]; q < fp[c] + fnz[c]; ++q)
+            lss[std::size_t(c - nd) * std::size_t(s) + std::size_t(fi[q] - nd)] = fx[q];
+      }
+    }
+    // y = L^-1 y or L^-T y (sys CHOLMOD_L / CHOLMOD_Lt)
+    void solve(int sys, std::vector<double>& y) const
+    {
+      cholmod_common& c = const_cast<cholmod_common&>(cc);
+      cholmod_dense B;
+      B.nrow = std::size_t(n);
+      B.ncol = 1;
+      B.nzmax = std::size_t(n);
+      B.d = std::size_t(n);
+      B.x = y.data();
+      B.z = nullptr;
+      B.xtype = CHOLMOD_REAL;
+      B.dtype = CHOLMOD_DOUBLE;
+      // cholmod_solve2 keeps its result and workspace between calls (no allocation per solve)
+      if(cholmod_solve2(sys, factor, &B, nullptr, &X, nullptr, &Y, &E, &c)) {
+        const double* xx = static_cast<const double*>(X->x);
+        std::copy(xx, xx + n, y.begin());
+      } else {
+        std::fill(y.begin(), y.end(), std::numeric_limits<double>::quiet_NaN());
+      }
+    }
+  };
+
+  int n_ = 0, n1_ = 0, n2_ = 0, s_ = 0;
+  std::vector<int> pos_;                               // input index -> position in the ordering
+  std::vector<int> sep_rows_;                          // input row of each separator unknown
+  Half half_[2];
+  std::vector<std::pair<std::size_t, long long>> sep_dest_;   // nonzero -> entry of dense Ass
+  std::vector<double> schur_;                          // Cholesky factor of S (lower)
+
+  bool build_halves(const Sparse_matrix_int& lower, std::string& message)
+  {
+    const int ns = n1_ + n2_;
+    const std::size_t nnz = std::size_t(lower.nonZeros());
+    half_[0].nd = n1_; half_[0].n = n1_ + s_;
+    half_[1].nd = n2_; half_[1].n = n2_ + s_;
+    sep_dest_.clear();
+    // local (row, column) of an entry in half `i`, or false if it does not belong to it
+    struct Local { int half, row, col; };
+    auto locate = [&](int a, int b, Local out[2], int& count) {
+      const int r = (std::max)(a, b), c = (std::min)(a, b);
+      count = 0;
+      if(c < n1_) {
+        if(r >= n1_ && r < ns) return false;
+        out[count++] = Local{0, r < n1_ ? r : r - n2_, c};
+      } else if(c < ns) {
+        out[count++] = Local{1, r - n1_, c - n1_};
+      } else {
+        out[count++] = Local{0, r - n2_, c - n2_};
+        out[count++] = Local{1, r - n1_, c - n1_};
+      }
+      return true;
+    };
+    for(Half& h : half_) {
+      h.p.assign(std::size_t(h.n) + 1, 0);
+      h.dest.assign(nnz, -1);
+    }
+    const int* outer = lower.outerIndexPtr();
+    const int* inner = lower.innerIndexPtr();
+    if(!lower.isCompressed()) { message = "internal: uncompressed matrix"; return false; }
+    Local loc[2];
+    int count = 0;
+    for(int j = 0; j < n_; ++j)
+      for(int k = outer[j]; k < outer[j + 1]; ++k) {
+        if(!locate(pos_[inner[k]], pos_[j], loc, count)) {
+          message = "internal: the two domains of the ordering are coupled";
+          return false;
+        }
+        for(int t = 0; t < count; ++t) ++half_[loc[t].half].p[std::size_t(loc[t].col) + 1];
+      }
+    for(Half& h : half_) {
+      for(int c = 0; c < h.n; ++c) h.p[c + 1] += h.p[c];
+      h.i.assign(std::size_t(h.p[h.n]), 0);
+      h.x.assign(std::size_t(h.p[h.n]), 0.);
+    }
+    std::vector<int> fill[2] = {std::vector<int>(half_[0].p.begin(), half_[0].p.end() - 1),
+                                std::vector<int>(half_[1].p.begin(), half_[1].p.end() - 1)};
+    for(int j = 0; j < n_; ++j)
+      for(int k = outer[j]; k < outer[j + 1]; ++k) {
+        locate(pos_[inner[k]], pos_[j], loc, count);
+        for(int t = 0; t < count; ++t) {
+          Half& h = half_[loc[t].half];
+          const int q = fill[loc[t].half][std::size_t(loc[t].col)]++;
+          h.i[std::size_t(q)] = loc[t].row;
+          h.dest[std::size_t(k)] = q;
+        }
+        if(count == 2) {
+          const int r = (std::max)(pos_[inner[k]], pos_[j]) - ns, c = (std::min)(pos_[inner[k]], pos_[j]) - ns;
+          sep_dest_.emplace_back(std::size_t(k), (long long)c * s_ + r);
+        }
+      }
+    // sort the rows of each column (CHOLMOD wants them sorted), carrying the input positions
+    for(Half& h : half_) {
+      std::vector<long long> src_of(h.i.size(), -1);
+      for(std::size_t k = 0; k < nnz; ++k) if(h.dest[k] >= 0) src_of[std::size_t(h.dest[k])] = (long long)k;
+      std::vector<std::pair<int, long long>> column;
+      for(int c = 0; c < h.n; ++c) {
+        column.clear();
+        for(int q = h.p[c]; q < h.p[c + 1]; ++q) column.emplace_back(h.i[q], src_of[q]);
+        std::sort(column.begin(), column.end());
+        for(int q = h.p[c]; q < h.p[c + 1]; ++q) {
+          const auto& e = column[std::size_t(q - h.p[c])];
+          h.i[q] = e.first;
+          h.dest[std::size_t(e.second)] = q;
+        }
+      }
+    }
+    return true;
+  }
+};
+
+} // namespace internal
+} // namespace Surface_mesh_direction_fields
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_TWO_DOMAIN_CHOLESKY_H
