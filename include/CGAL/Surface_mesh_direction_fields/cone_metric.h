@@ -312,9 +312,8 @@ Cone_metric_status compute_cone_metric(const TriangleMesh& tm,
   Flow flow(m, topo);
   std::vector<double> u(nv, 0.), len;
   // With flips available, the input triangulation is abandoned after a step cut to t <= 1/8 by
-  // degenerating triangles, 2 consecutive steps cut to t <= 1/4, or 3 cut steps without 10%
-  // progress: on a decimated
-  // 20k-face armadillo with 8 cones the cut steps keep shrinking (t = 1/8 ... 1/128) while the
+  // degenerating triangles (before taking it if it is the first step), 2 consecutive steps cut
+  // to t <= 1/4, or 3 cut steps without 10% progress: on a decimated 20k-face armadillo with 8 cones the cut steps keep shrinking (t = 1/8 ... 1/128) while the
   // Delaunay flow then converges in 5 full steps; steps cut to t = 1/2 usually still converge
   // on the input triangulation (armadillo, 52k faces, 7 iterations).
   internal::Vertex_scaling_result r =

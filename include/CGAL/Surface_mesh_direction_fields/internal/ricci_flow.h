@@ -198,7 +198,8 @@ public:
     FIXED,               // input triangulation; give up after 10 consecutive Newton steps shortened
                          // to keep triangles valid without a 10% decrease of the error
     FIXED_BEFORE_FLIPS,  // the same, but after 3 such steps, or as soon as two consecutive steps
-                         // were cut to t <= 1/4 or one to t <= 1/8 (flips will take over)
+                         // were cut to t <= 1/4 or one to t <= 1/8 (flips will take over); a
+                         // first step that would be cut that far is not taken
     FLIPS                // intrinsic Delaunay triangulation
   };
 
@@ -234,7 +235,8 @@ public:
     if(flip) snapshot();
     double err = scaled_error(k, target);
     double norm2 = residual_norm2(k, target);
-    if(first_iteration == 0) callback(0, max_error(k, target));
+    // iteration 0 is reported once, by the first phase (the flip phase follows a fixed one)
+    if(first_iteration == 0 && !flip) callback(0, max_error(k, target));
     double best = err;
     int best_iteration = 0;
     int it = 0;
@@ -245,7 +247,7 @@ public:
     while(err > tol && it < max_iterations) {
       // rejected trial points of the last line search may have flipped edges
       if(flip) restore();
-      fill_values(ang, has_pattern && pattern_version == version_);
+      fill_values(len, has_pattern && pattern_version == version_);
       has_pattern = true;
       pattern_version = version_;
       Eigen::VectorXd rhs(n_), du;
@@ -291,6 +293,7 @@ public:
         if(!evaluate(u_try, len_try, ang_try, k_try, &last_bad)) {
           last_invalid = any_invalid = true;
           cut_face = last_bad;
+          if(mode == FIXED_BEFORE_FLIPS && it == 0 && t <= 0.125) break;   // abandoned below
           continue;
         }
         last_invalid = false;
@@ -300,6 +303,15 @@ public:
         for(std::size_t v = 0; v < col_.size(); ++v)
           if(col_[v] >= 0) dphi += du[col_[v]] * (k_try[v] - target[v]);
         if(dphi <= 0) { accepted = true; break; }
+      }
+      // The first step already degenerates triangles: leave the input triangulation before
+      // moving (the flip phase then starts from the input metric; 433k faces: one iteration less)
+      if(mode == FIXED_BEFORE_FLIPS && it == 0 && any_invalid && (!accepted || t <= 0.125)) {
+        std::ostringstream os;
+        os << "iteration " << first_iteration + 1 << ": the Newton step had to be cut below 1/8"
+           << " to keep the triangles valid (face " << cut_face << " degenerates)";
+        res.message = os.str();
+        break;
       }
       if(!accepted) {
         std::ostringstream os;
@@ -469,15 +481,21 @@ private:
     }
   }
 
-  // Cotan Laplacian of the metric with corner angles `ang`, restricted to the free vertices.
-  void fill_values(const std::vector<double>& ang, bool same_pattern)
+  // Cotan Laplacian of the metric with edge lengths `len` (valid triangles), restricted to the
+  // free vertices. The cotangents come from the lengths face by face, cot = (a^2 + b^2 - c^2) /
+  // 4A: a third of the time of cos/sin of the corner angles looked up per halfedge.
+  void fill_values(const std::vector<double>& len, bool same_pattern)
   {
     if(!same_pattern) build_pattern();
     w_.assign(m_.number_of_edges(), 0.);
-    for(std::size_t h = 0; h < m_.number_of_halfedges(); ++h) {
-      if(tri_.face[h] < 0) continue;
-      const double opp = ang[tri_.prev(int(h))];   // corner opposite to the edge of h
-      w_[h >> 1] += 0.5 * std::cos(opp) / std::sin(opp);
+    for(std::size_t f = 0; f < m_.number_of_faces(); ++f) {
+      const int h0 = tri_.face_halfedge[f], h1 = tri_.next[h0], h2 = tri_.next[h1];
+      const double l0 = len[h0 >> 1], l1 = len[h1 >> 1], l2 = len[h2 >> 1];
+      const double q0 = l0 * l0, q1 = l1 * l1, q2 = l2 * l2;
+      const double inv8A = 1. / (8. * triangle_area(l0, l1, l2));   // w_e = cot / 2
+      w_[h0 >> 1] += (q1 + q2 - q0) * inv8A;
+      w_[h1 >> 1] += (q2 + q0 - q1) * inv8A;
+      w_[h2 >> 1] += (q0 + q1 - q2) * inv8A;
     }
     double* val = L_.valuePtr();
     std::fill(val, val + L_.nonZeros(), 0.);
