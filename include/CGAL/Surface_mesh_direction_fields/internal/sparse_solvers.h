@@ -25,24 +25,24 @@ typedef Eigen::SparseMatrix<double, Eigen::ColMajor, SuiteSparse_long> Sparse_ma
 // Sparse Cholesky factorisation of a symmetric positive definite matrix kept for repeated
 // solves. CHOLMOD and not SPQR: the normal-equation matrix of the trivial-connection system is a
 // graph Laplacian plus a few sparse rows, and its Cholesky factor is an order of magnitude
-// cheaper than a QR of the |V| x |E| constraint matrix. Simplicial below 300k rows, supernodal
-// above: measured here on mesh Laplacians with AMD ordering, simplicial factored 200k rows 1.5x
-// faster, supernodal (BLAS-3) 800k rows 1.6x faster (and at 500k rows, 1M faces: 3.1 s vs
-// 2.3 s); two BLAS threads did not speed up the supernodal factorisation (2.3 s -> 2.2-2.6 s:
-// the supernodes of a 2D mesh are small, and a third of the time is first-touch page faults
-// of the factor). The symbolic analysis is reusable when only values change.
+// cheaper than a QR of the |V| x |E| constraint matrix. The symbolic analysis is reusable when
+// only values change.
 //
-// Fill-reducing ordering: CHOLMOD's default (AMD here; it tries METIS only when AMD's fill is
-// poor), unless the caller passes PRESERVE_ORDERING because its rows are already in a
-// fill-reducing order (see amd_ordering()); CHOLMOD then only postorders the elimination tree.
-// Measured at 1M faces (500k rows): AMD 0.8 s analysis, 2.3e7 nonzeros in L, 5.9e9 flops;
-// METIS and NESDIS cut the flops to 3.0-3.2e9 but their analysis took 3.0-3.7 s, more than
-// they save in the 2.0-2.3 s numeric factorisation.
+// From two_domain_min_rows rows on, the matrix is split by one level of nested dissection and
+// factored on two threads (Two_domain_cholesky); measured here: trivial-connection setup 0.90 ->
+// 0.55 s at 400k faces, 2.7 -> 2.2 s at 1M faces. Below, one thread: simplicial below 300k
+// rows, supernodal above (simplicial factored 200k-row mesh Laplacians 1.5x faster, supernodal
+// 800k rows 1.6x faster).
+//
+// Fill-reducing ordering: AMD (CHOLMOD's, or the caller's with PRESERVE_ORDERING when its
+// rows are already in a fill-reducing order, see amd_ordering(); CHOLMOD then only postorders
+// the elimination tree). METIS and NESDIS cut the flops at 1M faces from 5.9e9 to 3.0-3.2e9 but
+// their analysis took 3.0-3.7 s, more than they save.
 class Cholmod_factor
 {
 public:
   enum Ordering {
-    CHOLMOD_ORDERING,   ///< CHOLMOD chooses (AMD, METIS as a fallback)
+    CHOLMOD_ORDERING,   ///< AMD (or the two-domain split of large matrices)
     PRESERVE_ORDERING   ///< the rows are already in a fill-reducing order
   };
 
