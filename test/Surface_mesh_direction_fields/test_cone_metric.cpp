@@ -638,7 +638,7 @@ int main()
     Polyhedron p;
     if(read(md + "mushroom_cgal.off", p)) tp.rectangle(p, "mushroom_cgal.off (Polyhedron_3)");
   }
-  std::cout << not_converged.size() << " case(s) did not converge on the fixed triangulation:" << std::endl;
+  std::cout << not_converged.size() << " case(s) did not converge:" << std::endl;
   for(const auto& s : not_converged) std::cout << "  NOT CONVERGED: " << s << std::endl;
   return smdf_test::finish();
 }
