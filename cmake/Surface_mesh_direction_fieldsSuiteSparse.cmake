@@ -61,6 +61,11 @@ foreach(_t IN ITEMS LAPACK::LAPACK BLAS::BLAS)
     set_property(TARGET SuiteSparse::CHOLMOD APPEND PROPERTY INTERFACE_LINK_LIBRARIES ${_t})
   endif()
 endforeach()
+# The two-thread factorisation calls dsyrk/dlauum/dpotrf/dtrmv/dtrsv itself; without BLAS and
+# LAPACK targets to link, it uses Eigen's dense kernels instead.
+if(NOT TARGET LAPACK::LAPACK OR NOT TARGET BLAS::BLAS)
+  set_property(TARGET SuiteSparse::CHOLMOD APPEND PROPERTY INTERFACE_COMPILE_DEFINITIONS CGAL_SMDF_NO_DIRECT_BLAS)
+endif()
 
 add_library(SuiteSparse::SPQR UNKNOWN IMPORTED)
 set_target_properties(SuiteSparse::SPQR PROPERTIES

@@ -531,7 +531,8 @@ private:
           std::vector<int> fill(adj_begin.begin(), adj_begin.end() - 1);
           for(int v = 0; v < nv; ++v)
             for(int p = cb[v]; p < cb[v + 1]; ++p) { adj[fill[v]++] = r[p]; adj[fill[r[p]]++] = v; }
-          return internal::two_domain_ordering(nv, adj_begin, adj, (std::numeric_limits<int>::max)());
+          return internal::two_domain_ordering(nv, adj_begin, adj, (std::numeric_limits<int>::max)(),
+                                               internal::Cholmod_factor::max_separator, true);
         },
         std::move(col_begin), std::move(rows));
   }

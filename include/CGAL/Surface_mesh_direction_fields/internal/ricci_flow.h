@@ -92,6 +92,7 @@ public:
       ++component_size_[c];
       if(!comp_fixed[c]) { comp_fixed[c] = 1; continue; }   // gauge: first vertex of each component
       col_[v] = n_++;
+      column_component_.push_back(c);
     }
   }
 
@@ -419,6 +420,7 @@ private:
   }
   std::vector<int> col_;   // per vertex: column of the reduced system, -1 if fixed or isolated
   std::vector<int> component_, component_size_;   // per vertex / per component
+  std::vector<int> column_component_;             // per column of the reduced system
   int n_ = 0;
   Sparse_matrix_int L_;    // lower triangle of the reduced Hessian
   std::vector<int> edge_pos_, diag_pos_;
@@ -435,6 +437,17 @@ private:
 
   // Conjugate gradients on L_ du = rhs, preconditioned by the kept factorisation (of an earlier
   // Hessian); true if |rhs - L_ du| <= eta |rhs| within max_iterations.
+  // The linearised residual of the gauge vertex of a component is minus the sum over the
+  // others (the Hessian's rows sum to zero): both must be below `stop`.
+  bool small_residual(const Eigen::VectorXd& r, double stop) const
+  {
+    if(!(r.template lpNorm<Eigen::Infinity>() <= stop)) return false;
+    std::vector<double> sum(component_size_.size(), 0.);
+    for(Eigen::Index c = 0; c < r.size(); ++c) sum[column_component_[std::size_t(c)]] += r[c];
+    for(double x : sum) if(!(std::abs(x) <= stop)) return false;
+    return true;
+  }
+
   // Stops when the largest linearised curvature residual is below eta times the current one (the
   // forcing term of inexact Newton) or below `floor`, a fraction of the tolerance: the
   // quadratic convergence then leaves no reason to solve the last step more accurately.
@@ -453,7 +466,7 @@ private:
       const double alpha = rz / pAp;
       x += alpha * p;
       r -= alpha * Ap;
-      if(r.template lpNorm<Eigen::Infinity>() <= stop) return x.allFinite();
+      if(small_residual(r, stop)) return x.allFinite();
       z = chol_.solve(r);
       const double rz_new = r.dot(z);
       p = z + (rz_new / rz) * p;

@@ -76,7 +76,7 @@ public:
     } else if(ordering == CHOLMOD_ORDERING && n >= two_domain_min_rows) {
       std::vector<int> adj_begin, adj;
       adjacency_of_lower(lower, adj_begin, adj);
-      split = two_domain_ordering(n, adj_begin, adj, 64);
+      split = two_domain_ordering(n, adj_begin, adj, 64, max_separator, false);
     }
     if(split.is_split() && n - split.n1 - split.n2 <= max_separator) {
       std::unique_ptr<Two_domain_cholesky> td(new Two_domain_cholesky());
@@ -95,17 +95,13 @@ public:
       solver_->cholmod().method[0].ordering = CHOLMOD_NATURAL;
       solver_->cholmod().postorder = 1;
     }
-    {
-      Single_thread_openmp_scope one_openmp_thread;
-      solver_->analyzePattern(lower);
-    }
+    solver_->analyzePattern(lower);
     return refactor(lower, message);
   }
   // Numeric factorisation with the previous analysis (same pattern).
   bool refactor(const Sparse_matrix_int& lower, std::string& message)
   {
     if(two_domain_) return two_domain_->refactor(lower, message);
-    Single_thread_openmp_scope one_openmp_thread;
     solver_->factorize(lower);
     if(solver_->info() != Eigen::Success) {
       message = "CHOLMOD could not factor the normal equations (matrix not positive definite)";

@@ -31,17 +31,19 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <system_error>
 #include <utility>
 #include <vector>
 
 // Dense BLAS/LAPACK kernels (the libraries CHOLMOD links). Declared under local names bound to
 // the Fortran symbols so that they cannot clash with other declarations of dsyrk_ and friends.
-#if defined(__GNUC__) && !defined(CGAL_SMDF_NO_DIRECT_BLAS)
+#if defined(__GNUC__) && defined(__ELF__) && !defined(CGAL_SMDF_NO_DIRECT_BLAS)
 #define CGAL_SMDF_DIRECT_BLAS 1
 extern "C" {
 void cgal_smdf_dsyrk(const char* uplo, const char* trans, const int* n, const int* k, const double* alpha,
                      const double* a, const int* lda, const double* beta, double* c, const int* ldc) __asm__("dsyrk_");
 void cgal_smdf_dpotrf(const char* uplo, const int* n, double* a, const int* lda, int* info) __asm__("dpotrf_");
+void cgal_smdf_dlauum(const char* uplo, const int* n, double* a, const int* lda, int* info) __asm__("dlauum_");
 void cgal_smdf_dtrmv(const char* uplo, const char* trans, const char* diag, const int* n, const double* a,
                      const int* lda, double* x, const int* incx) __asm__("dtrmv_");
 void cgal_smdf_dtrsv(const char* uplo, const char* trans, const char* diag, const int* n, const double* a,
@@ -62,8 +64,9 @@ namespace internal {
 // hard-coded 4 threads; next to our own factorisation threads that oversubscribed the 2 cores of
 // the target machine (433k faces: 1.2 s instead of 0.25 s per half). While alive, this guard
 // limits the OpenMP regions started by the calling thread to one thread, through the per-thread
-// ICVs dyn-var and nthreads-var (with dynamic adjustment on, libgomp caps a region at
-// nthreads-var threads), and restores them on exit. The OpenMP runtime is looked up at run time:
+// ICVs dyn-var and nthreads-var (with dynamic adjustment on, GCC's libgomp caps a region at
+// nthreads-var threads; other OpenMP runtimes may ignore it, which only costs speed), and
+// restores them on exit. The OpenMP runtime is looked up at run time:
 // it is present only when CHOLMOD was built with OpenMP, and then nothing needs to be linked.
 class Single_thread_openmp_scope
 {
@@ -154,13 +157,18 @@ namespace dense {
 typedef Eigen::Map<Eigen::MatrixXd> Matrix_map;
 typedef Eigen::Map<const Eigen::MatrixXd> Const_matrix_map;
 
-// lower(C) = L L^T, L lower triangular (its upper part must be zero)
+// lower(C) = L L^T, L lower triangular (its upper part must be zero). With R = J L J (J the
+// reversal, R upper triangular), L L^T = J R R^T J: LAPACK's dlauum forms R R^T in s^3 / 3
+// flops, a third of a general rank update.
 inline void lower_times_transpose(int n, const double* L, double* C)
 {
   if(n == 0) return;
 #ifdef CGAL_SMDF_DIRECT_BLAS
-  const double one = 1, zero = 0;
-  cgal_smdf_dsyrk("L", "N", &n, &n, &one, L, &n, &zero, C, &n);
+  const std::size_t nn = std::size_t(n) * std::size_t(n);
+  std::reverse_copy(L, L + nn, C);   // reversing the column-major array is J L J
+  int info = 0;
+  cgal_smdf_dlauum("U", &n, C, &n, &info);
+  std::reverse(C, C + nn);
 #else
   Matrix_map c(C, n, n);
   c.setZero();
@@ -216,6 +224,21 @@ inline void triangular_solve(int n, const double* L, double* x, bool transpose)
 
 } // namespace dense
 
+// Runs f(0) on the calling thread and f(1) on another one (on the calling thread too if no
+// thread can be started), and returns when both are done.
+template <typename F>
+void run_on_two_threads(const F& f)
+{
+  std::future<void> other;
+  try {
+    other = std::async(std::launch::async, [&f] { f(1); });
+  } catch(const std::system_error&) {
+  }
+  f(0);
+  if(other.valid()) other.get();
+  else f(1);
+}
+
 // The split: order[k] is the unknown eliminated k-th, the n1 unknowns of D1 first, then the n2
 // of D2, then the separator. n1 = n2 = 0 when no useful split was found (order is then a plain
 // fill-reducing order of the whole graph).
@@ -233,8 +256,12 @@ struct Two_domain_ordering
 // (generator rows, constraint rows) join the separator; components other than the largest go
 // to the smaller domain. Each domain is then ordered by AMD, the two concurrently. No split
 // (AMD on the whole graph) when the largest component is too small or no level qualifies.
+//
+// max_separator: larger separators count as no split. order_if_no_split: without a split,
+// return an AMD order of the whole graph (otherwise an empty order, saving that work).
 inline Two_domain_ordering two_domain_ordering(int n, const std::vector<int>& adj_begin,
-                                               const std::vector<int>& adj, int dense_degree)
+                                               const std::vector<int>& adj, int dense_degree,
+                                               int max_separator, bool order_if_no_split)
 {
   enum { D1 = 0, D2 = 1, SEP = 2, NONE = 3 };
   Two_domain_ordering result;
@@ -263,15 +290,17 @@ inline Two_domain_ordering two_domain_ordering(int n, const std::vector<int>& ad
   // components: find the largest
   std::vector<int> component(std::size_t(n), -1), comp_size, visited;
   int largest = -1;
+  int n_free = 0;
   for(int v = 0; v < n; ++v) {
-    if(part[v] == SEP || level[v] >= 0) continue;
+    // degree-0 nodes (rows without neighbours) go anywhere: left out of the balance
+    if(part[v] == SEP || level[v] >= 0 || degree(v) == 0) continue;
     bfs(v, visited);
+    n_free += int(visited.size());
     const int c = int(comp_size.size());
     for(int w : visited) component[w] = c;
     comp_size.push_back(int(visited.size()));
     if(largest < 0 || comp_size[c] > comp_size[largest]) largest = c;
   }
-  const int n_free = n - n_dense;
   bool split = largest >= 0 && n_free >= 4;
   if(split && comp_size[largest] * 2 <= n_free) {
     // several components of similar size: they are independent, so no separator is needed
@@ -281,7 +310,7 @@ inline Two_domain_ordering two_domain_ordering(int n, const std::vector<int>& ad
     std::vector<char> side(comp_size.size(), 0);
     long long size[2] = {0, 0};
     for(int c : by_size) { const int s = size[0] <= size[1] ? 0 : 1; side[c] = char(s); size[s] += comp_size[c]; }
-    for(int v = 0; v < n; ++v) if(part[v] != SEP) part[v] = side[component[v]] ? D2 : D1;
+    for(int v = 0; v < n; ++v) if(part[v] != SEP && component[v] >= 0) part[v] = side[component[v]] ? D2 : D1;
   } else if(split) {
     // pseudo-peripheral root: the last node of a search from any node of the component
     int root = 0;
@@ -334,6 +363,11 @@ inline Two_domain_ordering two_domain_ordering(int n, const std::vector<int>& ad
     }
   }
   for(int v = 0; v < n; ++v) if(part[v] == NONE) part[v] = D1;   // isolated nodes
+  if(split) {
+    int separator = 0;
+    for(int v = 0; v < n; ++v) separator += part[v] == SEP;
+    if(separator > max_separator) split = false;
+  }
 
   // AMD within each domain (the whole graph when there is no split), concurrently
   auto order_part = [&](int which) {
@@ -357,12 +391,11 @@ inline Two_domain_ordering two_domain_ordering(int n, const std::vector<int>& ad
     return o;
   };
   if(!split) {
-    result.order = order_part(D1);
+    if(order_if_no_split) result.order = order_part(D1);
     return result;
   }
-  auto second = std::async(std::launch::async, order_part, int(D2));
-  std::vector<int> first = order_part(D1);
-  std::vector<int> other = second.get();
+  std::vector<int> first, other;
+  run_on_two_threads([&](int i) { (i == 0 ? first : other) = order_part(i == 0 ? D1 : D2); });
   result.n1 = int(first.size());
   result.n2 = int(other.size());
   result.order = std::move(first);
@@ -421,6 +454,10 @@ public:
   // Numeric factorisation of a matrix with the pattern of the last factor().
   bool refactor(const Sparse_matrix_int& lower, std::string& message)
   {
+    if(!lower.isCompressed() || std::size_t(lower.nonZeros()) != half_[0].dest.size()) {
+      message = "internal: refactor() with a different pattern";
+      return false;
+    }
     const double* value = lower.valuePtr();
     const std::size_t nnz = std::size_t(lower.nonZeros());
     for(int i = 0; i < 2; ++i) {
@@ -430,9 +467,8 @@ public:
     }
     std::vector<double> ass(std::size_t(s_) * std::size_t(s_), 0.);
     for(const auto& d : sep_dest_) ass[std::size_t(d.second)] += value[d.first];
-    auto second = std::async(std::launch::async, [this] { return half_[1].factor_and_schur(s_); });
-    std::string m0 = half_[0].factor_and_schur(s_);
-    std::string m1 = second.get();
+    std::string m0, m1;
+    run_on_two_threads([&](int i) { (i == 0 ? m0 : m1) = half_[i].factor_and_schur(s_); });
     if(!m0.empty() || !m1.empty()) { message = m0.empty() ? m1 : m0; return false; }
     // S = S_1 + S_2 - Ass (lower triangles), then its Cholesky factor
     schur_.resize(ass.size());
@@ -443,6 +479,7 @@ public:
       }
     for(int c = 0; c < s_; ++c)
       for(int r = 0; r < c; ++r) schur_[std::size_t(c) * std::size_t(s_) + std::size_t(r)] = 0;
+    for(Half& h : half_) std::vector<double>().swap(h.schur);
     if(!dense::cholesky(s_, schur_.data())) {
       message = "CHOLMOD could not factor the normal equations (matrix not positive definite)";
       return false;
@@ -476,19 +513,11 @@ public:
       h.solve(CHOLMOD_Lt, z);
       for(int k = 0; k < h.nd; ++k) x[h.rows[std::size_t(k)]] = z[std::size_t(k)];
     };
-    {
-      auto f = std::async(std::launch::async, forward, 1);
-      forward(0);
-      f.get();
-    }
+    run_on_two_threads(forward);
     for(int k = 0; k < s_; ++k) sep[std::size_t(k)] += c[0][std::size_t(k)] + c[1][std::size_t(k)];
     dense::triangular_solve(s_, schur_.data(), sep.data(), false);
     dense::triangular_solve(s_, schur_.data(), sep.data(), true);
-    {
-      auto f = std::async(std::launch::async, back, 1, std::cref(sep));
-      back(0, sep);
-      f.get();
-    }
+    run_on_two_threads([&](int i) { back(i, sep); });
     for(int k = 0; k < s_; ++k) x[sep_rows_[std::size_t(k)]] = sep[std::size_t(k)];
     return x;
   }
@@ -555,10 +584,10 @@ private:
       if(!analysed) {
         if(factor) cholmod_free_factor(&factor, &cc);
         factor = cholmod_analyze(&A, &cc);
-        if(!factor) return "CHOLMOD analysis failed (status " + std::to_string(cc.status) + ")";
+        if(!factor) return "internal: CHOLMOD analysis failed (status " + std::to_string(cc.status) + ")";
         const int* perm = static_cast<const int*>(factor->Perm);
         for(int k = 0; k < n; ++k)
-          if(perm[k] != k) return "CHOLMOD did not keep the two-domain ordering";
+          if(perm[k] != k) return "internal: CHOLMOD did not keep the two-domain ordering";
         analysed = true;
       }
       if(!cholmod_factorize(&A, factor, &cc) || cc.status != CHOLMOD_OK || factor->minor < factor->n)
@@ -569,8 +598,7 @@ private:
       if(solve_often) {
         // simplicial triangular solves are faster than supernodal ones on the small supernodes
         // of a mesh (400k faces: 27 vs 34 ms per solve); refactor() then analyses again
-        cholmod_change_factor(CHOLMOD_REAL, 1, 0, 1, 1, factor, &cc);
-        analysed = false;
+        if(cholmod_change_factor(CHOLMOD_REAL, 1, 0, 1, 1, factor, &cc)) analysed = false;
       }
       return std::string();
     }
@@ -665,6 +693,7 @@ private:
     int count = 0;
     for(int j = 0; j < n_; ++j)
       for(int k = outer[j]; k < outer[j + 1]; ++k) {
+        if(inner[k] < j) continue;   // the strict upper triangle is ignored, as by CHOLMOD
         if(!locate(pos_[inner[k]], pos_[j], loc, count)) {
           message = "internal: the two domains of the ordering are coupled";
           return false;
@@ -680,6 +709,7 @@ private:
                                 std::vector<int>(half_[1].p.begin(), half_[1].p.end() - 1)};
     for(int j = 0; j < n_; ++j)
       for(int k = outer[j]; k < outer[j + 1]; ++k) {
+        if(inner[k] < j) continue;
         locate(pos_[inner[k]], pos_[j], loc, count);
         for(int t = 0; t < count; ++t) {
           Half& h = half_[loc[t].half];
