@@ -201,7 +201,7 @@ inline void triangular_multiply(int n, const double* L, double* x, bool transpos
 #else
   Eigen::Map<Eigen::VectorXd> v(x, n);
   Const_matrix_map l(L, n, n);
-  const Eigen::VectorXd r = transpose ? Eigen::VectorXd(l.triangularView<Eigen::Lower>().transpose() * v)
+  const Eigen::VectorXd r = transpose ? Eigen::VectorXd(l.transpose().triangularView<Eigen::Upper>() * v)
                                       : Eigen::VectorXd(l.triangularView<Eigen::Lower>() * v);
   v = r;
 #endif
@@ -217,7 +217,7 @@ inline void triangular_solve(int n, const double* L, double* x, bool transpose)
 #else
   Eigen::Map<Eigen::VectorXd> v(x, n);
   Const_matrix_map l(L, n, n);
-  if(transpose) l.triangularView<Eigen::Lower>().transpose().solveInPlace(v);
+  if(transpose) l.transpose().triangularView<Eigen::Upper>().solveInPlace(v);
   else l.triangularView<Eigen::Lower>().solveInPlace(v);
 #endif
 }
