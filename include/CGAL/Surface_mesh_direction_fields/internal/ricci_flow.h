@@ -105,19 +105,27 @@ public:
   bool angles(const std::vector<double>& len, std::vector<double>& ang, int* bad_face = nullptr) const
   {
     ang.assign(m_.number_of_halfedges(), 0.);
-    for(std::size_t f = 0; f < m_.number_of_faces(); ++f) {
-      const int h0 = tri_.face_halfedge[f], h1 = tri_.next[h0], h2 = tri_.next[h1];
-      const double l0 = len[h0 >> 1], l1 = len[h1 >> 1], l2 = len[h2 >> 1];
-      const double lmax = (std::max)(l0, (std::max)(l1, l2));
-      if(!is_valid_triangle(l0, l1, l2) || !(triangle_area(l0, l1, l2) > 1e-14 * lmax * lmax)) {
-        if(bad_face) *bad_face = int(f);
-        return false;
+    const std::size_t nf = m_.number_of_faces();
+    int bad[2] = {-1, -1};   // first invalid face of each half of the face range
+    auto part = [&](int i) {
+      const std::size_t begin = i == 0 ? 0 : nf / 2, end = i == 0 ? nf / 2 : nf;
+      for(std::size_t f = begin; f < end; ++f) {
+        const int h0 = tri_.face_halfedge[f], h1 = tri_.next[h0], h2 = tri_.next[h1];
+        const double l0 = len[h0 >> 1], l1 = len[h1 >> 1], l2 = len[h2 >> 1];
+        const double lmax = (std::max)(l0, (std::max)(l1, l2));
+        if(!is_valid_triangle(l0, l1, l2) || !(triangle_area(l0, l1, l2) > 1e-14 * lmax * lmax)) {
+          bad[i] = int(f);
+          return;
+        }
+        ang[h0] = corner_angle(l1, l0, l2);
+        ang[h1] = corner_angle(l2, l1, l0);
+        ang[h2] = corner_angle(l0, l2, l1);
       }
-      ang[h0] = corner_angle(l1, l0, l2);
-      ang[h1] = corner_angle(l2, l1, l0);
-      ang[h2] = corner_angle(l0, l2, l1);
-    }
-    return true;
+    };
+    in_two_parts(nf, part);
+    const int first_bad = bad[0] >= 0 ? bad[0] : bad[1];
+    if(first_bad >= 0 && bad_face) *bad_face = first_bad;
+    return first_bad < 0;
   }
 
   void curvatures(const std::vector<double>& ang, std::vector<double>& k) const
@@ -133,9 +141,25 @@ public:
 
   void lengths(const std::vector<double>& u, std::vector<double>& len) const
   {
-    len.resize(m_.number_of_edges());
-    for(std::size_t e = 0; e < m_.number_of_edges(); ++e)
-      len[e] = l0_[e] * std::exp(0.5 * (u[tri_.target[2 * e]] + u[tri_.target[2 * e + 1]]));
+    const std::size_t ne = m_.number_of_edges();
+    len.resize(ne);
+    in_two_parts(ne, [&](int i) {
+      for(std::size_t e = i == 0 ? 0 : ne / 2; e < (i == 0 ? ne / 2 : ne); ++e)
+        len[e] = l0_[e] * std::exp(0.5 * (u[tri_.target[2 * e]] + u[tri_.target[2 * e + 1]]));
+    });
+  }
+
+  // part(0) and part(1), concurrently for large meshes (the per-face and per-edge loops of an
+  // evaluation are independent; 433k faces: 2 x 0.03 s per evaluation)
+  template <typename Part>
+  static void in_two_parts(std::size_t size, const Part& part)
+  {
+    if(size >= 100000) {
+      run_on_two_threads(part);
+    } else {
+      part(0);
+      part(1);
+    }
   }
 
   // max_v |K_v - target_v| / max(1, target angle sum / 2 pi): the rounding error of an angle sum
@@ -424,7 +448,7 @@ private:
   int n_ = 0;
   Sparse_matrix_int L_;    // lower triangle of the reduced Hessian
   std::vector<int> edge_pos_, diag_pos_;
-  std::vector<double> w_;
+  std::vector<double> w_, half_cot_;
   Cholmod_factor chol_;
 
   double residual_norm2(const std::vector<double>& k, const std::vector<double>& target) const
@@ -513,16 +537,22 @@ private:
   void fill_values(const std::vector<double>& len, bool same_pattern)
   {
     if(!same_pattern) build_pattern();
-    w_.assign(m_.number_of_edges(), 0.);
-    for(std::size_t f = 0; f < m_.number_of_faces(); ++f) {
-      const int h0 = tri_.face_halfedge[f], h1 = tri_.next[h0], h2 = tri_.next[h1];
-      const double l0 = len[h0 >> 1], l1 = len[h1 >> 1], l2 = len[h2 >> 1];
-      const double q0 = l0 * l0, q1 = l1 * l1, q2 = l2 * l2;
-      const double inv8A = 1. / (8. * triangle_area(l0, l1, l2));   // w_e = cot / 2
-      w_[h0 >> 1] += (q1 + q2 - q0) * inv8A;
-      w_[h1 >> 1] += (q2 + q0 - q1) * inv8A;
-      w_[h2 >> 1] += (q0 + q1 - q2) * inv8A;
-    }
+    // half cotangent of the corner opposite each halfedge (0 on the border), then w_e per edge
+    const std::size_t nf = m_.number_of_faces(), ne = m_.number_of_edges();
+    half_cot_.assign(m_.number_of_halfedges(), 0.);
+    in_two_parts(nf, [&](int i) {
+      for(std::size_t f = i == 0 ? 0 : nf / 2; f < (i == 0 ? nf / 2 : nf); ++f) {
+        const int h0 = tri_.face_halfedge[f], h1 = tri_.next[h0], h2 = tri_.next[h1];
+        const double l0 = len[h0 >> 1], l1 = len[h1 >> 1], l2 = len[h2 >> 1];
+        const double q0 = l0 * l0, q1 = l1 * l1, q2 = l2 * l2;
+        const double inv8A = 1. / (8. * triangle_area(l0, l1, l2));
+        half_cot_[h0] = (q1 + q2 - q0) * inv8A;
+        half_cot_[h1] = (q2 + q0 - q1) * inv8A;
+        half_cot_[h2] = (q0 + q1 - q2) * inv8A;
+      }
+    });
+    w_.resize(ne);
+    for(std::size_t e = 0; e < ne; ++e) w_[e] = half_cot_[2 * e] + half_cot_[2 * e + 1];
     double* val = L_.valuePtr();
     std::fill(val, val + L_.nonZeros(), 0.);
     for(std::size_t e = 0; e < m_.number_of_edges(); ++e) {
