@@ -210,11 +210,16 @@ public:
                              (b1 * b1 + b2 * b2 - le * le) / (2 * b1 * b2);
       if(!(cos_sum < -1e-12)) continue;
       if(++flips > budget) return false;
-      const double l_new = (b1 * a1 + b2 * a2) / le;   // Ptolemy
-      if(!std::isfinite(l_new) || !(l_new > 0)) return false;
+      // Ptolemy on the Penner coordinates themselves (it commutes with vertex scaling): going
+      // through the current lengths and exp(-(u_c + u_d) / 2) moved the coordinates by the
+      // rounding of exp at every flip, about |u| 1e-16 relative, which for conformal factors of
+      // hundreds of units (a -528 pi cone) held the curvature error near 1e-9.
+      const double p_new = (l0_[h1 >> 1] * l0_[o1 >> 1] + l0_[h2 >> 1] * l0_[o2 >> 1]) / l0_[e];
+      if(!std::isfinite(p_new) || !(p_new > 0)) return false;
       tri_.flip(e);
-      len[e] = l_new;
-      l0_[e] = l_new * std::exp(-0.5 * (u[tri_.target[h]] + u[tri_.target[o]]));
+      l0_[e] = p_new;
+      len[e] = p_new * std::exp(0.5 * (u[tri_.target[h]] + u[tri_.target[o]]));
+      if(!std::isfinite(len[e]) || !(len[e] > 0)) return false;
       for(int g : {h1, h2, o1, o2})
         if(!in_queue_[g >> 1]) { in_queue_[g >> 1] = 1; queue.push_back(g >> 1); }
     }
