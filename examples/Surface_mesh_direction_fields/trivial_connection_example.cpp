@@ -35,6 +35,7 @@ int main(int argc, char** argv)
   std::vector<Vertex> vs(mesh.vertices().begin(), mesh.vertices().end());
 
   // 1. Chosen singularities: index chi at one vertex plus a +1 / -1 pair (sum = chi).
+  //! [chosen_singularities]
   SMDF::Trivial_connection<Mesh> tc(mesh);   // cotan weights, N = 1
   tc.set_singularity(vs[0], double(chi));
   tc.set_singularity(vs[vs.size() / 3], 1);
@@ -48,9 +49,11 @@ int main(int argc, char** argv)
             << ", singularities found:";
   for(const auto& s : found.singularities) std::cout << " v" << std::size_t(s.first) << ":" << s.second;
   std::cout << std::endl;
+  //! [chosen_singularities]
 
   // 2. Turning numbers around the generators (Figure 6): only the right-hand side changes, so
   //    each solve reuses the factorisation.
+  //! [generator_turning]
   for(int t = 0; t < 4 && !tc.generators().empty(); ++t) {
     tc.set_generator_turning_number(0, t);
     st = tc.solve();
@@ -60,6 +63,7 @@ int main(int argc, char** argv)
               << " (solve " << st.solve_seconds << " s, no refactorisation: " << (st.factor_seconds == 0) << ")"
               << std::endl;
   }
+  //! [generator_turning]
 
   // 3. A cross field (N = 4) with indices +-1/4 and two directional constraints.
   //! [cross_field]
@@ -91,11 +95,13 @@ int main(int argc, char** argv)
 
   // 5. A singularity of index +20 (Figure 20), balanced by twenty of index -1: the connection
   //    turns by 40 pi around the vertex even on a coarse mesh.
+  //! [index_20]
   SMDF::Trivial_connection<Mesh> big(mesh);
   big.set_singularity(vs[0], 20 + double(chi));
   for(std::size_t i = 1; i <= 20; ++i) big.set_singularity(vs[i * vs.size() / 21], -1);
   const SMDF::Trivial_connection_status sb = big.solve();
   std::cout << "index +20: holonomy error " << sb.max_holonomy_error << std::endl;
+  //! [index_20]
   if(!sb.success) return EXIT_FAILURE;
   return st.success ? EXIT_SUCCESS : EXIT_FAILURE;
 }
