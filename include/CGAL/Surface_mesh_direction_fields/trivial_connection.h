@@ -523,14 +523,8 @@ private:
             o.order = internal::amd_ordering(nv, cb, r);
             return o;
           }
-          // symmetric adjacency for the split (the pattern above is the strict lower triangle)
-          std::vector<int> adj_begin(std::size_t(nv) + 1, 0), adj(2 * r.size());
-          for(int v = 0; v < nv; ++v)
-            for(int p = cb[v]; p < cb[v + 1]; ++p) { ++adj_begin[std::size_t(v) + 1]; ++adj_begin[std::size_t(r[p]) + 1]; }
-          for(int v = 0; v < nv; ++v) adj_begin[v + 1] += adj_begin[v];
-          std::vector<int> fill(adj_begin.begin(), adj_begin.end() - 1);
-          for(int v = 0; v < nv; ++v)
-            for(int p = cb[v]; p < cb[v + 1]; ++p) { adj[fill[v]++] = r[p]; adj[fill[r[p]]++] = v; }
+          std::vector<int> adj_begin, adj;
+          internal::symmetric_adjacency(nv, cb.data(), r.data(), adj_begin, adj);
           return internal::two_domain_ordering(nv, adj_begin, adj, (std::numeric_limits<int>::max)(),
                                                internal::Cholmod_factor::max_separator, true);
         },

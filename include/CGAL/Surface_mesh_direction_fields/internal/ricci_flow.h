@@ -107,8 +107,7 @@ public:
     ang.assign(m_.number_of_halfedges(), 0.);
     const std::size_t nf = m_.number_of_faces();
     int bad[2] = {-1, -1};   // first invalid face of each half of the face range
-    auto part = [&](int i) {
-      const std::size_t begin = i == 0 ? 0 : nf / 2, end = i == 0 ? nf / 2 : nf;
+    in_two_parts(nf, [&](std::size_t begin, std::size_t end, int i) {
       for(std::size_t f = begin; f < end; ++f) {
         const int h0 = tri_.face_halfedge[f], h1 = tri_.next[h0], h2 = tri_.next[h1];
         const double l0 = len[h0 >> 1], l1 = len[h1 >> 1], l2 = len[h2 >> 1];
@@ -121,8 +120,7 @@ public:
         ang[h1] = corner_angle(l2, l1, l0);
         ang[h2] = corner_angle(l0, l2, l1);
       }
-    };
-    in_two_parts(nf, part);
+    });
     const int first_bad = bad[0] >= 0 ? bad[0] : bad[1];
     if(first_bad >= 0 && bad_face) *bad_face = first_bad;
     return first_bad < 0;
@@ -143,22 +141,24 @@ public:
   {
     const std::size_t ne = m_.number_of_edges();
     len.resize(ne);
-    in_two_parts(ne, [&](int i) {
-      for(std::size_t e = i == 0 ? 0 : ne / 2; e < (i == 0 ? ne / 2 : ne); ++e)
+    in_two_parts(ne, [&](std::size_t begin, std::size_t end, int) {
+      for(std::size_t e = begin; e < end; ++e)
         len[e] = l0_[e] * std::exp(0.5 * (u[tri_.target[2 * e]] + u[tri_.target[2 * e + 1]]));
     });
   }
 
-  // part(0) and part(1), concurrently for large meshes (the per-face and per-edge loops of an
-  // evaluation are independent; 433k faces: 2 x 0.03 s per evaluation)
+  // part(begin, end, i) on the halves i = 0, 1 of [0, size), concurrently for large meshes (the
+  // per-face and per-edge loops of an evaluation are independent; 433k faces: 2 x 0.03 s per
+  // evaluation)
   template <typename Part>
   static void in_two_parts(std::size_t size, const Part& part)
   {
+    auto half = [&](int i) { part(i == 0 ? 0 : size / 2, i == 0 ? size / 2 : size, i); };
     if(size >= 100000) {
-      run_on_two_threads(part);
+      run_on_two_threads(half);
     } else {
-      part(0);
-      part(1);
+      half(0);
+      half(1);
     }
   }
 
@@ -210,10 +210,9 @@ public:
                              (b1 * b1 + b2 * b2 - le * le) / (2 * b1 * b2);
       if(!(cos_sum < -1e-12)) continue;
       if(++flips > budget) return false;
-      // Ptolemy on the Penner coordinates themselves (it commutes with vertex scaling): going
-      // through the current lengths and exp(-(u_c + u_d) / 2) moved the coordinates by the
-      // rounding of exp at every flip, about |u| 1e-16 relative, which for conformal factors of
-      // hundreds of units (a -528 pi cone) held the curvature error near 1e-9.
+      // Ptolemy on the Penner coordinates themselves (it commutes with vertex scaling), not
+      // through the current lengths and exp(-(u_c + u_d) / 2), which moved the coordinates by
+      // the rounding of exp at every flip.
       const double p_new = (l0_[h1 >> 1] * l0_[o1 >> 1] + l0_[h2 >> 1] * l0_[o2 >> 1]) / l0_[e];
       if(!std::isfinite(p_new) || !(p_new > 0)) return false;
       tri_.flip(e);
@@ -545,8 +544,8 @@ private:
     // half cotangent of the corner opposite each halfedge (0 on the border), then w_e per edge
     const std::size_t nf = m_.number_of_faces(), ne = m_.number_of_edges();
     half_cot_.assign(m_.number_of_halfedges(), 0.);
-    in_two_parts(nf, [&](int i) {
-      for(std::size_t f = i == 0 ? 0 : nf / 2; f < (i == 0 ? nf / 2 : nf); ++f) {
+    in_two_parts(nf, [&](std::size_t begin, std::size_t end, int) {
+      for(std::size_t f = begin; f < end; ++f) {
         const int h0 = tri_.face_halfedge[f], h1 = tri_.next[h0], h2 = tri_.next[h1];
         const double l0 = len[h0 >> 1], l1 = len[h1 >> 1], l2 = len[h2 >> 1];
         const double q0 = l0 * l0, q1 = l1 * l1, q2 = l2 * l2;

@@ -73,9 +73,9 @@ public:
       for(int i = 0; i < n; ++i) split.order[i] = i;
       split.n1 = n1;
       split.n2 = n2;
-    } else if(ordering == CHOLMOD_ORDERING && n >= two_domain_min_rows) {
+    } else if(ordering == CHOLMOD_ORDERING && n >= two_domain_min_rows && lower.isCompressed()) {
       std::vector<int> adj_begin, adj;
-      adjacency_of_lower(lower, adj_begin, adj);
+      symmetric_adjacency(n, lower.outerIndexPtr(), lower.innerIndexPtr(), adj_begin, adj);
       split = two_domain_ordering(n, adj_begin, adj, 64, max_separator, false);
     }
     if(split.is_split() && n - split.n1 - split.n2 <= max_separator) {

@@ -191,34 +191,20 @@ inline bool cholesky(int n, double* C)
 #endif
 }
 
-// x = L x (transpose = false) or x = L^T x
-inline void triangular_multiply(int n, const double* L, double* x, bool transpose)
+// x = op(L) x, op(L) one of L, L^T, L^-1, L^-T
+inline void triangular(int n, const double* L, double* x, bool transpose, bool inverse)
 {
   if(n == 0) return;
 #ifdef CGAL_SMDF_DIRECT_BLAS
   const int one = 1;
-  cgal_smdf_dtrmv("L", transpose ? "T" : "N", "N", &n, L, &n, x, &one);
+  (inverse ? cgal_smdf_dtrsv : cgal_smdf_dtrmv)("L", transpose ? "T" : "N", "N", &n, L, &n, x, &one);
 #else
   Eigen::Map<Eigen::VectorXd> v(x, n);
   Const_matrix_map l(L, n, n);
-  const Eigen::VectorXd r = transpose ? Eigen::VectorXd(l.transpose().triangularView<Eigen::Upper>() * v)
-                                      : Eigen::VectorXd(l.triangularView<Eigen::Lower>() * v);
-  v = r;
-#endif
-}
-
-// x = L^-1 x (transpose = false) or x = L^-T x
-inline void triangular_solve(int n, const double* L, double* x, bool transpose)
-{
-  if(n == 0) return;
-#ifdef CGAL_SMDF_DIRECT_BLAS
-  const int one = 1;
-  cgal_smdf_dtrsv("L", transpose ? "T" : "N", "N", &n, L, &n, x, &one);
-#else
-  Eigen::Map<Eigen::VectorXd> v(x, n);
-  Const_matrix_map l(L, n, n);
-  if(transpose) l.transpose().triangularView<Eigen::Upper>().solveInPlace(v);
-  else l.triangularView<Eigen::Lower>().solveInPlace(v);
+  if(inverse && transpose) l.transpose().triangularView<Eigen::Upper>().solveInPlace(v);
+  else if(inverse) l.triangularView<Eigen::Lower>().solveInPlace(v);
+  else if(transpose) v = Eigen::VectorXd(l.transpose().triangularView<Eigen::Upper>() * v);
+  else v = Eigen::VectorXd(l.triangularView<Eigen::Lower>() * v);
 #endif
 }
 
@@ -267,12 +253,10 @@ inline Two_domain_ordering two_domain_ordering(int n, const std::vector<int>& ad
   Two_domain_ordering result;
   std::vector<char> part(static_cast<std::size_t>(n), static_cast<char>(NONE));
   auto degree = [&](int v) { return adj_begin[v + 1] - adj_begin[v]; };
-  int n_dense = 0;
-  for(int v = 0; v < n; ++v) if(degree(v) > dense_degree) { part[v] = SEP; ++n_dense; }
+  for(int v = 0; v < n; ++v) if(degree(v) > dense_degree) part[v] = SEP;
 
   // breadth-first levels from `root` over non-dense nodes; returns the nodes in visiting order
-  std::vector<int> level(std::size_t(n), -1), queue;
-  queue.reserve(std::size_t(n));
+  std::vector<int> level(std::size_t(n), -1);
   auto bfs = [&](int root, std::vector<int>& visited) {
     visited.clear();
     level[root] = 0;
@@ -404,20 +388,21 @@ inline Two_domain_ordering two_domain_ordering(int n, const std::vector<int>& ad
   return result;
 }
 
-// Symmetric adjacency (both directions, no diagonal) of the pattern of a lower-triangular matrix.
-inline void adjacency_of_lower(const Sparse_matrix_int& lower, std::vector<int>& adj_begin, std::vector<int>& adj)
+// Symmetric adjacency (both directions, no diagonal) of a lower-triangular pattern in
+// compressed columns (the diagonal, if present, is skipped).
+inline void symmetric_adjacency(int n, const int* col_begin, const int* rows,
+                                std::vector<int>& adj_begin, std::vector<int>& adj)
 {
-  const int n = int(lower.rows());
   adj_begin.assign(std::size_t(n) + 1, 0);
   for(int j = 0; j < n; ++j)
-    for(Sparse_matrix_int::InnerIterator it(lower, j); it; ++it)
-      if(it.row() != j) { ++adj_begin[std::size_t(it.row()) + 1]; ++adj_begin[std::size_t(j) + 1]; }
+    for(int p = col_begin[j]; p < col_begin[j + 1]; ++p)
+      if(rows[p] != j) { ++adj_begin[std::size_t(rows[p]) + 1]; ++adj_begin[std::size_t(j) + 1]; }
   for(int v = 0; v < n; ++v) adj_begin[v + 1] += adj_begin[v];
   adj.resize(std::size_t(adj_begin[n]));
   std::vector<int> fill(adj_begin.begin(), adj_begin.end() - 1);
   for(int j = 0; j < n; ++j)
-    for(Sparse_matrix_int::InnerIterator it(lower, j); it; ++it)
-      if(it.row() != j) { adj[fill[it.row()]++] = j; adj[fill[j]++] = int(it.row()); }
+    for(int p = col_begin[j]; p < col_begin[j + 1]; ++p)
+      if(rows[p] != j) { adj[fill[rows[p]]++] = j; adj[fill[j]++] = rows[p]; }
 }
 
 class Two_domain_cholesky
@@ -441,12 +426,12 @@ public:
     n1_ = ord.n1;
     n2_ = ord.n2;
     s_ = n_ - n1_ - n2_;
-    pos_.assign(std::size_t(n_), 0);
-    for(int k = 0; k < n_; ++k) pos_[ord.order[k]] = k;
+    std::vector<int> pos(std::size_t(n_), 0);   // input index -> position in the ordering
+    for(int k = 0; k < n_; ++k) pos[ord.order[k]] = k;
     half_[0].rows.assign(ord.order.begin(), ord.order.begin() + n1_);
     half_[1].rows.assign(ord.order.begin() + n1_, ord.order.begin() + n1_ + n2_);
     sep_rows_.assign(ord.order.begin() + n1_ + n2_, ord.order.end());
-    if(!build_halves(lower, message)) return false;
+    if(!build_halves(lower, pos, message)) return false;
     for(Half& h : half_) h.analysed = false;
     return refactor(lower, message);
   }
@@ -502,21 +487,21 @@ public:
       for(int k = 0; k < h.nd; ++k) z[std::size_t(k)] = b[h.rows[std::size_t(k)]];
       h.solve(CHOLMOD_L, z);
       c[i].assign(z.begin() + h.nd, z.end());
-      dense::triangular_multiply(s_, h.lss.data(), c[i].data(), false);
+      dense::triangular(s_, h.lss.data(), c[i].data(), false, false);
     };
     // back: L_i^T [x_i; y] = [z_i; Lss_i^T xs] gives y = xs and x_i = Lii^-T (z_i - Ls_i^T xs)
     auto back = [&](int i, const std::vector<double>& xs) {
       const Half& h = half_[i];
       std::vector<double>& z = h.work;
       std::copy(xs.begin(), xs.end(), z.begin() + h.nd);
-      dense::triangular_multiply(s_, h.lss.data(), z.data() + h.nd, true);
+      dense::triangular(s_, h.lss.data(), z.data() + h.nd, true, false);
       h.solve(CHOLMOD_Lt, z);
       for(int k = 0; k < h.nd; ++k) x[h.rows[std::size_t(k)]] = z[std::size_t(k)];
     };
     run_on_two_threads(forward);
     for(int k = 0; k < s_; ++k) sep[std::size_t(k)] += c[0][std::size_t(k)] + c[1][std::size_t(k)];
-    dense::triangular_solve(s_, schur_.data(), sep.data(), false);
-    dense::triangular_solve(s_, schur_.data(), sep.data(), true);
+    dense::triangular(s_, schur_.data(), sep.data(), false, true);
+    dense::triangular(s_, schur_.data(), sep.data(), true, true);
     run_on_two_threads([&](int i) { back(i, sep); });
     for(int k = 0; k < s_; ++k) x[sep_rows_[std::size_t(k)]] = sep[std::size_t(k)];
     return x;
@@ -653,13 +638,12 @@ private:
   };
 
   int n_ = 0, n1_ = 0, n2_ = 0, s_ = 0;
-  std::vector<int> pos_;                               // input index -> position in the ordering
   std::vector<int> sep_rows_;                          // input row of each separator unknown
   Half half_[2];
   std::vector<std::pair<std::size_t, long long>> sep_dest_;   // nonzero -> entry of dense Ass
   std::vector<double> schur_;                          // Cholesky factor of S (lower)
 
-  bool build_halves(const Sparse_matrix_int& lower, std::string& message)
+  bool build_halves(const Sparse_matrix_int& lower, const std::vector<int>& pos, std::string& message)
   {
     const int ns = n1_ + n2_;
     const std::size_t nnz = std::size_t(lower.nonZeros());
@@ -694,7 +678,7 @@ private:
     for(int j = 0; j < n_; ++j)
       for(int k = outer[j]; k < outer[j + 1]; ++k) {
         if(inner[k] < j) continue;   // the strict upper triangle is ignored, as by CHOLMOD
-        if(!locate(pos_[inner[k]], pos_[j], loc, count)) {
+        if(!locate(pos[inner[k]], pos[j], loc, count)) {
           message = "internal: the two domains of the ordering are coupled";
           return false;
         }
@@ -710,7 +694,7 @@ private:
     for(int j = 0; j < n_; ++j)
       for(int k = outer[j]; k < outer[j + 1]; ++k) {
         if(inner[k] < j) continue;
-        locate(pos_[inner[k]], pos_[j], loc, count);
+        locate(pos[inner[k]], pos[j], loc, count);
         for(int t = 0; t < count; ++t) {
           Half& h = half_[loc[t].half];
           const int q = fill[loc[t].half][std::size_t(loc[t].col)]++;
@@ -718,7 +702,7 @@ private:
           h.dest[std::size_t(k)] = q;
         }
         if(count == 2) {
-          const int r = (std::max)(pos_[inner[k]], pos_[j]) - ns, c = (std::min)(pos_[inner[k]], pos_[j]) - ns;
+          const int r = (std::max)(pos[inner[k]], pos[j]) - ns, c = (std::min)(pos[inner[k]], pos[j]) - ns;
           sep_dest_.emplace_back(std::size_t(k), (long long)c * s_ + r);
         }
       }
