@@ -1380,6 +1380,7 @@ Json run_cone_metric(const Args& args)
   out["converged"] = st.converged;
   out["iterations"] = st.iterations;
   out["max_curvature_error"] = st.max_curvature_error;
+  out["rounding_level"] = st.rounding_level;
   out["time_s"] = st.seconds;
   out["method"] = args.has("no-flips")
                     ? "discrete conformal vertex scaling (Newton, CHOLMOD) on the input triangulation"
@@ -1541,7 +1542,10 @@ const std::vector<Command>& commands()
      "Angles K, kappa: a decimal or p/q in radians, or a multiple of pi written [c][*]pi[/d]\n"
      "(pi, -pi, pi/2, 3*pi/4, -4pi, 0.5pi). Each vertex may be given once, by one option.\n"
      "Prints {status: \"converged\"|\"not_converged\", converged, iterations,\n"
-     "max_curvature_error (radians), time_s, method, message (empty when converged), cones\n"
+     "max_curvature_error (radians), rounding_level (largest rounding level of an angle sum:\n"
+     "the error allowed beyond the tolerance at a vertex next to needle triangles, about 1e-14\n"
+     "elsewhere; see curvature_tolerance in the manual), time_s, method, message (empty when\n"
+     "converged), cones\n"
      "(interior vertices with K != 0), boundary_corners (boundary vertices with kappa != 0),\n"
      "triangulation_changed (the metric lives on an intrinsic triangulation that differs from\n"
      "the input's), edge_flips (intrinsic flips performed), intrinsic_triangulation: {faces,\n"

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 
 namespace CGAL {
 namespace Surface_mesh_direction_fields {
@@ -30,24 +31,52 @@ inline bool is_valid_triangle(double a, double b, double c)
 }
 
 /// \ingroup PkgSurfaceMeshDirectionFieldsIntrinsic
-/// Returns the interior angle opposite to the side of length `opposite` in the triangle with
-/// side lengths `opposite`, `a`, `b`.
+/// Returns the three interior angles of the triangle with side lengths `l0`, `l1`, `l2`; the
+/// i-th angle is the one opposite to side `li`.
 ///
 /// Uses the half-angle form of the law of cosines,
 /// \f$\tan\frac{\gamma}{2} = \sqrt{\frac{(s-a)(s-b)}{s(s-c)}}\f$ with \f$c\f$ the opposite side
-/// and \f$s\f$ the half perimeter, which keeps full relative accuracy for needle and cap
-/// triangles where \f$\arccos\f$ of the cosine rule loses digits. Lengths that violate the
-/// triangle inequality are clamped: the result is \f$\pi\f$ when the opposite side is too long
-/// and \f$0\f$ when it is too short.
+/// and \f$s\f$ the half perimeter, with the factors \f$s - a\f$ evaluated in Kahan's order (sides
+/// sorted \f$x \ge y \ge z\f$, the difference \f$x - y\f$ first, which is exact): every angle keeps
+/// full relative accuracy for needle and cap triangles, where \f$\arccos\f$ of the cosine rule
+/// loses digits and so does the naive \f$s - a\f$ (a needle with sides \f$10^6\f$ times its short
+/// side: \f$5\cdot10^{-11}\f$ absolute error). Lengths that violate the triangle inequality are
+/// clamped: the angle opposite the too long side is \f$\pi\f$ and the two others are \f$0\f$.
+inline std::array<double, 3> triangle_angles(double l0, double l1, double l2)
+{
+  const double l[3] = {l0, l1, l2};
+  int i = 0, j = 1, k = 2;   // l[i] >= l[j] >= l[k]
+  if(l[i] < l[j]) std::swap(i, j);
+  if(l[j] < l[k]) std::swap(j, k);
+  if(l[i] < l[j]) std::swap(i, j);
+  const double x = l[i], y = l[j], z = l[k];
+  const double d = x - y;   // exact by Sterbenz's lemma whenever y >= x / 2, i.e. in every valid triangle
+  double t[3];              // t[m] = 2 (s - l[m])
+  t[i] = z - d;
+  t[j] = z + d;
+  t[k] = x + (y - z);
+  std::array<double, 3> angle;
+  if(!(t[i] > 0)) {
+    angle[i] = CGAL_PI;
+    angle[j] = angle[k] = 0.;
+    return angle;
+  }
+  const double s = x + (y + z);   // 2s
+  for(int m = 0; m < 3; ++m) {
+    const int p = (m + 1) % 3, q = (m + 2) % 3;
+    angle[m] = 2. * std::atan(std::sqrt((t[p] * t[q]) / (s * t[m])));
+  }
+  return angle;
+}
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsIntrinsic
+/// Returns the interior angle opposite to the side of length `opposite` in the triangle with
+/// side lengths `opposite`, `a`, `b`, as triangle_angles(): full relative accuracy for needle
+/// and cap triangles; \f$\pi\f$ if the opposite side is too long for a triangle, \f$0\f$ if
+/// another side is.
 inline double corner_angle(double opposite, double a, double b)
 {
-  const double sa = b + opposite - a;   // 2(s - a)
-  const double sb = a + opposite - b;   // 2(s - b)
-  const double sc = a + b - opposite;   // 2(s - c)
-  const double s = a + b + opposite;    // 2s
-  if(sc <= 0) return CGAL_PI;
-  if(sa <= 0 || sb <= 0) return 0.;
-  return 2. * std::atan(std::sqrt((sa * sb) / (s * sc)));
+  return triangle_angles(opposite, a, b)[0];
 }
 
 /// \ingroup PkgSurfaceMeshDirectionFieldsIntrinsic

@@ -14,6 +14,7 @@
 #include <CGAL/boost/graph/properties.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
+#include <array>
 #include <cmath>
 #include <sstream>
 #include <vector>
@@ -232,9 +233,10 @@ private:
         throw Input_error(Input_error::DEGENERATE_FACE, os.str());
       }
       // angle at source(h) is opposite to next(h)
-      angle[h0] = corner_angle(l1, l0, l2);
-      angle[h1] = corner_angle(l2, l1, l0);
-      angle[h2] = corner_angle(l0, l2, l1);
+      const std::array<double, 3> a = triangle_angles(l0, l1, l2);
+      angle[h0] = a[1];
+      angle[h1] = a[2];
+      angle[h2] = a[0];
     }
   }
 };

@@ -10,6 +10,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/sparse_solvers.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -25,6 +26,7 @@ struct Vertex_scaling_result
   int iterations = 0;
   double max_error = 0;      // max |K - target|
   double scaled_error = 0;   // the convergence measure, see scaled_error()
+  double rounding_level = 0; // max_v of the rounding level, see curvatures()
   std::size_t flips = 0;
   std::string message;
 };
@@ -101,10 +103,18 @@ public:
   bool triangulation_changed() const { return tri_.next != m_.next; }
 
   // Strictly valid triangles whose relative area is above the threshold that Mesh_arrays
-  // rejects as degenerate; writes the corner angles (as Mesh_arrays::angle).
-  bool angles(const std::vector<double>& len, std::vector<double>& ang, int* bad_face = nullptr) const
+  // rejects as degenerate; writes the corner angles (as Mesh_arrays::angle) and, per corner,
+  // how much the angle can move by the rounding of the lengths, in units of 2^-53:
+  // |d theta_m| <= l_m (|d l_m| + |d l_p| + |d l_q|) / 2A (from 2A d theta_m = l_m (d l_m -
+  // cos theta_q d l_p - cos theta_p d l_q)), i.e. l_m P / 2A for a perimeter P and relative
+  // length errors of one unit, times the units of rounding of a length: 4 (its evaluation and
+  // its rounding to double) plus max |u| of the triangle (u is a double, and e^{u / 2} moves
+  // by |u| 2^-54 when u moves by one unit in the last place).
+  bool angles(const std::vector<double>& len, const std::vector<double>& u, std::vector<double>& ang,
+              std::vector<double>& sensitivity, int* bad_face = nullptr) const
   {
     ang.assign(m_.number_of_halfedges(), 0.);
+    sensitivity.assign(m_.number_of_halfedges(), 0.);
     const std::size_t nf = m_.number_of_faces();
     int bad[2] = {-1, -1};   // first invalid face of each half of the face range
     in_two_parts(nf, [&](std::size_t begin, std::size_t end, int i) {
@@ -112,13 +122,21 @@ public:
         const int h0 = tri_.face_halfedge[f], h1 = tri_.next[h0], h2 = tri_.next[h1];
         const double l0 = len[h0 >> 1], l1 = len[h1 >> 1], l2 = len[h2 >> 1];
         const double lmax = (std::max)(l0, (std::max)(l1, l2));
-        if(!is_valid_triangle(l0, l1, l2) || !(triangle_area(l0, l1, l2) > 1e-14 * lmax * lmax)) {
+        const double area = is_valid_triangle(l0, l1, l2) ? triangle_area(l0, l1, l2) : 0.;
+        if(!(area > 1e-14 * lmax * lmax)) {
           bad[i] = int(f);
           return;
         }
-        ang[h0] = corner_angle(l1, l0, l2);
-        ang[h1] = corner_angle(l2, l1, l0);
-        ang[h2] = corner_angle(l0, l2, l1);
+        const std::array<double, 3> a = triangle_angles(l0, l1, l2);
+        ang[h0] = a[1];
+        ang[h1] = a[2];
+        ang[h2] = a[0];
+        const double units = 4 + (std::max)({std::abs(u[tri_.target[h0]]), std::abs(u[tri_.target[h1]]),
+                                             std::abs(u[tri_.target[h2]])});
+        const double c = units * (l0 + l1 + l2) / (2 * area);
+        sensitivity[h0] = c * l1;
+        sensitivity[h1] = c * l2;
+        sensitivity[h2] = c * l0;
       }
     });
     const int first_bad = bad[0] >= 0 ? bad[0] : bad[1];
@@ -126,24 +144,44 @@ public:
     return first_bad < 0;
   }
 
-  void curvatures(const std::vector<double>& ang, std::vector<double>& k) const
+  // Angle defects k and their rounding levels: rounding[v] bounds, to first order, the change
+  // of the angle sum of v by the rounding of the lengths of its triangles (see angles()). It is
+  // 1e-14 on ordinary meshes; near a needle triangle, whose angles at the short side depend on
+  // the difference of its two long sides, it is that needle's aspect ratio times larger
+  // (cheese_cgal.off with one -528 pi cone: sides 3.8e-5 and 4.5e-11 make it 1e-9): no metric
+  // in double edge lengths and conformal factors can be more accurate there.
+  void curvatures(const std::vector<double>& ang, const std::vector<double>& sensitivity,
+                  std::vector<double>& k, std::vector<double>& rounding) const
   {
     const std::size_t nv = m_.number_of_vertices();
     k.assign(nv, 0.);
+    rounding.assign(nv, 0.);
     for(std::size_t h = 0; h < m_.number_of_halfedges(); ++h)
-      if(tri_.face[h] >= 0) k[tri_.source(int(h))] += ang[h];
-    for(std::size_t v = 0; v < nv; ++v)
+      if(tri_.face[h] >= 0) {
+        k[tri_.source(int(h))] += ang[h];
+        rounding[tri_.source(int(h))] += sensitivity[h];
+      }
+    const double unit = std::ldexp(1., -53);
+    for(std::size_t v = 0; v < nv; ++v) {
       if(!m_.is_isolated(int(v)))
         k[v] = (m_.is_boundary_vertex(int(v)) ? CGAL_PI : 2 * CGAL_PI) - k[v];
+      rounding[v] *= unit;
+    }
   }
 
-  void lengths(const std::vector<double>& u, std::vector<double>& len) const
+  // l_e = l0_e e^{u_a / 2} e^{u_b / 2}: three roundings, where exp((u_a + u_b) / 2) also rounds
+  // the sum (relative error |u| 2^-53, 20 units at |u| = 17), and a third of the exponentials
+  void lengths(const std::vector<double>& u, std::vector<double>& len)
   {
-    const std::size_t ne = m_.number_of_edges();
+    const std::size_t ne = m_.number_of_edges(), nv = u.size();
+    half_exp_.resize(nv);
+    in_two_parts(nv, [&](std::size_t begin, std::size_t end, int) {
+      for(std::size_t v = begin; v < end; ++v) half_exp_[v] = std::exp(0.5 * u[v]);
+    });
     len.resize(ne);
     in_two_parts(ne, [&](std::size_t begin, std::size_t end, int) {
       for(std::size_t e = begin; e < end; ++e)
-        len[e] = l0_[e] * std::exp(0.5 * (u[tri_.target[2 * e]] + u[tri_.target[2 * e + 1]]));
+        len[e] = l0_[e] * half_exp_[tri_.target[2 * e]] * half_exp_[tri_.target[2 * e + 1]];
     });
   }
 
@@ -162,16 +200,17 @@ public:
     }
   }
 
-  // max_v |K_v - target_v| / max(1, target angle sum / 2 pi): the rounding error of an angle sum
-  // grows with the number of angles, hence with the cone angle (a -528 pi cone on a genus-133
-  // mesh sums angles to 530 pi and stagnates at about 5e-10 absolute error).
-  double scaled_error(const std::vector<double>& k, const std::vector<double>& target) const
+  // max_v (|K_v - target_v| - rounding_v) / max(1, target angle sum / 2 pi), at least 0: the
+  // error beyond the rounding level of the metric (see curvatures()), relative to the cone angle
+  // where it exceeds 2 pi (the rounding error of an angle sum grows with the number of angles).
+  double scaled_error(const std::vector<double>& k, const std::vector<double>& rounding,
+                      const std::vector<double>& target) const
   {
     double err = 0;
     for(std::size_t v = 0; v < k.size(); ++v) {
       if(m_.is_isolated(int(v))) continue;
       const double sum = (m_.is_boundary_vertex(int(v)) ? CGAL_PI : 2 * CGAL_PI) - target[v];
-      err = (std::max)(err, std::abs(k[v] - target[v]) / (std::max)(1., sum / (2 * CGAL_PI)));
+      err = (std::max)(err, (std::abs(k[v] - target[v]) - rounding[v]) / (std::max)(1., sum / (2 * CGAL_PI)));
     }
     return err;
   }
@@ -184,10 +223,10 @@ public:
     return err;
   }
 
-  // Flips edges until the triangulation is Delaunay for the lengths `len` (updated, as are the
-  // Penner coordinates l0 of the flipped edges). Returns false if flipping does not terminate
+  // Flips edges until the triangulation is Delaunay for the lengths `len` computed by lengths()
+  // (updated, as are the Penner coordinates l0 of the flipped edges). Returns false if flipping does not terminate
   // (a safeguard: on exact arithmetic it always does).
-  bool make_delaunay(const std::vector<double>& u, std::vector<double>& len)
+  bool make_delaunay(std::vector<double>& len)
   {
     const int ne = int(m_.number_of_edges());
     std::vector<int>& queue = queue_;
@@ -217,7 +256,7 @@ public:
       if(!std::isfinite(p_new) || !(p_new > 0)) return false;
       tri_.flip(e);
       l0_[e] = p_new;
-      len[e] = p_new * std::exp(0.5 * (u[tri_.target[h]] + u[tri_.target[o]]));
+      len[e] = p_new * half_exp_[tri_.target[h]] * half_exp_[tri_.target[o]];
       if(!std::isfinite(len[e]) || !(len[e] > 0)) return false;
       for(int g : {h1, h2, o1, o2})
         if(!in_queue_[g >> 1]) { in_queue_[g >> 1] = 1; queue.push_back(g >> 1); }
@@ -244,28 +283,28 @@ public:
   {
     const bool flip = mode == FLIPS;
     Vertex_scaling_result res;
-    std::vector<double> ang, k, u_try, len_try, ang_try, k_try;
+    std::vector<double> ang, sens, k, rho, u_try, len_try, ang_try, sens_try, k_try, rho_try;
     int bad = -1;
     // lengths, Delaunay flips (flip mode), angles and curvatures at u
     auto evaluate = [&](const std::vector<double>& uu, std::vector<double>& l, std::vector<double>& a,
-                        std::vector<double>& kk, int* bad_face) {
+                        std::vector<double>& s, std::vector<double>& kk, std::vector<double>& r, int* bad_face) {
       lengths(uu, l);
       // conformal factors beyond the range of double (exp overflow): not a metric, and flipping
       // on such lengths would corrupt the Penner coordinates
       for(double x : l) if(!(x > 0) || !std::isfinite(x)) return false;
-      if(flip && !make_delaunay(uu, l)) return false;
-      if(!angles(l, a, bad_face)) return false;
-      curvatures(a, kk);
+      if(flip && !make_delaunay(l)) return false;
+      if(!angles(l, uu, a, s, bad_face)) return false;
+      curvatures(a, s, kk, r);
       return true;
     };
-    if(!evaluate(u, len, ang, k, &bad)) {
+    if(!evaluate(u, len, ang, sens, k, rho, &bad)) {
       res.message = flip ? std::string("intrinsic edge flips did not produce a valid triangulation")
                          : "the initial conformal factors give a degenerate triangle (face " +
                                std::to_string(bad) + ")";
       return res;
     }
     if(flip) snapshot();
-    double err = scaled_error(k, target);
+    double err = scaled_error(k, rho, target);
     double norm2 = residual_norm2(k, target);
     // iteration 0 is reported once, by the first phase (the flip phase follows a fixed one)
     if(first_iteration == 0 && !flip) callback(0, max_error(k, target));
@@ -329,7 +368,7 @@ public:
         u_try = u;
         for(std::size_t v = 0; v < col_.size(); ++v)
           if(col_[v] >= 0) u_try[v] += t * du[col_[v]];
-        if(!evaluate(u_try, len_try, ang_try, k_try, &last_bad)) {
+        if(!evaluate(u_try, len_try, ang_try, sens_try, k_try, rho_try, &last_bad)) {
           last_invalid = any_invalid = true;
           cut_face = last_bad;
           if(mode == FIXED_BEFORE_FLIPS && it == 0 && t <= 0.125) break;   // abandoned below
@@ -365,10 +404,10 @@ public:
         break;
       }
       last_full_step = (t == 1);
-      u.swap(u_try); len.swap(len_try); ang.swap(ang_try); k.swap(k_try);
+      u.swap(u_try); len.swap(len_try); ang.swap(ang_try); sens.swap(sens_try); k.swap(k_try); rho.swap(rho_try);
       if(flip) snapshot();
       norm2 = residual_norm2(k, target);
-      err = scaled_error(k, target);
+      err = scaled_error(k, rho, target);
       ++it;
       callback(first_iteration + it, max_error(k, target));
       if(err < 0.5 * best) { best = err; best_iteration = it; }
@@ -407,6 +446,7 @@ public:
     res.iterations = it;
     res.max_error = max_error(k, target);
     res.scaled_error = err;
+    res.rounding_level = rho.empty() ? 0. : *std::max_element(rho.begin(), rho.end());
     res.converged = err <= tol;
     res.flips = flips_;
     if(!res.converged && res.message.empty()) {
@@ -453,6 +493,7 @@ private:
   Sparse_matrix_int L_;    // lower triangle of the reduced Hessian
   std::vector<int> edge_pos_, diag_pos_;
   std::vector<double> w_, half_cot_;
+  std::vector<double> half_exp_;   // per vertex: e^{u / 2} of the last lengths()
   Cholmod_factor chol_;
 
   double residual_norm2(const std::vector<double>& k, const std::vector<double>& target) const
