@@ -4,6 +4,7 @@
 // Gauss-Bonnet, holonomy of dual-cell unions, invariance under rigid motion and scaling,
 // generalised vs. Levi-Civita holonomy, and the documented error of every bad mesh.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Exact_rational.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
@@ -381,8 +382,61 @@ void test_bad_soups()
   }
 }
 
+// triangle_angles() against tan^2(gamma / 2) = (s - a)(s - b) / (s (s - c)) evaluated exactly in
+// rationals from the same double lengths, on ordinary, needle (two long sides, one short),
+// cap (one angle near pi) and invalid triangles; the angles sum to pi.
+void test_triangle_angles()
+{
+  typedef CGAL::Exact_rational Q;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(0., 1.);
+  auto reference = [](double l0, double l1, double l2, int m) {
+    const Q a(l0), b(l1), c(l2);
+    const Q s = a + b + c;
+    const Q t[3] = {b + c - a, a + c - b, a + b - c};
+    const Q r = t[(m + 1) % 3] * t[(m + 2) % 3] / (s * t[m]);
+    return 2 * std::atan(std::sqrt(static_cast<long double>(CGAL::to_double(r))));
+  };
+  double worst = 0, worst_sum = 0;
+  for(int i = 0; i < 3000; ++i) {
+    double l[3];
+    const int kind = i % 3;
+    const double scale = std::pow(10., 12 * unit(rng) - 6);
+    if(kind == 0) {          // ordinary
+      for(double& x : l) x = scale * (0.5 + unit(rng));
+    } else if(kind == 1) {   // needle: long sides x and x - d, short side between d and 2x - d
+      const double x = scale, shortest = x * std::pow(10., -8 * unit(rng) - 1);
+      const double d = shortest * unit(rng);
+      l[0] = x; l[1] = x - d; l[2] = shortest;
+    } else {                 // cap: the long side almost the sum of the two others
+      const double a = scale * (0.1 + unit(rng)), b = scale * (0.1 + unit(rng));
+      l[0] = a; l[1] = b; l[2] = (a + b) * (1 - std::pow(10., -10 * unit(rng) - 1));
+    }
+    std::shuffle(l, l + 3, rng);
+    if(!SMDF::is_valid_triangle(l[0], l[1], l[2])) continue;
+    const std::array<double, 3> ang = SMDF::triangle_angles(l[0], l[1], l[2]);
+    double sum = 0;
+    for(int m = 0; m < 3; ++m) {
+      const long double ref = reference(l[0], l[1], l[2], m);
+      worst = (std::max)(worst, double(std::abs(ang[m] - ref) / (ref + 1e-300L)));
+      sum += ang[m];
+      SMDF_CHECK(SMDF::corner_angle(l[m], l[(m + 1) % 3], l[(m + 2) % 3]) == ang[m]);
+    }
+    worst_sum = (std::max)(worst_sum, std::abs(sum - CGAL_PI));
+  }
+  std::cout << "triangle_angles: worst relative error " << worst << ", angle sum - pi " << worst_sum << std::endl;
+  // a few roundings of the factors, the square root and the arctangent
+  SMDF_CHECK_MSG(worst <= 1e-15, "triangle_angles relative error " << worst);
+  SMDF_CHECK_MSG(worst_sum <= 1e-14, "triangle_angles sum " << worst_sum);
+  // clamping: the angle opposite a too long side is pi, the others 0
+  const std::array<double, 3> bad = SMDF::triangle_angles(1., 3., 1.);
+  SMDF_CHECK(bad[1] == CGAL_PI && bad[0] == 0 && bad[2] == 0);
+  SMDF_CHECK(SMDF::corner_angle(3., 1., 1.) == CGAL_PI && SMDF::corner_angle(1., 3., 1.) == 0.);
+}
+
 int main()
 {
+  test_triangle_angles();
   test_bad_soups();
   Tests<Surface_mesh> ts("Surface_mesh");
   Tests<Polyhedron> tp("Polyhedron_3");

@@ -910,6 +910,8 @@ def test_cone_metric(smdf, c, torus, tmp, verts, faces):
                 "cone-metric torus: converged (%r)" % r.get("status"))
         c.check(is_number(r.get("max_curvature_error")) and r["max_curvature_error"] <= 1e-9,
                 "cone-metric torus: max curvature error %r <= 1e-9" % r.get("max_curvature_error"))
+        c.check(is_number(r.get("rounding_level")) and 0 < r["rounding_level"] < 1e-12,
+                "cone-metric torus: rounding level %r in (0, 1e-12)" % r.get("rounding_level"))
         c.check(isinstance(r.get("iterations"), int) and r["iterations"] >= 0 and
                 is_number(r.get("time_s")) and r["time_s"] >= 0 and "Newton" in r.get("method", ""),
                 "cone-metric torus: iterations, time_s, method")
