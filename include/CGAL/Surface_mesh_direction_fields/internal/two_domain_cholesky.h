@@ -119,6 +119,52 @@ private:
   int dynamic_ = 0, threads_ = 1;
 };
 
+// The same for OpenBLAS's own thread pool, whose size is a process-wide setting: while the two
+// halves are factored or solved concurrently, each BLAS call runs in its calling thread. With
+// two pool threads, the two callers queued for the pool and its threads spun on sched_yield
+// (433k-face cone metric: 5.5 s instead of 3.2-4.6 s, 4 s of system time). The setting is
+// restored afterwards; BLAS calls of other threads of the process in that window also run on one
+// thread. Nothing happens with other BLAS libraries (looked up at run time).
+class Single_thread_blas_scope
+{
+public:
+  Single_thread_blas_scope()
+  {
+    const Api& api = get_api();
+    if(!api.ok) return;
+    threads_ = api.get_num_threads();
+    if(threads_ > 1) api.set_num_threads(1);
+  }
+  ~Single_thread_blas_scope()
+  {
+    if(threads_ > 1) get_api().set_num_threads(threads_);
+  }
+  Single_thread_blas_scope(const Single_thread_blas_scope&) = delete;
+  Single_thread_blas_scope& operator=(const Single_thread_blas_scope&) = delete;
+
+private:
+  struct Api
+  {
+    void (*set_num_threads)(int) = nullptr;
+    int (*get_num_threads)() = nullptr;
+    bool ok = false;
+  };
+  static const Api& get_api()
+  {
+    static const Api api = [] {
+      Api a;
+#ifdef CGAL_SMDF_HAS_DLSYM
+      a.set_num_threads = reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+      a.get_num_threads = reinterpret_cast<int (*)()>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
+      a.ok = a.set_num_threads && a.get_num_threads;
+#endif
+      return a;
+    }();
+    return api;
+  }
+  int threads_ = 0;
+};
+
 typedef Eigen::SparseMatrix<double, Eigen::ColMajor, int> Sparse_matrix_int;
 
 // AMD fill-reducing ordering of the symmetric pattern with n nodes whose strictly lower
@@ -453,7 +499,10 @@ public:
     std::vector<double> ass(std::size_t(s_) * std::size_t(s_), 0.);
     for(const auto& d : sep_dest_) ass[std::size_t(d.second)] += value[d.first];
     std::string m0, m1;
-    run_on_two_threads([&](int i) { (i == 0 ? m0 : m1) = half_[i].factor_and_schur(s_); });
+    {
+      Single_thread_blas_scope one_blas_thread;
+      run_on_two_threads([&](int i) { (i == 0 ? m0 : m1) = half_[i].factor_and_schur(s_); });
+    }
     if(!m0.empty() || !m1.empty()) { message = m0.empty() ? m1 : m0; return false; }
     // S = S_1 + S_2 - Ass (lower triangles), then its Cholesky factor
     schur_.resize(ass.size());
@@ -498,6 +547,7 @@ public:
       h.solve(CHOLMOD_Lt, z);
       for(int k = 0; k < h.nd; ++k) x[h.rows[std::size_t(k)]] = z[std::size_t(k)];
     };
+    Single_thread_blas_scope one_blas_thread;
     run_on_two_threads(forward);
     for(int k = 0; k < s_; ++k) sep[std::size_t(k)] += c[0][std::size_t(k)] + c[1][std::size_t(k)];
     dense::triangular(s_, schur_.data(), sep.data(), false, true);
