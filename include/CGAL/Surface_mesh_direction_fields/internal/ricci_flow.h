@@ -148,8 +148,8 @@ public:
   // of the angle sum of v by the rounding of the lengths of its triangles (see angles()). It is
   // 1e-14 on ordinary meshes; near a needle triangle, whose angles at the short side depend on
   // the difference of its two long sides, it is that needle's aspect ratio times larger
-  // (cheese_cgal.off with one -528 pi cone: sides 3.8e-5 and 4.5e-11 make it 1e-9): no metric
-  // in double edge lengths and conformal factors can be more accurate there.
+  // (cheese_cgal.off with one -528 pi cone: sides 3.8e-5 and 4.5e-11 and |u| = 17 make it 1e-8):
+  // no metric in double edge lengths and conformal factors can be more accurate there.
   void curvatures(const std::vector<double>& ang, const std::vector<double>& sensitivity,
                   std::vector<double>& k, std::vector<double>& rounding) const
   {
@@ -224,8 +224,8 @@ public:
   }
 
   // Flips edges until the triangulation is Delaunay for the lengths `len` computed by lengths()
-  // (updated, as are the Penner coordinates l0 of the flipped edges). Returns false if flipping does not terminate
-  // (a safeguard: on exact arithmetic it always does).
+  // (updated, as are the Penner coordinates l0 of the flipped edges). Returns false if flipping
+  // does not terminate (a safeguard: on exact arithmetic it always does).
   bool make_delaunay(std::vector<double>& len)
   {
     const int ne = int(m_.number_of_edges());
