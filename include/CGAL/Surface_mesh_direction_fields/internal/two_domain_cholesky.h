@@ -167,6 +167,27 @@ private:
 
 typedef Eigen::SparseMatrix<double, Eigen::ColMajor, int> Sparse_matrix_int;
 
+// CHOLMOD's view (no copy) of the lower triangle of a symmetric n x n matrix in compressed
+// columns with sorted rows; values == nullptr: the pattern only.
+inline cholmod_sparse lower_triangle_view(int n, int* col_begin, int* rows, std::size_t nonzeros, double* values)
+{
+  cholmod_sparse A;
+  A.nrow = A.ncol = std::size_t(n);
+  A.nzmax = nonzeros;
+  A.p = col_begin;
+  A.i = rows;
+  A.nz = nullptr;
+  A.x = values;
+  A.z = nullptr;
+  A.stype = -1;
+  A.itype = CHOLMOD_INT;
+  A.xtype = values ? CHOLMOD_REAL : CHOLMOD_PATTERN;
+  A.dtype = CHOLMOD_DOUBLE;
+  A.sorted = 1;
+  A.packed = 1;
+  return A;
+}
+
 // AMD fill-reducing ordering of the symmetric pattern with n nodes whose strictly lower
 // triangle is given in compressed columns (col_begin of size n + 1, sorted rows without
 // duplicates): order[k] is the node eliminated k-th. Empty if CHOLMOD fails. Used to order the
@@ -178,19 +199,7 @@ inline std::vector<int> amd_ordering(int n, std::vector<int>& col_begin, std::ve
   if(n == 0) return order;
   cholmod_common cc;
   cholmod_start(&cc);
-  cholmod_sparse A;
-  A.nrow = A.ncol = std::size_t(n);
-  A.nzmax = rows.size();
-  A.p = col_begin.data();
-  A.i = rows.data();
-  A.nz = nullptr;
-  A.x = A.z = nullptr;
-  A.stype = -1;
-  A.itype = CHOLMOD_INT;
-  A.xtype = CHOLMOD_PATTERN;
-  A.dtype = CHOLMOD_DOUBLE;
-  A.sorted = 1;
-  A.packed = 1;
+  cholmod_sparse A = lower_triangle_view(n, col_begin.data(), rows.data(), rows.size(), nullptr);
   const bool ok = cholmod_amd(&A, nullptr, 0, order.data(), &cc) && cc.status == CHOLMOD_OK;
   cholmod_finish(&cc);
   if(!ok) order.clear();
@@ -593,24 +602,7 @@ private:
       if(factor) cholmod_free_factor(&factor, &cc);
       cholmod_finish(&cc);
     }
-    cholmod_sparse view()
-    {
-      cholmod_sparse A;
-      A.nrow = A.ncol = std::size_t(n);
-      A.nzmax = x.size();
-      A.p = p.data();
-      A.i = i.data();
-      A.nz = nullptr;
-      A.x = x.data();
-      A.z = nullptr;
-      A.stype = -1;
-      A.itype = CHOLMOD_INT;
-      A.xtype = CHOLMOD_REAL;
-      A.dtype = CHOLMOD_DOUBLE;
-      A.sorted = 1;
-      A.packed = 1;
-      return A;
-    }
+    cholmod_sparse view() { return lower_triangle_view(n, p.data(), i.data(), x.size(), x.data()); }
     // empty string on success
     std::string factor_and_schur(int s)
     {
