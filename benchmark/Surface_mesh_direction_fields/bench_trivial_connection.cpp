@@ -1,4 +1,4 @@
-// Benchmarks of Trivial_connection (trivial_connection.h) on meshes of 10k, 100k, 400k and 1M
+// Benchmarks of Trivial_connection (Trivial_connection.h) on meshes of 10k, 100k, 400k and 1M
 // faces (see benchmark_util.h for how the meshes are made and benchmark/README.md for the output).
 //
 // Targets (issue), `_median` rows:
@@ -17,7 +17,7 @@
 // +1/N, -1/N pair when chi = 0 (generated torus), at random vertices (fixed seed).
 #include "benchmark_util.h"
 
-#include <CGAL/Surface_mesh_direction_fields/trivial_connection.h>
+#include <CGAL/Surface_mesh_direction_fields/Trivial_connection.h>
 
 #include <cmath>
 #include <random>

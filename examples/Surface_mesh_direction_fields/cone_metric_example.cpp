@@ -11,7 +11,7 @@
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/intrinsic_geometry.h>
 #include <CGAL/Surface_mesh_direction_fields/Intrinsic_triangulation.h>
-#include <CGAL/Surface_mesh_direction_fields/read_triangle_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/IO/read_triangle_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/topology.h>
 
 #include <algorithm>

@@ -10,7 +10,7 @@
 #include <CGAL/Surface_mesh_direction_fields/holonomy.h>
 #include <CGAL/Surface_mesh_direction_fields/homology_generators.h>
 #include <CGAL/Surface_mesh_direction_fields/intrinsic_geometry.h>
-#include <CGAL/Surface_mesh_direction_fields/read_triangle_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/IO/read_triangle_mesh.h>
 
 #include <algorithm>
 #include <cmath>

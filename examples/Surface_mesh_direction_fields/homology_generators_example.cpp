@@ -9,7 +9,7 @@
 
 #include <CGAL/Surface_mesh_direction_fields/Euclidean_edge_length_map.h>
 #include <CGAL/Surface_mesh_direction_fields/homology_generators.h>
-#include <CGAL/Surface_mesh_direction_fields/read_triangle_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/IO/read_triangle_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/topology.h>
 
 #include <cstdlib>

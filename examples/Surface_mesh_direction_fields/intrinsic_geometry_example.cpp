@@ -8,7 +8,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Surface_mesh_direction_fields/intrinsic_geometry.h>
-#include <CGAL/Surface_mesh_direction_fields/read_triangle_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/IO/read_triangle_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/topology.h>
 
 #include <algorithm>

@@ -5,9 +5,9 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
-#include <CGAL/Surface_mesh_direction_fields/read_triangle_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/IO/read_triangle_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/topology.h>
-#include <CGAL/Surface_mesh_direction_fields/trivial_connection.h>
+#include <CGAL/Surface_mesh_direction_fields/Trivial_connection.h>
 #include <CGAL/Surface_mesh_direction_fields/field_singularities.h>
 
 #include <cstdlib>

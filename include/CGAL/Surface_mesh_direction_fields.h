@@ -1,6 +1,8 @@
 // Copyright (c) 2026 The Surface_mesh_direction_fields authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
-// Umbrella header: includes every public header of the package.
+// Umbrella header: includes every public header of the core (no I/O). Mesh reading and SVG
+// pictures are in <CGAL/Surface_mesh_direction_fields/IO.h>; define
+// CGAL_SURFACE_MESH_DIRECTION_FIELDS_WITH_IO before including this header to get them too.
 
 #ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_H
 #define CGAL_SURFACE_MESH_DIRECTION_FIELDS_H
@@ -13,9 +15,13 @@
 #include <CGAL/Surface_mesh_direction_fields/topology.h>
 #include <CGAL/Surface_mesh_direction_fields/homology_generators.h>
 #include <CGAL/Surface_mesh_direction_fields/holonomy.h>
-#include <CGAL/Surface_mesh_direction_fields/read_triangle_mesh.h>
-#include <CGAL/Surface_mesh_direction_fields/trivial_connection.h>
+#include <CGAL/Surface_mesh_direction_fields/Trivial_connection.h>
 #include <CGAL/Surface_mesh_direction_fields/field_singularities.h>
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
+#include <CGAL/Surface_mesh_direction_fields/Intrinsic_triangulation.h>
+
+#ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_WITH_IO
+#include <CGAL/Surface_mesh_direction_fields/IO.h>
+#endif
 
 #endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_H

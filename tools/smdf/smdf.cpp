@@ -24,10 +24,10 @@
 #include <CGAL/Surface_mesh_direction_fields/homology_generators.h>
 #include <CGAL/Surface_mesh_direction_fields/intrinsic_geometry.h>
 #include <CGAL/Surface_mesh_direction_fields/parameters.h>
-#include <CGAL/Surface_mesh_direction_fields/read_triangle_mesh.h>
-#include <CGAL/Surface_mesh_direction_fields/svg_writer.h>
+#include <CGAL/Surface_mesh_direction_fields/IO/read_triangle_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/IO/svg_writer.h>
 #include <CGAL/Surface_mesh_direction_fields/topology.h>
-#include <CGAL/Surface_mesh_direction_fields/trivial_connection.h>
+#include <CGAL/Surface_mesh_direction_fields/Trivial_connection.h>
 
 #include <algorithm>
 #include <array>

@@ -1,8 +1,8 @@
 // Copyright (c) 2026 The Surface_mesh_direction_fields authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_SVG_WRITER_H
-#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_SVG_WRITER_H
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_IO_SVG_WRITER_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_IO_SVG_WRITER_H
 
 #include <CGAL/Surface_mesh_direction_fields/errors.h>
 #include <CGAL/Surface_mesh_direction_fields/parameters.h>
@@ -502,4 +502,4 @@ void write_field_svg(std::ostream& os, const TriangleMesh& tm, int N,
 } // namespace Surface_mesh_direction_fields
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_SVG_WRITER_H
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_IO_SVG_WRITER_H

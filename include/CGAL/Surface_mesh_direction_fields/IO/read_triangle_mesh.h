@@ -1,8 +1,8 @@
 // Copyright (c) 2026 The Surface_mesh_direction_fields authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 
-#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_READ_TRIANGLE_MESH_H
-#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_READ_TRIANGLE_MESH_H
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_IO_READ_TRIANGLE_MESH_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_IO_READ_TRIANGLE_MESH_H
 
 #include <CGAL/Surface_mesh_direction_fields/errors.h>
 
@@ -285,4 +285,4 @@ Polygon_soup_report read_triangle_mesh(const std::string& filename, TriangleMesh
 } // namespace Surface_mesh_direction_fields
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_READ_TRIANGLE_MESH_H
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_IO_READ_TRIANGLE_MESH_H
