@@ -11,6 +11,7 @@
 #include <CGAL/boost/graph/properties_Polyhedron_3.h>
 
 #include <CGAL/Surface_mesh_direction_fields.h>
+#include <CGAL/Surface_mesh_direction_fields/IO/read_triangle_mesh.h>
 
 #include <Eigen/SparseCore>
 #include <Eigen/SparseCholesky>

@@ -9,6 +9,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Surface_mesh_direction_fields.h>
+#include <CGAL/Surface_mesh_direction_fields/IO/read_triangle_mesh.h>
 
 #include <Eigen/SparseCholesky>
 
@@ -354,7 +355,7 @@ void two_domain_solver()
     for(int i = 0; i < n; ++i) b[i] = std::sin(1.3 * i) + 0.1;
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> ref(L.cast<double>());
     for(int pass = 0; pass < 2; ++pass) {
-      SI::Cholmod_factor f;
+      SMDF::Cholmod_cholesky f;
       std::string msg;
       SMDF_CHECK(f.factor(L, msg));
       SMDF_CHECK(f.separator_size() >= 0);   // the two-domain path was taken
@@ -370,7 +371,7 @@ void two_domain_solver()
       // not positive definite: reported, not a crash
       SI::Sparse_matrix_int L3 = L;
       L3.coeffRef(n - 1, n - 1) = -1;
-      SI::Cholmod_factor g;
+      SMDF::Cholmod_cholesky g;
       std::string msg3;
       SMDF_CHECK(!g.factor(L3, msg3) && msg3.find("not positive definite") != std::string::npos);
       L = L2;

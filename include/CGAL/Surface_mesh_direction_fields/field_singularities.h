@@ -6,10 +6,8 @@
 
 #include <CGAL/Surface_mesh_direction_fields/errors.h>
 #include <CGAL/Surface_mesh_direction_fields/parameters.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/Mesh_arrays.h>
+#include <CGAL/Surface_mesh_direction_fields/Intrinsic_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/development.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/topology.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/tree_cotree.h>
 
 #include <cmath>
 #include <utility>
@@ -56,6 +54,14 @@ struct Field_topology
 ///     \cgalParamDescription{the intrinsic metric} \cgalParamType{readable edge property map}
 ///     \cgalParamDefault{Euclidean lengths from `vertex_point_map`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{intrinsic_mesh}
+///     \cgalParamDescription{the intrinsic mesh of `tm` to read the field on (e.g. `Trivial_connection::intrinsic_mesh()`), instead of building one; replaces `edge_length_map`, `vertex_point_map` and the index maps}
+///     \cgalParamType{`Intrinsic_mesh<TriangleMesh>`}
+///     \cgalParamDefault{one built from `tm` and the other parameters}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map, face_index_map, edge_index_map}
+///     \cgalParamDescription{the numbering of the simplices, as in `Intrinsic_mesh`}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 template <typename TriangleMesh, typename FaceAngleMap,
           typename NamedParameters = parameters::Default_named_parameters>
@@ -67,8 +73,8 @@ Field_topology<TriangleMesh> field_singularities(const TriangleMesh& tm, const F
   const int N = choose_parameter(get_parameter(np, internal_np::symmetry_order), 1);
   if(N < 1)
     throw Input_error(Input_error::INVALID_ARGUMENT, "symmetry order N must be at least 1");
-  internal::Mesh_arrays<TriangleMesh> m(tm, np);
-  internal::Topology_arrays topo(m);
+  const Intrinsic_mesh<TriangleMesh> im = internal::get_intrinsic_mesh(tm, np);
+  const internal::Mesh_arrays<TriangleMesh>& m = im.arrays();
   std::vector<double> beta(m.number_of_faces());
   for(std::size_t f = 0; f < beta.size(); ++f) {
     beta[f] = double(get(angles, m.faces[f]));
@@ -79,8 +85,7 @@ Field_topology<TriangleMesh> field_singularities(const TriangleMesh& tm, const F
   auto delta = [&](int h) {
     return std::remainder(beta[m.face[h]] - beta[m.face[h ^ 1]] - internal::transport_increment(m, h), period);
   };
-  std::vector<double> K;
-  internal::vertex_curvatures(m, K);
+  const std::vector<double>& K = im.curvatures();
   Field_topology<TriangleMesh> r;
   auto round_to = [&](double s) {
     const double k = s / (2 * CGAL_PI) * N;
@@ -96,7 +101,7 @@ Field_topology<TriangleMesh> field_singularities(const TriangleMesh& tm, const F
     const double k = round_to(s);
     if(k != 0) r.singularities.push_back(std::make_pair(m.vertices[v], k));
   }
-  for(const auto& g : internal::tree_cotree(m, topo)) {
+  for(const auto& g : im.generator_arrays()) {
     double s = internal::wrap_angle(internal::transport_along(m, g.dual));
     for(int h : g.dual) s += delta(h);
     r.generator_turning_numbers.push_back(round_to(s));

@@ -5,6 +5,7 @@
 #define CGAL_SURFACE_MESH_DIRECTION_FIELDS_HOLONOMY_H
 
 #include <CGAL/Surface_mesh_direction_fields/intrinsic_triangle.h>
+#include <CGAL/Surface_mesh_direction_fields/Intrinsic_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh_arrays.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/development.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/tree_cotree.h>
@@ -79,13 +80,15 @@ public:
   typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
 
   /// Precomputes the metric. Named parameters as in corner_angle(): `edge_length_map`
-  /// (default: Euclidean lengths from `vertex_point_map`).
+  /// (default: Euclidean lengths from `vertex_point_map`), or `intrinsic_mesh` (an
+  /// `Intrinsic_mesh` of `tm` to share instead of building one), and the index maps of
+  /// `Intrinsic_mesh`.
   /// Throws `Input_error` for non-triangle faces, non-manifold vertices, and faces whose
   /// lengths are degenerate.
   template <typename NamedParameters = parameters::Default_named_parameters>
   explicit Intrinsic_holonomy(const TriangleMesh& tm,
                               const NamedParameters& np = parameters::default_values())
-    : tm_(tm), m_(tm, np)
+    : tm_(tm), im_(internal::get_intrinsic_mesh(tm, np)), m_(im_.arrays())
   {}
 
   /// Levi-Civita holonomy of a dual cycle (see `Homology_generator::dual_cycle` for the
@@ -181,11 +184,10 @@ public:
 
   /// The homology generators of the mesh, as tree_cotree_generators() computes them, from the
   /// connectivity already stored in this object (no second pass over the mesh).
-  std::vector<Homology_generator<TriangleMesh>> tree_cotree_generators() const
-  {
-    internal::Topology_arrays t(m_);
-    return internal::to_homology_generators(m_, internal::tree_cotree(m_, t), tm_);
-  }
+  std::vector<Homology_generator<TriangleMesh>> tree_cotree_generators() const { return im_.generators(); }
+
+  /// The intrinsic mesh this object reads holonomies on.
+  const Intrinsic_mesh<TriangleMesh>& intrinsic_mesh() const { return im_; }
 
   /// Generalised holonomy of a primal edge loop: that of dual_cycle_along_primal_loop().
   template <typename HalfedgeRange>
@@ -204,7 +206,8 @@ private:
   }
 
   const TriangleMesh& tm_;
-  internal::Mesh_arrays<TriangleMesh> m_;
+  Intrinsic_mesh<TriangleMesh> im_;
+  const internal::Mesh_arrays<TriangleMesh>& m_;   // im_'s arrays
 };
 
 /// \ingroup PkgSurfaceMeshDirectionFieldsHolonomy

@@ -85,10 +85,13 @@ to_homology_generators(const Mesh_arrays<TriangleMesh>& m, const std::vector<Gen
 /// (ordered as the loops of mesh_topology()). Runs in linear time.
 /// Throws `Input_error` for non-triangle faces and non-manifold vertices.
 /// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
-template <typename TriangleMesh>
-std::vector<Homology_generator<TriangleMesh>> tree_cotree_generators(const TriangleMesh& tm)
+/// Named parameters: `vertex_index_map`, `face_index_map`, `edge_index_map` as in mesh_topology().
+/// The generators depend on the numbering (the trees grow in index order).
+template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
+std::vector<Homology_generator<TriangleMesh>>
+tree_cotree_generators(const TriangleMesh& tm, const NamedParameters& np = parameters::default_values())
 {
-  internal::Mesh_arrays<TriangleMesh> m(tm);
+  internal::Mesh_arrays<TriangleMesh> m(tm, np, typename internal::Mesh_arrays<TriangleMesh>::Connectivity_only());
   internal::Topology_arrays t(m);
   return internal::to_homology_generators(m, internal::tree_cotree(m, t), tm);
 }

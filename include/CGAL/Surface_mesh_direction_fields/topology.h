@@ -66,11 +66,22 @@ struct Mesh_topology
 /// non-manifold (a halfedge data structure cannot hold non-manifold edges or inconsistent
 /// orientations, so those are rejected when reading, see read_triangle_mesh()).
 /// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
-template <typename TriangleMesh>
-Mesh_topology<TriangleMesh> mesh_topology(const TriangleMesh& tm)
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{numbers the vertices 0 .. n-1 (the numbers used in error messages); must be a bijection}
+///     \cgalParamType{a readable property map with `vertex_descriptor` keys and integer values}
+///     \cgalParamDefault{vertices numbered in the order of `vertices(tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_index_map, edge_index_map}
+///     \cgalParamDescription{the same for faces and edges}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
+Mesh_topology<TriangleMesh> mesh_topology(const TriangleMesh& tm,
+                                          const NamedParameters& np = parameters::default_values())
 {
   typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
-  internal::Mesh_arrays<TriangleMesh> m(tm);
+  internal::Mesh_arrays<TriangleMesh> m(tm, np, typename internal::Mesh_arrays<TriangleMesh>::Connectivity_only());
   internal::Topology_arrays t(m);
   Mesh_topology<TriangleMesh> r;
   for(const auto& c : t.components)

@@ -77,15 +77,22 @@ public:
   }
 
   // Builds connectivity only (no metric).
-  explicit Mesh_arrays(const TriangleMesh& tm) { build_connectivity(tm); }
+  explicit Mesh_arrays(const TriangleMesh& tm) { build_connectivity(tm, parameters::default_values()); }
 
   // Builds connectivity and the metric given by `np` (edge_length_map or vertex_point_map).
+  // Simplices are numbered as the index maps of `np` say (vertex_index_map, face_index_map,
+  // edge_index_map), else in iteration order.
   template <typename NamedParameters>
   Mesh_arrays(const TriangleMesh& tm, const NamedParameters& np)
   {
-    build_connectivity(tm);
+    build_connectivity(tm, np);
     set_lengths(tm, np);
   }
+
+  struct Connectivity_only {};
+  // Connectivity only, numbered as the index maps of `np` say.
+  template <typename NamedParameters>
+  Mesh_arrays(const TriangleMesh& tm, const NamedParameters& np, Connectivity_only) { build_connectivity(tm, np); }
 
   template <typename NamedParameters>
   void set_lengths(const TriangleMesh& tm, const NamedParameters& np)
@@ -102,45 +109,91 @@ public:
     compute_angles();
   }
 
-  int vertex_index(vertex_descriptor v) const { return static_cast<int>(get(vim_, v)); }
-  int face_index(face_descriptor f) const { return static_cast<int>(get(fim_, f)); }
+  int vertex_index(vertex_descriptor v) const
+  {
+    if constexpr(Is_surface_mesh<TriangleMesh>::value) { if(direct_vertices_) return int(v.idx()); }
+    return get(vim_, v);
+  }
+  int face_index(face_descriptor f) const
+  {
+    if constexpr(Is_surface_mesh<TriangleMesh>::value) { if(direct_faces_) return int(f.idx()); }
+    return get(fim_, f);
+  }
   int halfedge_index(halfedge_descriptor h, const TriangleMesh&) const
   {
-    if constexpr(Is_surface_mesh<TriangleMesh>::value) { if(direct_) return int(h.idx()); }
+    if constexpr(Is_surface_mesh<TriangleMesh>::value) { if(direct_halfedges_) return int(h.idx()); }
     return get(him_, h);
   }
   int edge_index(edge_descriptor e, const TriangleMesh& tm) const { return halfedge_index(halfedge(e, tm), tm) >> 1; }
 
 private:
-  typedef typename CGAL::GetInitializedVertexIndexMap<TriangleMesh>::const_type VIM;
-  typedef typename CGAL::GetInitializedFaceIndexMap<TriangleMesh>::const_type FIM;
+  typedef typename boost::property_map<TriangleMesh, CGAL::dynamic_vertex_property_t<int>>::const_type VIM;
+  typedef typename boost::property_map<TriangleMesh, CGAL::dynamic_face_property_t<int>>::const_type FIM;
   // Our own halfedge numbering 2e + s. (CGAL 5.5's edge index map of a Polyhedron_3 without
-  // ids does not compile, so edge indices are not taken from CGAL.)
+  // ids does not compile, so edge indices are not taken from CGAL's internal maps.)
   typedef typename boost::property_map<TriangleMesh, CGAL::dynamic_halfedge_property_t<int>>::const_type HIM;
   VIM vim_;
   FIM fim_;
   HIM him_;
-  // Surface_mesh without removed elements: descriptors' idx() already is our numbering
-  // (halfedges 2e and 2e + 1 of edge e), so no halfedge property is allocated.
-  bool direct_ = false;
+  // Surface_mesh without removed elements and without user index maps: descriptors' idx()
+  // already is our numbering (halfedges 2e and 2e + 1 of edge e), so no property is allocated.
+  bool direct_vertices_ = false, direct_faces_ = false, direct_halfedges_ = false;
 
-  void build_connectivity(const TriangleMesh& tm)
+  // Lists `range` in the order of the user's index map `Tag` of `np` when given (it must number
+  // the elements 0 .. n-1, each once), else in iteration order.
+  template <typename Tag, typename Range, typename Descriptor, typename NamedParameters>
+  static void number_elements(const Range& range, std::vector<Descriptor>& out, const NamedParameters& np,
+                              Tag tag, const char* what)
   {
-    vim_ = CGAL::get_initialized_vertex_index_map(tm);
-    fim_ = CGAL::get_initialized_face_index_map(tm);
-    if constexpr(Is_surface_mesh<TriangleMesh>::value) direct_ = !tm.has_garbage();
-    if(!direct_) him_ = get(CGAL::dynamic_halfedge_property_t<int>(), tm);
+    out.assign(range.begin(), range.end());
+    if constexpr(!parameters::is_default_parameter<NamedParameters, Tag>::value) {
+      const auto index = parameters::get_parameter(np, tag);
+      std::vector<Descriptor> ordered(out.size());
+      std::vector<char> used(out.size(), 0);
+      for(const Descriptor& d : out) {
+        const auto i = get(index, d);
+        if(!(i >= 0 && std::size_t(i) < out.size()) || used[std::size_t(i)]++) {
+          std::ostringstream os;
+          os << "the " << what << " index map gives " << i << ", which is not a distinct index in [0, "
+             << out.size() << ")";
+          throw Input_error(Input_error::INVALID_ARGUMENT, os.str());
+        }
+        ordered[std::size_t(i)] = d;
+      }
+      out.swap(ordered);
+    }
+  }
 
-    vertices.assign(CGAL::vertices(tm).begin(), CGAL::vertices(tm).end());
-    edges.assign(CGAL::edges(tm).begin(), CGAL::edges(tm).end());
-    faces.assign(CGAL::faces(tm).begin(), CGAL::faces(tm).end());
+  template <typename NamedParameters>
+  void build_connectivity(const TriangleMesh& tm, const NamedParameters& np)
+  {
+    using parameters::is_default_parameter;
+    number_elements(CGAL::vertices(tm), vertices, np, CGAL::internal_np::vertex_index, "vertex");
+    number_elements(CGAL::edges(tm), edges, np, CGAL::internal_np::edge_index, "edge");
+    number_elements(CGAL::faces(tm), faces, np, CGAL::internal_np::face_index, "face");
+    if constexpr(Is_surface_mesh<TriangleMesh>::value) {
+      const bool clean = !tm.has_garbage();
+      direct_vertices_ = clean && is_default_parameter<NamedParameters, CGAL::internal_np::vertex_index_t>::value;
+      direct_faces_ = clean && is_default_parameter<NamedParameters, CGAL::internal_np::face_index_t>::value;
+      direct_halfedges_ = clean && is_default_parameter<NamedParameters, CGAL::internal_np::edge_index_t>::value;
+    }
+    if(!direct_vertices_) {
+      vim_ = get(CGAL::dynamic_vertex_property_t<int>(), tm);
+      for(std::size_t v = 0; v < vertices.size(); ++v) put(vim_, vertices[v], int(v));
+    }
+    if(!direct_faces_) {
+      fim_ = get(CGAL::dynamic_face_property_t<int>(), tm);
+      for(std::size_t f = 0; f < faces.size(); ++f) put(fim_, faces[f], int(f));
+    }
     const std::size_t nh = 2 * edges.size();
-    if(!direct_)
+    if(!direct_halfedges_) {
+      him_ = get(CGAL::dynamic_halfedge_property_t<int>(), tm);
       for(std::size_t e = 0; e < edges.size(); ++e) {
         const halfedge_descriptor h0 = halfedge(edges[e], tm);
         put(him_, h0, int(2 * e));
         put(him_, CGAL::opposite(h0, tm), int(2 * e + 1));
       }
+    }
     next.assign(nh, -1);
     target.assign(nh, -1);
     face.assign(nh, -1);

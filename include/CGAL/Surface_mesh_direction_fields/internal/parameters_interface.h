@@ -16,3 +16,4 @@ CGAL_SMDF_add_named_parameter(guide_directions_t, guide_directions, guide_direct
 CGAL_SMDF_add_named_parameter(guide_weight_t, guide_weight, guide_weight)
 CGAL_SMDF_add_named_parameter(face_angle_t, face_angle, face_angle_map)
 CGAL_SMDF_add_named_parameter(intrinsic_edge_flips_t, intrinsic_edge_flips, intrinsic_edge_flips)
+CGAL_SMDF_add_named_parameter(intrinsic_mesh_t, intrinsic_mesh, intrinsic_mesh)

@@ -7,6 +7,7 @@
 #include <CGAL/Surface_mesh_direction_fields/intrinsic_triangle.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh_arrays.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/topology.h>
+#include <CGAL/Surface_mesh_direction_fields/Cholmod_cholesky.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/sparse_solvers.h>
 
 #include <algorithm>
@@ -494,7 +495,7 @@ private:
   std::vector<int> edge_pos_, diag_pos_;
   std::vector<double> w_, half_cot_;
   std::vector<double> half_exp_;   // per vertex: e^{u / 2} of the last lengths()
-  Cholmod_factor chol_;
+  Cholmod_cholesky chol_;
 
   double residual_norm2(const std::vector<double>& k, const std::vector<double>& target) const
   {
