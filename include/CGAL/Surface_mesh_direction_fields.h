@@ -11,6 +11,9 @@
 #include <CGAL/Surface_mesh_direction_fields/errors.h>
 #include <CGAL/Surface_mesh_direction_fields/intrinsic_triangle.h>
 #include <CGAL/Surface_mesh_direction_fields/Euclidean_edge_length_map.h>
+#include <CGAL/Surface_mesh_direction_fields/Intrinsic_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/Cholmod_cholesky.h>
+#include <CGAL/Surface_mesh_direction_fields/Eigen_sparse_cholesky.h>
 #include <CGAL/Surface_mesh_direction_fields/intrinsic_geometry.h>
 #include <CGAL/Surface_mesh_direction_fields/topology.h>
 #include <CGAL/Surface_mesh_direction_fields/homology_generators.h>

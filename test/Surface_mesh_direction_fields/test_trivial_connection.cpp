@@ -11,7 +11,12 @@
 #include <CGAL/Surface_mesh_direction_fields.h>
 #include <CGAL/Surface_mesh_direction_fields/IO/read_triangle_mesh.h>
 
+#include <CGAL/Eigen_solver_traits.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+
 #include <Eigen/SparseCholesky>
+
+#include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
 #include <random>
@@ -423,9 +428,136 @@ void multiple_components()
   SMDF_CHECK_MSG(d < 1e-12, "singularity_index_map = singularity pairs, diff " << d);
 }
 
+// Structure of the package (issue 10): one intrinsic mesh per pipeline, solvers as a policy,
+// user index maps, exact kernels. Every variant must give the same connection and read-back.
+template <typename Mesh>
+void shared_structure(const Mesh& mesh, const std::string& name)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::graph_traits<Mesh>::face_descriptor face_descriptor;
+  const long chi = long(num_vertices(mesh)) - long(num_edges(mesh)) + long(num_faces(mesh));
+  std::vector<vertex_descriptor> vs(vertices(mesh).begin(), vertices(mesh).end());
+  // chi - 4 (or 2 - chi) saddles of -1/4 and positive quarter indices for the rest, far apart
+  std::vector<std::pair<vertex_descriptor, double>> sing;
+  const int quarters = int(4 * chi);
+  const int n = quarters >= 0 ? quarters : -quarters;
+  for(int i = 0; i < n; ++i) sing.emplace_back(vs[(std::size_t(i) * 7919) % vs.size()], quarters >= 0 ? 0.25 : -0.25);
+  auto run = [&](auto& tc) {
+    for(const auto& p : sing) tc.set_singularity(p.first, p.second);
+    return tc.solve();
+  };
+  // (1) a connection and its read-back build one intrinsic mesh
+  const std::size_t builds0 = SMDF::internal::intrinsic_mesh_builds();
+  SMDF::Trivial_connection<Mesh> tc(mesh, SMDF::parameters::symmetry_order(4).connection_weights(SMDF::UNIT_WEIGHTS));
+  const SMDF::Trivial_connection_status st = run(tc);
+  SMDF_CHECK_MSG(st.success && st.residual < 1e-9, name << ": residual " << st.residual);
+  auto angles = get(CGAL::dynamic_face_property_t<double>(), mesh);
+  tc.field_angles(angles);
+  const auto shared = SMDF::field_singularities(mesh, angles,
+      SMDF::parameters::symmetry_order(4).intrinsic_mesh(tc.intrinsic_mesh()));
+  SMDF_CHECK_MSG(SMDF::internal::intrinsic_mesh_builds() == builds0 + 1,
+                 name << ": connection + read-back built " << SMDF::internal::intrinsic_mesh_builds() - builds0
+                      << " intrinsic meshes");
+  const auto own = SMDF::field_singularities(mesh, angles, SMDF::parameters::symmetry_order(4));
+  SMDF_CHECK(SMDF::internal::intrinsic_mesh_builds() == builds0 + 2);
+  SMDF_CHECK(shared.singularities == own.singularities);
+  SMDF_CHECK(shared.generator_turning_numbers == own.generator_turning_numbers);
+  SMDF_CHECK(tc.generators().size() == tc.intrinsic_mesh().generators().size());
+  // the holonomy object shares it too
+  SMDF::Intrinsic_holonomy<Mesh> hol(mesh, SMDF::parameters::intrinsic_mesh(tc.intrinsic_mesh()));
+  SMDF_CHECK(SMDF::internal::intrinsic_mesh_builds() == builds0 + 2);
+  for(std::size_t g = 0; g < tc.generators().size(); ++g)
+    SMDF_CHECK(std::abs(hol.levi_civita_holonomy(tc.generators()[g].dual_cycle) - tc.generator_levi_civita_holonomy(g)) < 1e-12);
+  // an intrinsic mesh of another mesh is rejected
+  Mesh other = mesh;
+  bool rejected = false;
+  try { SMDF::field_singularities(other, angles, SMDF::parameters::intrinsic_mesh(tc.intrinsic_mesh())); }
+  catch(const SMDF::Input_error&) { rejected = true; }
+  SMDF_CHECK(rejected);
+
+  // (2) other SparseCholeskySolver models give the same connection
+  auto same_connection = [&](const auto& t2, const char* what) {
+    double d = 0;
+    for(auto h : halfedges(mesh)) d = (std::max)(d, std::abs(t2.adjustment_angle(h) - tc.adjustment_angle(h)));
+    SMDF_CHECK_MSG(d < 1e-8, name << ", " << what << ": max |x - x_cholmod| = " << d);
+  };
+  {
+    SMDF::Trivial_connection<Mesh, SMDF::Eigen_sparse_cholesky<>> te(
+        mesh, SMDF::parameters::symmetry_order(4).connection_weights(SMDF::UNIT_WEIGHTS));
+    const auto ste = run(te);
+    SMDF_CHECK_MSG(ste.success && ste.residual < 1e-9, name << ", Eigen LDLT: residual " << ste.residual);
+    same_connection(te, "Eigen_sparse_cholesky");
+  }
+  {
+    typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<CGAL::Eigen_sparse_matrix<double>::EigenType>> Traits;
+    auto adj = get(CGAL::dynamic_edge_property_t<double>(), mesh);
+    const auto stc = SMDF::compute_trivial_connection(mesh, sing, adj,
+        SMDF::parameters::symmetry_order(4).connection_weights(SMDF::UNIT_WEIGHTS).sparse_linear_solver(Traits()));
+    SMDF_CHECK_MSG(stc.success && stc.residual < 1e-9, name << ", CGAL Eigen_solver_traits: residual " << stc.residual);
+    double d = 0;
+    for(auto e : edges(mesh)) d = (std::max)(d, std::abs(get(adj, e) - tc.adjustment_angle(halfedge(e, mesh))));
+    SMDF_CHECK_MSG(d < 1e-8, name << ", Eigen_solver_traits: max |x - x_cholmod| = " << d);
+  }
+
+  // (3) user index maps: vertices and faces numbered backwards
+  std::map<vertex_descriptor, std::size_t> vnum;
+  std::map<face_descriptor, std::size_t> fnum;
+  std::size_t k = 0;
+  for(auto v : vertices(mesh)) vnum[v] = num_vertices(mesh) - 1 - k++;
+  k = 0;
+  for(auto f : faces(mesh)) fnum[f] = num_faces(mesh) - 1 - k++;
+  boost::associative_property_map<std::map<vertex_descriptor, std::size_t>> vim(vnum);
+  boost::associative_property_map<std::map<face_descriptor, std::size_t>> fim(fnum);
+  SMDF::Trivial_connection<Mesh> tu(mesh, SMDF::parameters::symmetry_order(4).connection_weights(SMDF::UNIT_WEIGHTS)
+                                              .vertex_index_map(vim).face_index_map(fim));
+  SMDF_CHECK(tu.intrinsic_mesh().vertex_index(vs.front()) == num_vertices(mesh) - 1);
+  SMDF_CHECK(tu.intrinsic_mesh().vertex(0) == vs.back());
+  const auto stu = run(tu);
+  SMDF_CHECK_MSG(stu.success && stu.residual < 1e-9, name << ", user index maps: residual " << stu.residual);
+  auto angles_u = get(CGAL::dynamic_face_property_t<double>(), mesh);
+  tu.field_angles(angles_u);
+  const auto back_u = SMDF::field_singularities(mesh, angles_u,
+      SMDF::parameters::symmetry_order(4).intrinsic_mesh(tu.intrinsic_mesh()));
+  std::map<vertex_descriptor, double> want(sing.begin(), sing.end()), got_u(back_u.singularities.begin(), back_u.singularities.end());
+  SMDF_CHECK_MSG(got_u == want, name << ", user index maps: " << back_u.singularities.size() << " singularities read back, "
+                                     << want.size() << " prescribed");
+  // messages name the user's indices
+  std::string message;
+  try { tu.set_singularity(vs.front(), 0.3); } catch(const SMDF::Input_error& e) { message = e.what(); }
+  SMDF_CHECK_MSG(message.find("vertex " + std::to_string(num_vertices(mesh) - 1)) != std::string::npos, message);
+  // a map that is not a bijection is rejected
+  vnum[vs.front()] = vnum[vs.back()];
+  rejected = false;
+  try { SMDF::Trivial_connection<Mesh> bad(mesh, SMDF::parameters::vertex_index_map(vim)); }
+  catch(const SMDF::Input_error&) { rejected = true; }
+  SMDF_CHECK(rejected);
+}
+
+// An exact kernel compiles and gives the connection of its double approximation.
+void exact_kernel()
+{
+  typedef CGAL::Exact_predicates_exact_constructions_kernel EK;
+  CGAL::Surface_mesh<EK::Point_3> exact;
+  Surface_mesh approx;
+  smdf_test::soup_to_mesh(smdf_test::torus_soup(12, 8), exact);
+  smdf_test::soup_to_mesh(smdf_test::torus_soup(12, 8), approx);
+  SMDF::Trivial_connection<CGAL::Surface_mesh<EK::Point_3>> te(exact);
+  SMDF::Trivial_connection<Surface_mesh> ta(approx);
+  const auto v0 = *vertices(exact).begin();
+  const auto v1 = *std::next(vertices(exact).begin(), 40);
+  te.set_singularity(v0, 1); te.set_singularity(v1, -1);
+  ta.set_singularity(*vertices(approx).begin(), 1); ta.set_singularity(*std::next(vertices(approx).begin(), 40), -1);
+  SMDF_CHECK(te.solve().success && ta.solve().success);
+  double d = 0;
+  auto he = halfedges(exact).begin();
+  for(auto h : halfedges(approx)) d = (std::max)(d, std::abs(te.adjustment_angle(*he++) - ta.adjustment_angle(h)));
+  SMDF_CHECK_MSG(d < 1e-9, "exact kernel: max |x_exact - x_double| = " << d);
+}
+
 int main()
 {
   two_domain_solver();
+  exact_kernel();
   multiple_components();
   Tests<Surface_mesh> ts;
   Tests<Polyhedron> tp;
@@ -433,6 +565,7 @@ int main()
     Surface_mesh torus;
     smdf_test::soup_to_mesh(smdf_test::torus_soup(30, 20), torus);
     ts.run(torus, "generated torus", true);
+    shared_structure(torus, "generated torus");
     Polyhedron ptorus;
     smdf_test::soup_to_mesh(smdf_test::torus_soup(30, 20), ptorus);
     tp.run(ptorus, "generated torus (Polyhedron_3)", true);
@@ -457,6 +590,16 @@ int main()
     Surface_mesh mesh;
     SMDF::read_triangle_mesh(dir + "/meshes/" + m.first, mesh);
     ts.run(mesh, m.first, m.second);
+  }
+  for(const char* f : {"double-torus_jnd.off", "annulus_igltest.obj", "spot_c3d.obj"}) {
+    Polyhedron p;
+    SMDF::read_triangle_mesh(dir + "/meshes/" + f, p);
+    shared_structure(p, std::string(f) + " (Polyhedron_3)");
+  }
+  {
+    Surface_mesh dt;
+    SMDF::read_triangle_mesh(dir + "/meshes/double-torus_jnd.off", dt);
+    shared_structure(dt, "double-torus_jnd.off");
   }
   {
     Polyhedron p;

@@ -12,6 +12,8 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/development.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/topology.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/ricci_flow.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/cone_metric_phases.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/cone_holes.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 
@@ -207,219 +209,48 @@ Cone_metric_status compute_cone_metric(const TriangleMesh& tm,
   internal::Topology_arrays topo(m);
   const std::size_t nv = m.number_of_vertices();
 
-  // --- validation of the targets
-  std::vector<double> target(nv, 0.);
+  // --- 1. the targets: finite, boundary ones below pi, Gauss-Bonnet on every component
+  std::vector<double> target;
   std::vector<int> punched;   // interior vertices with a target >= 2 pi
-  std::vector<double> sum(topo.components.size(), 0.);
-  for(std::size_t v = 0; v < nv; ++v) {
-    if(m.is_isolated(int(v))) continue;
-    const double k = double(get(target_curvature, m.vertices[v]));
-    const bool boundary = m.is_boundary_vertex(int(v));
-    std::ostringstream os;
-    os.precision(17);
-    if(!std::isfinite(k)) {
-      os << "target curvature of vertex " << v << " is not finite";
-      throw Input_error(Input_error::INVALID_ARGUMENT, os.str());
-    }
-    if(!boundary && k >= 2 * CGAL_PI) punched.push_back(int(v));
-    if(boundary && k >= CGAL_PI) {
-      os << "target geodesic curvature " << k << " of boundary vertex " << v << " is >= pi";
-      throw Input_error(Input_error::INVALID_ARGUMENT, os.str());
-    }
-    target[v] = k;
-    sum[topo.vertex_component[v]] += k;
-  }
-  for(std::size_t c = 0; c < topo.components.size(); ++c) {
-    const double chi = double(topo.components[c].euler_characteristic());
-    const double expected = 2 * CGAL_PI * chi;
-    if(std::abs(sum[c] - expected) > 1e-8 * (std::max)(1., std::abs(expected))) {
-      std::ostringstream os;
-      os.precision(17);
-      os << "Gauss-Bonnet: the target curvatures of component " << c << " sum to " << sum[c]
-         << " but 2*pi*chi = " << expected << " (Euler characteristic " << chi << ")";
-      throw Input_error(Input_error::INCONSISTENT_INDICES, os.str());
-    }
-  }
+  internal::read_target_curvatures(m, target_curvature, target, punched);
+  internal::check_gauss_bonnet(m, topo, target);
 
+  // --- 2. cones of index >= 1 (Lai et al. 2010, section 4.1.1): a hole at each, and the
+  // holed surface solved by this function (see internal/cone_holes.h)
   if(!punched.empty()) {
-    // --- cones of index >= 1 (Lai et al. 2010, section 4.1.1): punch a hole at each, i.e.
-    // remove its faces; the ring of the hole becomes boundary with geodesic curvature
-    // kappa_w = K_w + (K_v - 2 pi) / d on each of its d vertices (Gauss-Bonnet: the hole's
-    // boundary turns by 2 pi - K_v less than the cone would need), then solve on the rest.
-    std::vector<char> removed(m.number_of_faces(), 0), is_ring(nv, 0), is_punched(nv, 0);
-    for(int v : punched) is_punched[v] = 1;
-    std::vector<double> hole_target = target;
-    for(int v : punched) {
-      std::vector<int> ring;
-      int h = m.vertex_out[v];
-      do { ring.push_back(m.target[h]); removed[m.face[h]] = 1; h = m.ccw_out(h); } while(h != m.vertex_out[v]);
-      for(int w : ring) {
-        std::ostringstream os;
-        os.precision(17);
-        if(is_punched[w] || is_ring[w] || m.is_boundary_vertex(w)) {
-          os << "cannot punch a hole at vertex " << v << " (target curvature " << target[v]
-             << " >= 2*pi, a cone of index >= 1): its neighbour " << w << " is "
-             << (is_punched[w] ? "another such cone" : m.is_boundary_vertex(w) ? "on the boundary"
-                                                                                : "next to another such cone")
-             << "; cones of index >= 1 need disjoint interior one-rings";
-          throw Input_error(Input_error::INVALID_ARGUMENT, os.str());
-        }
-        is_ring[w] = 1;
-        hole_target[w] = target[w] + (target[v] - 2 * CGAL_PI) / double(ring.size());
-        if(hole_target[w] >= CGAL_PI) {
-          os << "cannot punch a hole at vertex " << v << " (target curvature " << target[v]
-             << "): its " << ring.size() << " neighbours would need a geodesic curvature of "
-             << hole_target[w] << " >= pi each; refine the mesh around it";
-          throw Input_error(Input_error::INVALID_ARGUMENT, os.str());
-        }
-      }
-      hole_target[v] = 0;
-    }
-    // The holed surface: the same vertices (punched ones isolated), the other faces, the input
-    // lengths, solved by this function.
-    typedef CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3> Holed;
-    Holed holed;
-    for(std::size_t v = 0; v < nv; ++v) holed.add_vertex();
-    for(std::size_t f = 0; f < m.number_of_faces(); ++f) {
-      if(removed[f]) continue;
-      const int h0 = m.face_halfedge[f], h1 = m.next[h0];
-      holed.add_face(typename Holed::Vertex_index(m.source(h0)), typename Holed::Vertex_index(m.target[h0]),
-                     typename Holed::Vertex_index(m.target[h1]));
-    }
-    std::map<std::pair<int, int>, double> input_length;
-    for(std::size_t e = 0; e < m.number_of_edges(); ++e)
-      input_length[std::minmax(m.target[2 * e], m.target[2 * e + 1])] = m.length[e];
-    auto hl = holed.template add_property_map<typename Holed::Edge_index, double>("e:input_length", 0.).first;
-    auto out = holed.template add_property_map<typename Holed::Edge_index, double>("e:output_length", 0.).first;
-    auto ht = holed.template add_property_map<typename Holed::Vertex_index, double>("v:target", 0.).first;
-    auto hu = holed.template add_property_map<typename Holed::Vertex_index, double>("v:u", 0.).first;
-    for(typename Holed::Edge_index e : edges(holed)) {
-      const int a = int(CGAL::source(e, holed)), b = int(CGAL::target(e, holed));
-      hl[e] = input_length.at(std::minmax(a, b));
-    }
-    for(std::size_t v = 0; v < nv; ++v) ht[typename Holed::Vertex_index(v)] = hole_target[v];
+    internal::Holed_surface holed(m, target, punched);
     Cone_metric_status st = compute_cone_metric(
-        holed, ht, out,
-        parameters::edge_length_map(hl).conformal_factor_map(hu).number_of_iterations(max_iterations)
-            .curvature_tolerance(tol).visitor(visitor)
+        holed.mesh, holed.target, holed.output_length,
+        parameters::edge_length_map(holed.input_length).conformal_factor_map(holed.u)
+            .number_of_iterations(max_iterations).curvature_tolerance(tol).visitor(visitor)
             .intrinsic_edge_flips(allow_flips));
-    // back to the input: spokes of the holes and flipped-away edges have no length
-    std::map<std::pair<int, int>, double> result;
-    for(typename Holed::Edge_index e : edges(holed))
-      result[std::minmax(int(CGAL::source(e, holed)), int(CGAL::target(e, holed)))] = out[e];
-    for(std::size_t e = 0; e < m.number_of_edges(); ++e) {
-      auto it = result.find(std::minmax(m.target[2 * e], m.target[2 * e + 1]));
-      put(output_lengths, m.edges[e], it == result.end() ? std::numeric_limits<double>::quiet_NaN() : it->second);
-    }
-    if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::conformal_factor_t>::value) {
-      auto ufm = get_parameter(np, internal_np::conformal_factor);
-      for(std::size_t v = 0; v < nv; ++v)
-        put(ufm, m.vertices[v], is_punched[v] ? std::numeric_limits<double>::quiet_NaN()
-                                              : hu[typename Holed::Vertex_index(v)]);
-    }
+    holed.map_back(m, output_lengths, np);
     st.punched_vertices.assign(punched.begin(), punched.end());
-    st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    st.seconds = internal::seconds_since(t0);
     return st;
   }
 
-  // --- Newton, first on the input triangulation, then (if needed) with intrinsic flips
+  // --- 3. Newton, first on the input triangulation, then (if needed) with intrinsic flips
   typedef internal::Vertex_scaling_flow<TriangleMesh> Flow;
   Flow flow(m, topo);
   std::vector<double> u(nv, 0.), len;
-  // With flips available, the input triangulation is abandoned after a step cut to t <= 1/8 by
-  // degenerating triangles (before taking it if it is the first step), 2 consecutive steps cut
-  // to t <= 1/4, or 3 cut steps without 10% progress: on a decimated 20k-face armadillo with 8 cones the cut steps keep shrinking (t = 1/8 ... 1/128) while the
-  // Delaunay flow then converges in 5 full steps; steps cut to t = 1/2 usually still converge
-  // on the input triangulation (armadillo, 52k faces, 7 iterations).
   internal::Vertex_scaling_result r =
-      flow.run(target, u, len, max_iterations, tol, visitor, allow_flips ? Flow::FIXED_BEFORE_FLIPS : Flow::FIXED);
-  if(!r.converged && allow_flips && r.iterations < max_iterations) {
-    internal::Vertex_scaling_result r2 =
-        flow.run(target, u, len, max_iterations - r.iterations, tol, visitor, Flow::FLIPS, r.iterations);
-    r2.iterations += r.iterations;
-    r = r2;
-  }
-  const internal::Flippable_triangulation& tri = flow.triangulation();
+      internal::run_vertex_scaling(flow, target, u, len, max_iterations, tol, visitor, allow_flips);
 
-  // --- area normalisation per component: shift u so that the total area is preserved
-  std::vector<double> a0(topo.components.size(), 0.), a1(topo.components.size(), 0.);
-  for(std::size_t f = 0; f < m.number_of_faces(); ++f) {
-    const int c = topo.face_component[f];
-    int h0 = m.face_halfedge[f], h1 = m.next[h0], h2 = m.next[h1];
-    a0[c] += triangle_area(m.length[h0 >> 1], m.length[h1 >> 1], m.length[h2 >> 1]);
-    h0 = tri.face_halfedge[f]; h1 = tri.next[h0]; h2 = tri.next[h1];
-    a1[c] += triangle_area(len[h0 >> 1], len[h1 >> 1], len[h2 >> 1]);
-  }
-  bool rescaled = false;
-  std::vector<double> u2 = u;
-  for(std::size_t c = 0; c < topo.components.size(); ++c) {
-    if(!(a1[c] > 0) || a0[c] == a1[c]) continue;
-    const double shift = 0.5 * std::log(a0[c] / a1[c]);   // lengths scale like e^c, areas like e^{2c}
-    if(!std::isfinite(shift)) continue;
-    for(std::size_t v = 0; v < nv; ++v)
-      if(topo.vertex_component[v] == int(c)) u2[v] += shift;
-    rescaled = true;
-  }
-  if(rescaled) {
-    std::vector<double> len2, ang, sens, k, rho;
-    flow.lengths(u2, len2);   // a uniform scaling keeps the triangulation Delaunay
-    if(flow.angles(len2, u2, ang, sens)) {
-      flow.curvatures(ang, sens, k, rho);
-      const double err = flow.scaled_error(k, rho, target);
-      // keep the normalisation unless it costs the convergence (rounding only)
-      if(err <= tol || !r.converged) {
-        len.swap(len2); u.swap(u2);
-        r.max_error = flow.max_error(k, target); r.scaled_error = err; r.converged = err <= tol;
-        r.rounding_level = *std::max_element(rho.begin(), rho.end());
-      }
-    }
-  }
-  if(r.converged) r.message.clear();
-  else if(r.message.empty()) r.message = "curvature tolerance not reached";
+  // --- 4. area normalisation per component: shift u so that the total area is preserved
+  internal::normalise_areas(m, topo, flow, target, tol, u, len, r);
 
+  // --- 5. output: lengths of the input edges, or the intrinsic triangulation and its
+  // correspondence to the input; conformal factors; status
   Cone_metric_status st;
-  st.edge_flips = r.flips;
   st.triangulation_changed = flow.triangulation_changed();
-  if(!st.triangulation_changed) {
-    for(std::size_t e = 0; e < m.number_of_edges(); ++e) put(output_lengths, m.edges[e], len[e]);
-  } else {
-    // Correspondence: an edge is an input edge if it joins the same vertices with the same
-    // Penner coordinate (a flipped-back edge has exactly its old one: Ptolemy is an involution).
-    // (input edges sorted by their end points: a hash map of vectors cost 0.4 s at 433k faces)
-    auto key = [nv](int a, int b) { return (long long)(std::min)(a, b) * (long long)nv + (std::max)(a, b); };
-    std::vector<std::pair<long long, int>> by_ends(m.number_of_edges());
-    for(std::size_t e = 0; e < m.number_of_edges(); ++e)
-      by_ends[e] = std::make_pair(key(m.target[2 * e], m.target[2 * e + 1]), int(e));
-    std::sort(by_ends.begin(), by_ends.end());
-    std::vector<long> input_edge(m.number_of_edges(), -1);
-    std::vector<double> out(m.number_of_edges(), std::numeric_limits<double>::quiet_NaN());
-    for(std::size_t e = 0; e < m.number_of_edges(); ++e) {
-      const long long k = key(tri.target[2 * e], tri.target[2 * e + 1]);
-      for(auto it = std::lower_bound(by_ends.begin(), by_ends.end(), std::make_pair(k, -1));
-          it != by_ends.end() && it->first == k; ++it) {
-        const int i = it->second;
-        if(std::abs(flow.base_lengths()[e] - m.length[i]) <= 1e-12 * m.length[i]) {
-          input_edge[e] = i;
-          out[i] = len[e];
-          break;
-        }
-      }
-    }
-    for(std::size_t e = 0; e < m.number_of_edges(); ++e) put(output_lengths, m.edges[e], out[e]);
-    st.intrinsic_triangulation = Intrinsic_triangulation(nv, tri.next, tri.target, tri.face, tri.face_halfedge,
-                                                         len, std::move(input_edge));
-  }
-  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::conformal_factor_t>::value) {
-    auto ufm = get_parameter(np, internal_np::conformal_factor);
-    for(std::size_t v = 0; v < nv; ++v) put(ufm, m.vertices[v], u[v]);
-  }
-
-  st.converged = r.converged;
-  st.iterations = r.iterations;
-  st.max_curvature_error = r.max_error;
-  st.rounding_level = r.rounding_level;
-  st.message = r.message;
-  st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if(!st.triangulation_changed)
+    internal::put_input_edge_lengths(m, len, output_lengths);
+  else
+    st.intrinsic_triangulation = internal::output_intrinsic_triangulation(m, flow, len, output_lengths);
+  internal::put_conformal_factors(m, np, [&u](std::size_t v) { return u[v]; });
+  internal::put_flow_outcome(r, st);
+  st.seconds = internal::seconds_since(t0);
   return st;
 }
 

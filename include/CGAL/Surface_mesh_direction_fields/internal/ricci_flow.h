@@ -282,184 +282,299 @@ public:
                             std::vector<double>& len, int max_iterations, double tol,
                             Callback& callback, Mode mode, int first_iteration = 0)
   {
-    const bool flip = mode == FLIPS;
-    Vertex_scaling_result res;
-    std::vector<double> ang, sens, k, rho, u_try, len_try, ang_try, sens_try, k_try, rho_try;
-    int bad = -1;
-    // lengths, Delaunay flips (flip mode), angles and curvatures at u
-    auto evaluate = [&](const std::vector<double>& uu, std::vector<double>& l, std::vector<double>& a,
-                        std::vector<double>& s, std::vector<double>& kk, std::vector<double>& r, int* bad_face) {
-      lengths(uu, l);
-      // conformal factors beyond the range of double (exp overflow): not a metric, and flipping
-      // on such lengths would corrupt the Penner coordinates
-      for(double x : l) if(!(x > 0) || !std::isfinite(x)) return false;
-      if(flip && !make_delaunay(l)) return false;
-      if(!angles(l, uu, a, s, bad_face)) return false;
-      curvatures(a, s, kk, r);
-      return true;
-    };
-    if(!evaluate(u, len, ang, sens, k, rho, &bad)) {
-      res.message = flip ? std::string("intrinsic edge flips did not produce a valid triangulation")
-                         : "the initial conformal factors give a degenerate triangle (face " +
-                               std::to_string(bad) + ")";
-      return res;
+    Newton_state s(target, tol, mode, first_iteration);
+    s.cur.len.swap(len);   // the current iterate's lengths are the caller's
+    if(start(s, u)) {
+      // iteration 0 is reported once, by the first phase (the flip phase follows a fixed one)
+      if(first_iteration == 0 && !s.flip) callback(0, max_error(s.cur.k, target));
+      while(s.err > tol && s.it < max_iterations) {
+        // rejected trial points of the last line search may have flipped edges
+        if(s.flip) restore();
+        assemble_hessian(s);
+        Eigen::VectorXd du;
+        if(!newton_direction(s, newton_rhs(s), du)) break;
+        const Line_search ls = line_search(s, u, du);
+        if(!step_taken(s, ls)) break;
+        accept_step(s, u, ls);
+        callback(first_iteration + s.it, max_error(s.cur.k, target));
+        if(stalls_at_rounding_level(s, ls) || triangulation_cannot_carry_target(s, ls)) break;
+      }
+      finish(s);
     }
-    if(flip) snapshot();
-    double err = scaled_error(k, rho, target);
-    double norm2 = residual_norm2(k, target);
-    // iteration 0 is reported once, by the first phase (the flip phase follows a fixed one)
-    if(first_iteration == 0 && !flip) callback(0, max_error(k, target));
-    double best = err;
-    int best_iteration = 0;
-    int it = 0;
-    std::vector<double> err_history(1, err);
-    int cut_streak = 0, small_cut_streak = 0, cut_face = -1;
-    std::size_t version_at_analysis = 0, pattern_version = 0;
-    bool analysed = false, has_pattern = false, last_full_step = false;
-    while(err > tol && it < max_iterations) {
-      // rejected trial points of the last line search may have flipped edges
-      if(flip) restore();
-      fill_values(len, has_pattern && pattern_version == version_);
-      has_pattern = true;
-      pattern_version = version_;
-      // The residuals of a component sum to zero up to rounding (Gauss-Bonnet holds for every
-      // metric), and with the reduced system the gauge vertex would collect that rounding of all
-      // the others (1M faces: 1.2e-10 there, 1e-13 elsewhere); removing the mean spreads it.
-      std::vector<double> mean(component_size_.size(), 0.);
-      for(std::size_t v = 0; v < col_.size(); ++v)
-        if(component_[v] >= 0) mean[component_[v]] += target[v] - k[v];
-      for(std::size_t c = 0; c < mean.size(); ++c) if(component_size_[c] > 0) mean[c] /= component_size_[c];
-      Eigen::VectorXd rhs(n_), du;
-      for(std::size_t v = 0; v < col_.size(); ++v)
-        if(col_[v] >= 0) rhs[col_[v]] = target[v] - k[v] - mean[component_[v]];
-      // Inexact Newton: close to the solution (full steps, small error) the Hessian changes
-      // little between iterations, and conjugate gradients preconditioned by the previous
-      // factorisation reach the forcing tolerance in a few triangular solves, much cheaper than a
-      // new factorisation (433k faces: 0.57 s refactorisation, 1.2 s with a new analysis).
-      bool solved = false;
-      if(analysed && last_full_step && n_ > 0)
-        solved = preconditioned_cg(rhs, du, (std::min)(1e-2, err), 0.1 * tol, 8);
-      if(!solved) {
-        std::string msg;
-        const bool same_pattern = analysed && version_at_analysis == version_;
-        const bool ok = same_pattern ? chol_.refactor(L_, msg) : chol_.factor(L_, msg);
-        analysed = true;
-        version_at_analysis = version_;
-        if(!ok) {
-          res.message = "iteration " + std::to_string(first_iteration + it + 1) + ": " + msg;
-          break;
-        }
-        if(n_ > 0) du = chol_.solve(rhs);
-      }
-      if(!du.allFinite()) {
-        res.message = "iteration " + std::to_string(first_iteration + it + 1) + ": the Newton step is not finite";
-        break;
-      }
-      // Backtracking that only accepts metrics with valid triangles, and a step t if either
-      // |K - target|^2 decreases enough (Armijo; the Newton step is a descent direction for it),
-      // or t is at most the minimiser of the convex energy E (grad E = K - target, Hessian L)
-      // along the step: phi'(t) = du . (K(t) - target) <= 0. Halving from 1 stops in
-      // [t*/2, t*], which by convexity gains at least half of the best decrease of E along the
-      // line: global convergence without evaluating E (far from the solution, where the residual
-      // may not decrease along any step).
-      double t = 1;
-      bool accepted = false, last_invalid = false, any_invalid = false;
-      int last_bad = -1;
-      for(int ls = 0; ls < 60; ++ls, t *= 0.5) {
-        u_try = u;
-        for(std::size_t v = 0; v < col_.size(); ++v)
-          if(col_[v] >= 0) u_try[v] += t * du[col_[v]];
-        if(!evaluate(u_try, len_try, ang_try, sens_try, k_try, rho_try, &last_bad)) {
-          last_invalid = any_invalid = true;
-          cut_face = last_bad;
-          if(mode == FIXED_BEFORE_FLIPS && it == 0 && t <= 0.125) break;   // abandoned below
-          continue;
-        }
-        last_invalid = false;
-        const double n2 = residual_norm2(k_try, target);
-        if(n2 <= (1 - 2e-4 * t) * norm2) { accepted = true; break; }
-        double dphi = 0;
-        for(std::size_t v = 0; v < col_.size(); ++v)
-          if(col_[v] >= 0) dphi += du[col_[v]] * (k_try[v] - target[v]);
-        if(dphi <= 0) { accepted = true; break; }
-      }
-      // The first step already degenerates triangles: leave the input triangulation before
-      // moving (the flip phase then starts from the input metric; 433k faces: one iteration less)
-      if(mode == FIXED_BEFORE_FLIPS && it == 0 && any_invalid && (!accepted || t <= 0.125)) {
-        std::ostringstream os;
-        os << "iteration " << first_iteration + 1 << ": the Newton step had to be cut below 1/8"
-           << " to keep the triangles valid (face " << cut_face << " degenerates)";
-        res.message = os.str();
-        break;
-      }
-      if(!accepted) {
-        std::ostringstream os;
-        os.precision(3);
-        if(last_invalid && !flip)
-          os << "iteration " << first_iteration + it + 1 << ": the line search cannot keep the triangles valid (face "
-             << last_bad << " degenerates); the fixed triangulation cannot carry the target metric";
-        else
-          os << "iteration " << first_iteration + it + 1 << ": the line search found no decrease of the curvature"
-             << " error (stagnation at " << err << ", rounding level of this metric)";
-        res.message = os.str();
-        break;
-      }
-      last_full_step = (t == 1);
-      u.swap(u_try); len.swap(len_try); ang.swap(ang_try); sens.swap(sens_try); k.swap(k_try); rho.swap(rho_try);
-      if(flip) snapshot();
-      norm2 = residual_norm2(k, target);
-      err = scaled_error(k, rho, target);
-      ++it;
-      callback(first_iteration + it, max_error(k, target));
-      if(err < 0.5 * best) { best = err; best_iteration = it; }
-      // Below 1e-6 Newton converges quadratically; 6 iterations without halving the error is
-      // rounding (1M-face decimated armadillo: 1.2e-10, then 20 idle iterations, 40 s), and 3
-      // full steps are enough below 1e-8 (shortened steps may still be making slow progress).
-      const int idle = best < 1e-8 && t == 1 ? 3 : 6;
-      if(err > tol && best < 1e-6 && it - best_iteration >= idle) {
-        std::ostringstream os;
-        os.precision(3);
-        os << "stopped after iteration " << first_iteration + it << ": the curvature error has not halved"
-           << " in " << idle << " iterations (" << best << " at best): rounding level of this metric";
-        res.message = os.str();
-        break;
-      }
-      err_history.push_back(err);
-      cut_streak = any_invalid ? cut_streak + 1 : 0;
-      small_cut_streak = (any_invalid && t <= 0.25) ? small_cut_streak + 1 : 0;
-      const int w = mode == FIXED ? 10 : 3;
-      const bool stalled = cut_streak >= w && err > 0.9 * err_history[err_history.size() - 1 - w];
-      const bool collapsing = mode == FIXED_BEFORE_FLIPS && (small_cut_streak >= 2 || (any_invalid && t <= 0.125));
-      if(!flip && err > tol && (stalled || collapsing)) {
-        std::ostringstream os;
-        os.precision(3);
-        os << "stopped after iteration " << first_iteration + it << ": " << cut_streak
-           << " consecutive Newton steps had to be shortened to keep the triangles valid (face "
-           << cut_face << " degenerates, last step " << t << ") and the curvature error (relative to the"
-           << " cone angle where it exceeds 2 pi) only went from "
-           << err_history[err_history.size() - 1 - (std::min)(cut_streak, it)] << " to " << err
-           << "; the fixed triangulation cannot carry the target metric";
-        res.message = os.str();
-        break;
-      }
-    }
-    if(flip) restore();   // the triangulation of the returned metric
-    res.iterations = it;
-    res.max_error = max_error(k, target);
-    res.scaled_error = err;
-    res.rounding_level = rho.empty() ? 0. : *std::max_element(rho.begin(), rho.end());
-    res.converged = err <= tol;
-    res.flips = flips_;
-    if(!res.converged && res.message.empty()) {
-      std::ostringstream os;
-      os << "no convergence after " << first_iteration + it << " iterations (maximum curvature error "
-         << res.max_error << ")";
-      res.message = os.str();
-    }
-    return res;
+    len.swap(s.cur.len);
+    return s.res;
   }
 
 private:
+  // The steps of run().
+
+  // The metric at one point u of the flow: lengths (after the Delaunay flips in flip mode), corner
+  // angles and their rounding sensitivities (angles()), curvatures and their rounding levels
+  // (curvatures()).
+  struct Evaluation
+  {
+    std::vector<double> len, ang, sens, k, rho;
+
+    void swap(Evaluation& other)
+    {
+      len.swap(other.len); ang.swap(other.ang); sens.swap(other.sens); k.swap(other.k); rho.swap(other.rho);
+    }
+  };
+
+  // State of one run(): the current iterate and the trial point of the line search, the progress
+  // that the stopping tests watch, what of the Hessian's pattern and factorisation the next
+  // iteration can reuse, and the result.
+  struct Newton_state
+  {
+    Newton_state(const std::vector<double>& t, double tl, Mode md, int first)
+      : target(t), tol(tl), mode(md), flip(md == FLIPS), first_iteration(first) {}
+
+    const std::vector<double>& target;
+    const double tol;
+    const Mode mode;
+    const bool flip;
+    const int first_iteration;
+    Evaluation cur, trial;
+    std::vector<double> u_try;
+    double err = 0, norm2 = 0, best = 0;
+    int best_iteration = 0;
+    int it = 0;
+    std::vector<double> err_history;
+    int cut_streak = 0, small_cut_streak = 0, cut_face = -1;
+    std::size_t version_at_analysis = 0, pattern_version = 0;
+    bool analysed = false, has_pattern = false, last_full_step = false;
+    Vertex_scaling_result res;
+  };
+
+  // Outcome of the line search of one Newton iteration
+  struct Line_search
+  {
+    double t = 1;
+    bool accepted = false, last_invalid = false, any_invalid = false;
+    int last_bad = -1;
+  };
+
+  // lengths, Delaunay flips (flip mode), angles and curvatures at u
+  bool evaluate(bool flip, const std::vector<double>& u, Evaluation& e, int* bad_face)
+  {
+    lengths(u, e.len);
+    // conformal factors beyond the range of double (exp overflow): not a metric, and flipping
+    // on such lengths would corrupt the Penner coordinates
+    for(double x : e.len) if(!(x > 0) || !std::isfinite(x)) return false;
+    if(flip && !make_delaunay(e.len)) return false;
+    if(!angles(e.len, u, e.ang, e.sens, bad_face)) return false;
+    curvatures(e.ang, e.sens, e.k, e.rho);
+    return true;
+  }
+
+  // Evaluates the start value u; false (and a message) if it is not a valid metric.
+  bool start(Newton_state& s, const std::vector<double>& u)
+  {
+    int bad = -1;
+    if(!evaluate(s.flip, u, s.cur, &bad)) {
+      s.res.message = s.flip ? std::string("intrinsic edge flips did not produce a valid triangulation")
+                             : "the initial conformal factors give a degenerate triangle (face " +
+                                   std::to_string(bad) + ")";
+      return false;
+    }
+    if(s.flip) snapshot();
+    s.err = scaled_error(s.cur.k, s.cur.rho, s.target);
+    s.norm2 = residual_norm2(s.cur.k, s.target);
+    s.best = s.err;
+    s.err_history.assign(1, s.err);
+    return true;
+  }
+
+  // The Hessian at the current iterate, on the pattern of the last iteration when the
+  // triangulation has not changed since.
+  void assemble_hessian(Newton_state& s)
+  {
+    fill_values(s.cur.len, s.has_pattern && s.pattern_version == version_);
+    s.has_pattern = true;
+    s.pattern_version = version_;
+  }
+
+  // The residuals of a component sum to zero up to rounding (Gauss-Bonnet holds for every
+  // metric), and with the reduced system the gauge vertex would collect that rounding of all
+  // the others (1M faces: 1.2e-10 there, 1e-13 elsewhere); removing the mean spreads it.
+  Eigen::VectorXd newton_rhs(const Newton_state& s) const
+  {
+    const std::vector<double>& target = s.target;
+    const std::vector<double>& k = s.cur.k;
+    std::vector<double> mean(component_size_.size(), 0.);
+    for(std::size_t v = 0; v < col_.size(); ++v)
+      if(component_[v] >= 0) mean[component_[v]] += target[v] - k[v];
+    for(std::size_t c = 0; c < mean.size(); ++c) if(component_size_[c] > 0) mean[c] /= component_size_[c];
+    Eigen::VectorXd rhs(n_);
+    for(std::size_t v = 0; v < col_.size(); ++v)
+      if(col_[v] >= 0) rhs[col_[v]] = target[v] - k[v] - mean[component_[v]];
+    return rhs;
+  }
+
+  // The Newton step du of the reduced system; false (and a message) if the factorisation fails
+  // or the step is not finite.
+  bool newton_direction(Newton_state& s, const Eigen::VectorXd& rhs, Eigen::VectorXd& du)
+  {
+    // Inexact Newton: close to the solution (full steps, small error) the Hessian changes
+    // little between iterations, and conjugate gradients preconditioned by the previous
+    // factorisation reach the forcing tolerance in a few triangular solves, much cheaper than a
+    // new factorisation (433k faces: 0.57 s refactorisation, 1.2 s with a new analysis).
+    bool solved = false;
+    if(s.analysed && s.last_full_step && n_ > 0)
+      solved = preconditioned_cg(rhs, du, (std::min)(1e-2, s.err), 0.1 * s.tol, 8);
+    if(!solved) {
+      std::string msg;
+      const bool same_pattern = s.analysed && s.version_at_analysis == version_;
+      const bool ok = same_pattern ? chol_.refactor(L_, msg) : chol_.factor(L_, msg);
+      s.analysed = true;
+      s.version_at_analysis = version_;
+      if(!ok) {
+        s.res.message = "iteration " + std::to_string(s.first_iteration + s.it + 1) + ": " + msg;
+        return false;
+      }
+      if(n_ > 0) du = chol_.solve(rhs);
+    }
+    if(!du.allFinite()) {
+      s.res.message = "iteration " + std::to_string(s.first_iteration + s.it + 1) + ": the Newton step is not finite";
+      return false;
+    }
+    return true;
+  }
+
+  // Backtracking that only accepts metrics with valid triangles, and a step t if either
+  // |K - target|^2 decreases enough (Armijo; the Newton step is a descent direction for it),
+  // or t is at most the minimiser of the convex energy E (grad E = K - target, Hessian L)
+  // along the step: phi'(t) = du . (K(t) - target) <= 0. Halving from 1 stops in
+  // [t*/2, t*], which by convexity gains at least half of the best decrease of E along the
+  // line: global convergence without evaluating E (far from the solution, where the residual
+  // may not decrease along any step).
+  // The last trial point is left in s.u_try and s.trial.
+  Line_search line_search(Newton_state& s, const std::vector<double>& u, const Eigen::VectorXd& du)
+  {
+    Line_search ls;
+    for(int i = 0; i < 60; ++i, ls.t *= 0.5) {
+      s.u_try = u;
+      for(std::size_t v = 0; v < col_.size(); ++v)
+        if(col_[v] >= 0) s.u_try[v] += ls.t * du[col_[v]];
+      if(!evaluate(s.flip, s.u_try, s.trial, &ls.last_bad)) {
+        ls.last_invalid = ls.any_invalid = true;
+        s.cut_face = ls.last_bad;
+        if(s.mode == FIXED_BEFORE_FLIPS && s.it == 0 && ls.t <= 0.125) break;   // abandoned below
+        continue;
+      }
+      ls.last_invalid = false;
+      const double n2 = residual_norm2(s.trial.k, s.target);
+      if(n2 <= (1 - 2e-4 * ls.t) * s.norm2) { ls.accepted = true; break; }
+      double dphi = 0;
+      for(std::size_t v = 0; v < col_.size(); ++v)
+        if(col_[v] >= 0) dphi += du[col_[v]] * (s.trial.k[v] - s.target[v]);
+      if(dphi <= 0) { ls.accepted = true; break; }
+    }
+    return ls;
+  }
+
+  // Whether the step of the line search is taken; if not, the run ends here (with a message).
+  bool step_taken(Newton_state& s, const Line_search& ls)
+  {
+    // The first step already degenerates triangles: leave the input triangulation before
+    // moving (the flip phase then starts from the input metric; 433k faces: one iteration less)
+    if(s.mode == FIXED_BEFORE_FLIPS && s.it == 0 && ls.any_invalid && (!ls.accepted || ls.t <= 0.125)) {
+      std::ostringstream os;
+      os << "iteration " << s.first_iteration + 1 << ": the Newton step had to be cut below 1/8"
+         << " to keep the triangles valid (face " << s.cut_face << " degenerates)";
+      s.res.message = os.str();
+      return false;
+    }
+    if(!ls.accepted) {
+      std::ostringstream os;
+      os.precision(3);
+      if(ls.last_invalid && !s.flip)
+        os << "iteration " << s.first_iteration + s.it + 1 << ": the line search cannot keep the triangles valid (face "
+           << ls.last_bad << " degenerates); the fixed triangulation cannot carry the target metric";
+      else
+        os << "iteration " << s.first_iteration + s.it + 1 << ": the line search found no decrease of the curvature"
+           << " error (stagnation at " << s.err << ", rounding level of this metric)";
+      s.res.message = os.str();
+      return false;
+    }
+    return true;
+  }
+
+  // The accepted trial point becomes the current iterate.
+  void accept_step(Newton_state& s, std::vector<double>& u, const Line_search& ls)
+  {
+    s.last_full_step = (ls.t == 1);
+    u.swap(s.u_try);
+    s.cur.swap(s.trial);
+    if(s.flip) snapshot();
+    s.norm2 = residual_norm2(s.cur.k, s.target);
+    s.err = scaled_error(s.cur.k, s.cur.rho, s.target);
+    ++s.it;
+  }
+
+  // Stop when the error no longer halves (with a message): rounding, not a lack of iterations.
+  bool stalls_at_rounding_level(Newton_state& s, const Line_search& ls) const
+  {
+    if(s.err < 0.5 * s.best) { s.best = s.err; s.best_iteration = s.it; }
+    // Below 1e-6 Newton converges quadratically; 6 iterations without halving the error is
+    // rounding (1M-face decimated armadillo: 1.2e-10, then 20 idle iterations, 40 s), and 3
+    // full steps are enough below 1e-8 (shortened steps may still be making slow progress).
+    const int idle = s.best < 1e-8 && ls.t == 1 ? 3 : 6;
+    if(s.err > s.tol && s.best < 1e-6 && s.it - s.best_iteration >= idle) {
+      std::ostringstream os;
+      os.precision(3);
+      os << "stopped after iteration " << s.first_iteration + s.it << ": the curvature error has not halved"
+         << " in " << idle << " iterations (" << s.best << " at best): rounding level of this metric";
+      s.res.message = os.str();
+      return true;
+    }
+    return false;
+  }
+
+  // On the fixed triangulation (see Mode), stop when the steps keep being shortened to keep the
+  // triangles valid without enough progress (with a message).
+  bool triangulation_cannot_carry_target(Newton_state& s, const Line_search& ls) const
+  {
+    s.err_history.push_back(s.err);
+    s.cut_streak = ls.any_invalid ? s.cut_streak + 1 : 0;
+    s.small_cut_streak = (ls.any_invalid && ls.t <= 0.25) ? s.small_cut_streak + 1 : 0;
+    const int w = s.mode == FIXED ? 10 : 3;
+    const bool stalled = s.cut_streak >= w && s.err > 0.9 * s.err_history[s.err_history.size() - 1 - w];
+    const bool collapsing = s.mode == FIXED_BEFORE_FLIPS && (s.small_cut_streak >= 2 || (ls.any_invalid && ls.t <= 0.125));
+    if(!s.flip && s.err > s.tol && (stalled || collapsing)) {
+      std::ostringstream os;
+      os.precision(3);
+      os << "stopped after iteration " << s.first_iteration + s.it << ": " << s.cut_streak
+         << " consecutive Newton steps had to be shortened to keep the triangles valid (face "
+         << s.cut_face << " degenerates, last step " << ls.t << ") and the curvature error (relative to the"
+         << " cone angle where it exceeds 2 pi) only went from "
+         << s.err_history[s.err_history.size() - 1 - (std::min)(s.cut_streak, s.it)] << " to " << s.err
+         << "; the fixed triangulation cannot carry the target metric";
+      s.res.message = os.str();
+      return true;
+    }
+    return false;
+  }
+
+  // The result of the iterations done.
+  void finish(Newton_state& s)
+  {
+    if(s.flip) restore();   // the triangulation of the returned metric
+    Vertex_scaling_result& res = s.res;
+    res.iterations = s.it;
+    res.max_error = max_error(s.cur.k, s.target);
+    res.scaled_error = s.err;
+    res.rounding_level = s.cur.rho.empty() ? 0. : *std::max_element(s.cur.rho.begin(), s.cur.rho.end());
+    res.converged = s.err <= s.tol;
+    res.flips = flips_;
+    if(!res.converged && res.message.empty()) {
+      std::ostringstream os;
+      os << "no convergence after " << s.first_iteration + s.it << " iterations (maximum curvature error "
+         << res.max_error << ")";
+      res.message = os.str();
+    }
+  }
+
   const Mesh_arrays<TM>& m_;
   Flippable_triangulation tri_;
   std::vector<double> l0_;          // per edge: length at u = 0 (Penner coordinate once flipped)
