@@ -554,10 +554,32 @@ void exact_kernel()
   SMDF_CHECK_MSG(d < 1e-9, "exact kernel: max |x_exact - x_double| = " << d);
 }
 
+// Separate triangles (no interior edge, no constraint row): a valid, trivial answer, no crash.
+void separate_triangles()
+{
+  smdf_test::Soup soup;
+  for(std::size_t i = 0; i < 20; ++i) {
+    const double x = 3.0 * double(i);
+    soup.points.push_back({{x, 0, 0}}); soup.points.push_back({{x + 1, 0, 0}}); soup.points.push_back({{x, 1, 0.1 * double(i)}});
+    soup.faces.push_back({3 * i, 3 * i + 1, 3 * i + 2});
+  }
+  Surface_mesh mesh;
+  smdf_test::soup_to_mesh(soup, mesh);
+  for(SMDF::Connection_solver solver : {SMDF::CHOLMOD_NORMAL_EQUATIONS, SMDF::SPQR_MINIMUM_NORM}) {
+    SMDF::Trivial_connection<Surface_mesh> tc(mesh, SMDF::parameters::symmetry_order(4).solver(solver));
+    const auto st = tc.solve();
+    SMDF_CHECK_MSG(st.success && st.residual == 0 && st.energy == 0, "separate triangles: " << st.message);
+    auto angles = get(CGAL::dynamic_face_property_t<double>(), mesh);
+    tc.field_angles(angles, 0.5);
+    SMDF_CHECK(SMDF::field_singularities(mesh, angles, SMDF::parameters::symmetry_order(4)).singularities.empty());
+  }
+}
+
 int main()
 {
   two_domain_solver();
   exact_kernel();
+  separate_triangles();
   multiple_components();
   Tests<Surface_mesh> ts;
   Tests<Polyhedron> tp;

@@ -476,7 +476,12 @@ private:
   {
     tree_.build(m_, constrained_faces_, guide_faces_);
     sys_.build(m_, topo_, gens_, constrained_faces_, tree_);
-    if(solver_kind_ != CHOLMOD_NORMAL_EQUATIONS) return true;
+    // no constraint row (e.g. separate triangles, or disks without interior vertices): x = 0
+    if(solver_kind_ != CHOLMOD_NORMAL_EQUATIONS || (sys_.rows_ == 0 && guide_faces_.empty())) return true;
+    if(sys_.rows_ == 0) {
+      st.message = "guide directions need at least one interior vertex, generator or directional constraint";
+      return false;
+    }
     const Sparse_matrix_int L = sys_.normal_matrix();
     // Rows in vertex_split_.order with the few generator and constraint rows last are as good as
     // CHOLMOD's AMD on the whole matrix (400k faces: 1.29e9 vs 1.24e9 flops); many
@@ -499,7 +504,9 @@ private:
   bool solve_columns(Eigen::VectorXd& xc, Trivial_connection_status& st) const
   {
     const Eigen::VectorXd b = sys_.rhs(m_, K_, index_, z_, turning_, constraint_angles_, N_);
-    if(solver_kind_ == CHOLMOD_NORMAL_EQUATIONS && guides_.empty()) {
+    if(sys_.rows_ == 0) {   // build_and_factor() allowed it only without guides
+      xc.setZero(sys_.W_.size());
+    } else if(solver_kind_ == CHOLMOD_NORMAL_EQUATIONS && guides_.empty()) {
       const Eigen::VectorXd y = chol_.solve(-b);
       xc = sys_.W_.asDiagonal() * (sys_.A_.transpose() * y);
     } else if(solver_kind_ == CHOLMOD_NORMAL_EQUATIONS) {
