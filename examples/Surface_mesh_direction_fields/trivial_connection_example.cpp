@@ -44,7 +44,8 @@ int main(int argc, char** argv)
   if(!st.success) { std::cerr << st.message << std::endl; return EXIT_FAILURE; }
   auto angle = get(CGAL::dynamic_face_property_t<double>(), mesh);
   tc.field_angles(angle);
-  const auto found = SMDF::field_singularities(mesh, angle);
+  // the read-back reuses the connection's intrinsic mesh instead of building its own
+  const auto found = SMDF::field_singularities(mesh, angle, SMDF::parameters::intrinsic_mesh(tc.intrinsic_mesh()));
   std::cout << "vector field: energy " << st.energy << ", holonomy error " << st.max_holonomy_error
             << ", singularities found:";
   for(const auto& s : found.singularities) std::cout << " v" << std::size_t(s.first) << ":" << s.second;
@@ -59,7 +60,7 @@ int main(int argc, char** argv)
     st = tc.solve();
     tc.field_angles(angle);
     std::cout << "turning number " << t << " around generator 0: read back "
-              << SMDF::field_singularities(mesh, angle).generator_turning_numbers[0]
+              << SMDF::field_singularities(mesh, angle, SMDF::parameters::intrinsic_mesh(tc.intrinsic_mesh())).generator_turning_numbers[0]
               << " (solve " << st.solve_seconds << " s, no refactorisation: " << (st.factor_seconds == 0) << ")"
               << std::endl;
   }
