@@ -116,6 +116,17 @@ struct Tests
     }
     SMDF_CHECK_MSG(turning_ok, what << ": generator turning numbers read back");
     SMDF_CHECK_MSG(ft.max_rounding_error < 1e-8, what << " read-back rounding " << ft.max_rounding_error);
+    // With the field's own matching the read-back is exact on every solve.
+    auto matching = get(CGAL::dynamic_edge_property_t<int>(), mesh);
+    const double off_lattice = tc.field_matching(angles, matching);
+    SMDF_CHECK_MSG(off_lattice < 1e-9, what << ": matching off the lattice by " << off_lattice);
+    const SMDF::Field_topology<Mesh> fm = SMDF::field_singularities(
+        mesh, angles, SMDF::parameters::symmetry_order(N).matching(matching).intrinsic_mesh(tc.intrinsic_mesh()));
+    std::map<vertex_descriptor, double> found_m(fm.singularities.begin(), fm.singularities.end());
+    SMDF_CHECK_MSG(found_m == wanted, what << ": with its matching, found " << found_m.size()
+                                           << " singularities, prescribed " << wanted.size());
+    SMDF_CHECK_MSG(fm.generator_turning_numbers == turning, what << ": turning numbers read back with the matching");
+    SMDF_CHECK_MSG(fm.max_rounding_error < 1e-9, what << " read-back rounding with the matching " << fm.max_rounding_error);
     // every basis cycle: holonomy = 0 mod 2pi/N, computed through the public holonomy()
     double err = 0;
     for(const auto& g : tc.generators())

@@ -60,10 +60,16 @@ enum Connection_solver {
 /// Outcome of `Trivial_connection::solve()`.
 struct Trivial_connection_status
 {
-  bool success = false;          ///< `false` if the factorisation or solve failed (see `message`)
+  /// `true` if the factorisation and the solve succeeded, `scaled_residual` is at most
+  /// \f$10^{-9}\f$ and `max_holonomy_error` at most \f$10^{-9}\f$: the holonomy around every
+  /// dual cell and generator is then its target, so the field of the connection read with its
+  /// own matching (`field_matching()`) has exactly the prescribed singularities. Otherwise
+  /// `false`, with the reason in `message`.
+  bool success = false;
   std::string message;           ///< empty on success
   double energy = 0;             ///< \f$\|Dx\|^2 = \sum_e x_e^2/w_e\f$
   double residual = 0;           ///< \f$\max_i |(Ax + b)_i|\f$ over all constraint rows
+  double scaled_residual = 0;    ///< `residual` \f$/ \max(1, \|b\|_\infty)\f$
   double guide_energy = 0;       ///< \f$\lambda\sum_i (c_i^\top x - \bar c_i)^2\f$ of the guide directions (0 without guides)
   double max_holonomy_error = 0; ///< max over all interior-vertex cycles and generators of the distance between the connection's holonomy and \f$2\pi\f$ times the prescribed index / turning number
   double factor_seconds = 0;     ///< time spent building and factoring the system in this call (0 when reused)
@@ -331,21 +337,29 @@ public:
       st.factor_seconds = seconds_since(t0);
     }
     const auto t1 = std::chrono::steady_clock::now();
+    const Eigen::VectorXd b = sys_.rhs(m_, K_, index_, z_, turning_, constraint_angles_, N_);
     Eigen::VectorXd xc;
-    if(!solve_columns(xc, st)) return st;
+    if(!solve_columns(b, xc, st)) return st;
     std::fill(x_.begin(), x_.end(), 0.);
     for(std::size_t c = 0; c < sys_.edge_of_col_.size(); ++c) x_[sys_.edge_of_col_[c]] = xc[Eigen::Index(c)];
     st.solve_seconds = seconds_since(t1);
     st.energy = xc.cwiseProduct(xc).cwiseQuotient(sys_.W_).sum();
-    const Eigen::VectorXd r = sys_.A_ * xc + sys_.rhs(m_, K_, index_, z_, turning_, constraint_angles_, N_);
+    const Eigen::VectorXd r = sys_.A_ * xc + b;
     st.residual = sys_.rows_ ? r.cwiseAbs().maxCoeff() : 0.;
     // The vertex and generator rows of A x + b are exactly the holonomy errors of those cycles;
     // only the dropped vertex of each closed component needs its own check.
     st.max_holonomy_error = (std::max)(sys_.first_constraint_row_ ? r.head(sys_.first_constraint_row_).cwiseAbs().maxCoeff() : 0.,
                                        sys_.dropped_vertices_holonomy_error(m_, K_, index_, x_));
-    st.success = std::isfinite(st.energy) && std::isfinite(st.residual);
-    if(!st.success) st.message = "the solve produced non-finite values";
-    solved_ = st.success;
+    st.scaled_residual = st.residual / (std::max)(1., sys_.rows_ ? b.cwiseAbs().maxCoeff() : 0.);
+    st.success = false;
+    std::ostringstream os;
+    os.precision(3);
+    if(!std::isfinite(st.energy) || !std::isfinite(st.residual)) os << "the solve produced non-finite values";
+    else if(!(st.scaled_residual <= 1e-9)) os << "scaled residual " << st.scaled_residual << " > 1e-9";
+    else if(!(st.max_holonomy_error <= 1e-9)) os << "holonomy error " << st.max_holonomy_error << " > 1e-9";
+    else st.success = true;
+    st.message = os.str();
+    solved_ = std::isfinite(st.energy) && std::isfinite(st.residual);   // a failed field can still be inspected
     return st;
   }
 
@@ -408,6 +422,40 @@ public:
     std::vector<double> beta;
     propagate(beta, start_angle, m_.face_index(start));
     for(std::size_t f = 0; f < beta.size(); ++f) put(angles, m_.faces[f], beta[f]);
+  }
+
+  /// The matching of a face field of this connection (e.g. the output of field_angles()): for
+  /// every interior edge \f$e\f$ with \f$h\f$ = `halfedge(e)`, the period jump \f$k_e\f$ such
+  /// that carrying the direction of the right face `face(opposite(h))` into the left face
+  /// `face(h)` with the connection gives the left face's direction rotated by
+  /// \f$2\pi k_e/N\f$: \f$\beta_r + \theta_h = \beta_l + 2\pi k_e/N\f$, \f$\theta_h\f$ =
+  /// connection_angle(h). Written to `matching` (0 on boundary edges). Read back with this
+  /// matching (the `matching` parameter of field_singularities()), the field has exactly the
+  /// singularities and turning numbers of the connection, even across edges where the
+  /// connection turns by more than \f$\pi/N\f$, which principal matching misreads.
+  /// Returns the largest distance of \f$(\beta_r + \theta_h - \beta_l)N/2\pi\f$ to its integer:
+  /// about \f$10^{-12}\f$ for a field of this connection, large for any other field.
+  /// \tparam EdgeMatchingMap a writable property map, `edge_descriptor` keys, `int` values
+  /// \pre solve() succeeded.
+  template <typename FaceAngleMap, typename EdgeMatchingMap>
+  double field_matching(const FaceAngleMap& angles, EdgeMatchingMap matching) const
+  {
+    CGAL_precondition(solved_);
+    const double scale = N_ / (2 * CGAL_PI);
+    double worst = 0;
+    for(std::size_t e = 0; e < m_.number_of_edges(); ++e) {
+      const int h = int(2 * e);
+      int k = 0;
+      if(!m_.is_border_edge(int(e))) {
+        const double t = (double(get(angles, m_.faces[m_.face[h ^ 1]])) + connection_angle_index(h) -
+                          double(get(angles, m_.faces[m_.face[h]]))) * scale;
+        const double rk = std::round(t);
+        worst = (std::max)(worst, std::abs(t - rk));
+        k = int(rk);
+      }
+      put(matching, m_.edges[e], k);
+    }
+    return worst;
   }
 
   /// Converts face angles (in the face frames) to unit 3D vectors in the plane of each face of the
@@ -500,10 +548,9 @@ private:
     return true;
   }
 
-  // The adjustment angles of the current right-hand side, one per column of A.
-  bool solve_columns(Eigen::VectorXd& xc, Trivial_connection_status& st) const
+  // The adjustment angles for the right-hand side b, one per column of A.
+  bool solve_columns(const Eigen::VectorXd& b, Eigen::VectorXd& xc, Trivial_connection_status& st) const
   {
-    const Eigen::VectorXd b = sys_.rhs(m_, K_, index_, z_, turning_, constraint_angles_, N_);
     if(sys_.rows_ == 0) {   // build_and_factor() allowed it only without guides
       xc.setZero(sys_.W_.size());
     } else if(solver_kind_ == CHOLMOD_NORMAL_EQUATIONS && guides_.empty()) {

@@ -36,16 +36,19 @@ struct Field_topology
 /// the face frames (counterclockwise from `halfedge(f)`; the field's directions are that angle
 /// plus multiples of \f$2\pi/N\f$).
 ///
-/// Across each edge the field's rotation relative to Levi-Civita transport is taken as the
-/// smallest one modulo \f$2\pi/N\f$, \f$\Delta_h \in (-\pi/N, \pi/N]\f$. The index of an interior
+/// Across each edge the field's rotation relative to Levi-Civita transport is given by the
+/// `matching` parameter, or else taken as the smallest one modulo \f$2\pi/N\f$,
+/// \f$\Delta_h \in (-\pi/N, \pi/N]\f$ (principal matching, what a reader without the
+/// matching sees). The index of an interior
 /// vertex \f$v\f$ is \f$(K_v + \sum \Delta_h)/2\pi\f$ over its dual cell traversed
 /// counterclockwise, so a counterclockwise rotation of the field around \f$v\f$ counts
 /// positively (a source or a center has index +1, a saddle -1), and the turning number of a
 /// generator is \f$(\mathrm{hol}_{LC} + \sum \Delta_h)/2\pi\f$ with \f$\mathrm{hol}_{LC}\f$ in
 /// \f$(-\pi, \pi]\f$ — the conventions of `Trivial_connection`. The indices sum to \f$\chi\f$
-/// on closed components. A field can only show rotations below \f$\pi/N\f$ per edge, so an index
-/// whose connection turns more than that across some edge (e.g. index +20 on a coarse mesh)
-/// is visible in the connection (`Trivial_connection::holonomy()`) but not in the field.
+/// on closed components. Under principal matching a field can only show rotations below
+/// \f$\pi/N\f$ per edge, so an index whose connection turns more than that across some edge
+/// (e.g. index +20 on a coarse mesh, or a cotan-weighted solve with large weights) is read
+/// correctly only with the field's matching.
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{symmetry_order}
 ///     \cgalParamDescription{\f$N\f$} \cgalParamType{`int`} \cgalParamDefault{1}
@@ -61,6 +64,11 @@ struct Field_topology
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_index_map, face_index_map, edge_index_map}
 ///     \cgalParamDescription{the numbering of the simplices, as in `Intrinsic_mesh`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{matching}
+///     \cgalParamDescription{the period jump \f$k_e\f$ of every interior edge, for `halfedge(e)` (see `Trivial_connection::field_matching()`): the rotation across the edge is then \f$\beta_l - \beta_r - \text{increment} + 2\pi k_e/N\f$ instead of the smallest one}
+///     \cgalParamType{a readable property map with `edge_descriptor` keys and integer values}
+///     \cgalParamDefault{principal matching}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 template <typename TriangleMesh, typename FaceAngleMap,
@@ -82,8 +90,22 @@ Field_topology<TriangleMesh> field_singularities(const TriangleMesh& tm, const F
       throw Input_error(Input_error::INVALID_ARGUMENT, "field angle of face " + std::to_string(f) + " is not finite");
   }
   const double period = 2 * CGAL_PI / N;
+  // The rotation of the field relative to Levi-Civita across h, from face(h ^ 1) into face(h):
+  // beta_l - beta_r - increment plus the period jump of the matching, or the smallest
+  // representative modulo 2 pi / N (principal matching).
+  std::vector<double> jump;
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::matching_t>::value) {
+    const auto matching = get_parameter(np, internal_np::matching);
+    jump.assign(m.number_of_edges(), 0.);
+    for(std::size_t e = 0; e < jump.size(); ++e) jump[e] = period * double(get(matching, m.edges[e]));
+  }
   auto delta = [&](int h) {
-    return std::remainder(beta[m.face[h]] - beta[m.face[h ^ 1]] - internal::transport_increment(m, h), period);
+    if(jump.empty())
+      return std::remainder(beta[m.face[h]] - beta[m.face[h ^ 1]] - internal::transport_increment(m, h), period);
+    // the increments of h and h ^ 1 sum to 2 pi, not 0: take the edge's halfedge and negate
+    const int g = h & ~1;
+    const double d = beta[m.face[g]] - beta[m.face[g ^ 1]] - internal::transport_increment(m, g) + jump[g >> 1];
+    return (h & 1) ? -d : d;
   };
   const std::vector<double>& K = im.curvatures();
   Field_topology<TriangleMesh> r;
