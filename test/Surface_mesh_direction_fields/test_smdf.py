@@ -594,6 +594,58 @@ def test_shared_connection(smdf, c, meshes):
                1, ["-1", "-2", "[inconsistent_indices]"])
 
 
+def test_shared_matching(smdf, c, meshes):
+    """found (read back with the field's own matching) == prescribed on every solve, on meshes
+    where principal matching misreads cotan-weighted cross fields; the --matching-out file read
+    back through 'singularities --matching' gives the same singularities; exit 3 is reserved
+    for results that fail their read-back."""
+    cases = [("armadillo_cgal.off", 0.25), ("feline_vhacd.off", -0.25), ("double-torus_jnd.off", -0.25),
+             ("genus3_vhacd.off", -0.25), ("spot_c3d.obj", 0.25)]
+    with tempfile.TemporaryDirectory(prefix="smdf_matching_") as tmp:
+        for name, q in cases:
+            path = os.path.join(meshes, name)
+            if not os.path.isfile(path):
+                print("skip: %s not found" % name)
+                continue
+            info = smdf.json(["info", path])
+            if not info:
+                continue
+            nv, chi = info["vertices"], info["euler_characteristic"]
+            count = int(round(abs(4 * chi)))
+            verts = [(k * 7919 + 13) % nv for k in range(count)]
+            want = sorted(({"vertex": v, "index": q} for v in verts), key=lambda d: d["vertex"])
+            sing = ",".join("%d:%s" % (v, "1/4" if q > 0 else "-1/4") for v in verts)
+            for weights in ("cotan", "unit"):
+                label = "%s %d x %s, %s" % (name, count, q, weights)
+                field, match, conn = (os.path.join(tmp, x) for x in ("field.txt", "match.txt", "conn.txt"))
+                r = smdf.json(["connection", path, "--N", "4", "--weights", weights, "--singularities", sing,
+                               "--field-out", field, "--matching-out", match, "--connection-out", conn], label)
+                if not r:
+                    continue
+                c.check(r.get("success") is True and r.get("found") == want,
+                        "%s: found with the matching == prescribed (%d found, %d prescribed)"
+                        % (label, len(r.get("found", [])), len(want)))
+                pm = r.get("principal_matching", {})
+                c.check(isinstance(pm.get("extra"), list) and isinstance(pm.get("missing"), list) and
+                        (pm.get("edges_turning_at_least_pi_over_N", 0) > 0 or (not pm["extra"] and not pm["missing"])),
+                        "%s: principal matching misreads only where the connection turns >= pi/4 "
+                        "(%s extra, %s missing, %s wide edges)"
+                        % (label, len(pm.get("extra", [])), len(pm.get("missing", [])),
+                           pm.get("edges_turning_at_least_pi_over_N")))
+                c.check(r.get("max_matching_rounding", 1) < 1e-9,
+                        "%s: period jumps are integers (%r)" % (label, r.get("max_matching_rounding")))
+                mrows = read_rows(match)
+                crows = read_rows(conn)
+                c.check([m[:2] for m in mrows] == [x[:2] for x in crows] and
+                        all(len(m) == 3 and float(m[2]) == int(float(m[2])) for m in mrows),
+                        "%s: --matching-out has 'i j k' for every interior edge (%d lines)" % (label, len(mrows)))
+                back = smdf.json(["singularities", path, "--N", "4", "--field", field, "--matching", match],
+                                 label + ": singularities --matching")
+                if back:
+                    c.check(back.get("singularities") == want,
+                            "%s: the written field read back with the written matching == prescribed" % label)
+
+
 # ---- connection --svg ------------------------------------------------------------------------
 
 SVG_NS = "{http://www.w3.org/2000/svg}"
@@ -761,6 +813,7 @@ def test_shared(smdf, c, shared):
 
     # trivial connection on a genus-2 surface
     test_shared_connection(smdf, c, meshes)
+    test_shared_matching(smdf, c, meshes)
     test_shared_svg(smdf, c, meshes)
     test_shared_cone_metric(smdf, c, meshes)
 

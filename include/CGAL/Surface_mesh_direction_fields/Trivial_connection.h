@@ -428,13 +428,16 @@ public:
   /// every interior edge \f$e\f$ with \f$h\f$ = `halfedge(e)`, the period jump \f$k_e\f$ such
   /// that carrying the direction of the right face `face(opposite(h))` into the left face
   /// `face(h)` with the connection gives the left face's direction rotated by
-  /// \f$2\pi k_e/N\f$: \f$\beta_r + \theta_h = \beta_l + 2\pi k_e/N\f$, \f$\theta_h\f$ =
-  /// connection_angle(h). Written to `matching` (0 on boundary edges). Read back with this
-  /// matching (the `matching` parameter of field_singularities()), the field has exactly the
-  /// singularities and turning numbers of the connection, even across edges where the
-  /// connection turns by more than \f$\pi/N\f$, which principal matching misreads.
-  /// Returns the largest distance of \f$(\beta_r + \theta_h - \beta_l)N/2\pi\f$ to its integer:
-  /// about \f$10^{-12}\f$ for a field of this connection, large for any other field.
+  /// \f$2\pi k_e/N\f$ (modulo \f$2\pi\f$). Precisely, the connection's rotation relative to
+  /// Levi-Civita across \f$h\f$, adjustment_angle(h), is
+  /// \f$w(\beta_l - \beta_r - \text{increment}_h) + 2\pi k_e/N\f$ with \f$w\f$ wrapping to
+  /// \f$(-\pi, \pi]\f$, so adding multiples of \f$2\pi\f$ to field angles does not change
+  /// it. Written to `matching` (0 on boundary edges). Read back with this matching (the
+  /// `matching` parameter of field_singularities()), the field has exactly the singularities
+  /// and turning numbers of the connection, also across edges where the connection turns by
+  /// more than \f$\pi/N\f$, which principal matching misreads.
+  /// Returns the largest distance of the computed \f$k_e\f$ to its integer: about
+  /// \f$10^{-12}\f$ for a field of this connection, large for any other field.
   /// \tparam EdgeMatchingMap a writable property map, `edge_descriptor` keys, `int` values
   /// \pre solve() succeeded.
   template <typename FaceAngleMap, typename EdgeMatchingMap>
@@ -447,8 +450,9 @@ public:
       const int h = int(2 * e);
       int k = 0;
       if(!m_.is_border_edge(int(e))) {
-        const double t = (double(get(angles, m_.faces[m_.face[h ^ 1]])) + connection_angle_index(h) -
-                          double(get(angles, m_.faces[m_.face[h]]))) * scale;
+        const double d = double(get(angles, m_.faces[m_.face[h]])) - double(get(angles, m_.faces[m_.face[h ^ 1]])) -
+                         increment_[h];
+        const double t = (x_[e] - internal::wrap_angle(d)) * scale;
         const double rk = std::round(t);
         worst = (std::max)(worst, std::abs(t - rk));
         k = int(rk);

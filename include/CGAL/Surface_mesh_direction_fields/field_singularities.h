@@ -66,7 +66,7 @@ struct Field_topology
 ///     \cgalParamDescription{the numbering of the simplices, as in `Intrinsic_mesh`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{matching}
-///     \cgalParamDescription{the period jump \f$k_e\f$ of every interior edge, for `halfedge(e)` (see `Trivial_connection::field_matching()`): the rotation across the edge is then \f$\beta_l - \beta_r - \text{increment} + 2\pi k_e/N\f$ instead of the smallest one}
+///     \cgalParamDescription{the period jump \f$k_e\f$ of every interior edge, for `halfedge(e)` (see `Trivial_connection::field_matching()`): the rotation across the edge relative to Levi-Civita is then \f$w(\beta_l - \beta_r - \text{increment}) + 2\pi k_e/N\f$, \f$w\f$ wrapping to \f$(-\pi, \pi]\f$, instead of the smallest one modulo \f$2\pi/N\f$}
 ///     \cgalParamType{a readable property map with `edge_descriptor` keys and integer values}
 ///     \cgalParamDefault{principal matching}
 ///   \cgalParamNEnd
@@ -102,10 +102,10 @@ Field_topology<TriangleMesh> field_singularities(const TriangleMesh& tm, const F
   auto delta = [&](int h) {
     if(jump.empty())
       return std::remainder(beta[m.face[h]] - beta[m.face[h ^ 1]] - internal::transport_increment(m, h), period);
-    // the increments of h and h ^ 1 sum to 2 pi, not 0: take the edge's halfedge and negate
+    // (the increments of h and h ^ 1 sum to 2 pi, not 0: computed for the edge's halfedge)
     const int g = h & ~1;
-    const double d = beta[m.face[g]] - beta[m.face[g ^ 1]] - internal::transport_increment(m, g) + jump[g >> 1];
-    return (h & 1) ? -d : d;
+    const double d = internal::wrap_angle(beta[m.face[g]] - beta[m.face[g ^ 1]] - internal::transport_increment(m, g));
+    return (h & 1) ? -(d + jump[g >> 1]) : d + jump[g >> 1];
   };
   const std::vector<double>& K = im.curvatures();
   Field_topology<TriangleMesh> r;

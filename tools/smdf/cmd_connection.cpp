@@ -1,0 +1,337 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// smdf connection: trivial connection with prescribed singularities and its N-RoSy field.
+
+#include "commands.h"
+#include "common.h"
+
+#include <CGAL/Surface_mesh_direction_fields/field_singularities.h>
+#include <CGAL/Surface_mesh_direction_fields/parameters.h>
+#include <CGAL/Surface_mesh_direction_fields/Trivial_connection.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <random>
+#include <utility>
+#include <vector>
+
+namespace smdf_cli {
+
+namespace {
+
+// The options of `connection` that do not need the mesh, checked before it is read.
+struct Connection_options
+{
+  long N;
+  std::string weights_name;
+  SMDF::Connection_weights weights;
+  long edits;
+  SMDF::Svg_options svg;
+  Indexed_values singularities, turning;
+};
+
+Connection_options connection_options(const Args& args)
+{
+  Connection_options o;
+  o.N = symmetry_order_option(args);
+  o.weights_name = args.value("weights", "cotan");
+  if(o.weights_name == "cotan") o.weights = SMDF::COTAN_WEIGHTS;
+  else if(o.weights_name == "unit") o.weights = SMDF::UNIT_WEIGHTS;
+  else throw Usage_error("option --weights expects 'cotan' or 'unit', got '" + shorten(o.weights_name) + "'");
+  o.edits = args.integer("edit-benchmark", 0);
+  if(o.edits < 0) throw Usage_error("option --edit-benchmark expects a non-negative integer");
+  o.svg = svg_options(args);
+  o.singularities = index_list_option(args, "singularities");
+  o.turning = index_list_option(args, "generator-turning");
+  return o;
+}
+
+// Angle of the projection of (x, y, z) on the plane of f, in the frame of vectors_to_face_angles().
+bool direction_angle(const Mesh& mesh, face_descriptor f, const double v[3], double& angle)
+{
+  const halfedge_descriptor h = halfedge(f, mesh);
+  const K::Point_3& p0 = mesh.point(source(h, mesh));
+  const K::Point_3& p1 = mesh.point(target(h, mesh));
+  const K::Point_3& p2 = mesh.point(target(next(h, mesh), mesh));
+  const double e1[3] = {p1.x() - p0.x(), p1.y() - p0.y(), p1.z() - p0.z()};
+  const double e2[3] = {p2.x() - p0.x(), p2.y() - p0.y(), p2.z() - p0.z()};
+  const double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+  const double b[3] = {n[1] * e1[2] - n[2] * e1[1], n[2] * e1[0] - n[0] * e1[2], n[0] * e1[1] - n[1] * e1[0]};
+  const double le = std::sqrt(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]);
+  const double lb = std::sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
+  if(!(le > 0) || !(lb > 0)) return false;
+  const double x = (v[0] * e1[0] + v[1] * e1[1] + v[2] * e1[2]) / le;
+  const double y = (v[0] * b[0] + v[1] * b[1] + v[2] * b[2]) / lb;
+  const double norm = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  if(!(std::hypot(x, y) > 1e-12 * norm)) return false;   // normal to the face
+  angle = std::atan2(y, x);
+  if(angle < 0) angle += 2 * CGAL_PI;
+  return true;
+}
+
+// --constraints FILE: lines 'face angle' (radians in the face frame) or 'face x y z' (a 3D
+// direction, projected on the face plane).
+std::vector<std::pair<face_descriptor, double>> read_constraints(const std::string& cf, const Mesh& mesh)
+{
+  std::vector<std::pair<face_descriptor, double>> constraints;
+  const std::size_t nf = num_faces(mesh);
+  std::vector<std::size_t> seen(nf, 0);
+  for_each_data_line(cf, [&](std::size_t line_no, const std::vector<std::string>& tok) {
+    if(tok.size() != 2 && tok.size() != 4)
+      throw line_error(cf, line_no, "expected 'face angle' or 'face x y z', got " + std::to_string(tok.size()) + " fields");
+    const std::size_t fi = face_field(cf, line_no, tok[0], nf);
+    if(seen[fi]) throw line_error(cf, line_no, "face " + tok[0] + " was already constrained on line " + std::to_string(seen[fi]));
+    seen[fi] = line_no;
+    double v[3];
+    for(std::size_t k = 1; k < tok.size(); ++k) v[k - 1] = finite_field(cf, line_no, tok[k]);
+    const face_descriptor f = face_descriptor(Mesh::size_type(fi));
+    double angle = v[0];
+    if(tok.size() == 4 && !direction_angle(mesh, f, v, angle))
+      throw line_error(cf, line_no, "the direction of face " + tok[0] + " has no component in the face plane");
+    constraints.push_back(std::make_pair(f, angle));
+  });
+  return constraints;
+}
+
+// --connection-out FILE: 'i j angle' per interior edge, i j the vertices of halfedge(e).
+void write_connection(const std::string& file, const Mesh& mesh, const SMDF::Trivial_connection<Mesh>& tc)
+{
+  std::ostringstream os = number_stream();
+  for(edge_descriptor e : edges(mesh)) {
+    if(is_border(e, mesh)) continue;
+    const halfedge_descriptor h = halfedge(e, mesh);
+    os << index(source(h, mesh)) << ' ' << index(target(h, mesh)) << ' ' << tc.adjustment_angle(h) << '\n';
+  }
+  write_lines_file(file, os.str());
+}
+
+// --edit-benchmark K: moves a random singularity of `sing` (in the order given) to a random
+// free interior vertex K times, re-solving each time; the median time of solve + field, or
+// null if no move was made.
+Json edit_benchmark(const std::string& file, const Mesh& mesh, SMDF::Trivial_connection<Mesh>& tc,
+                    const Indexed_values& sing, long edits, Face_angle_property angles)
+{
+  std::vector<vertex_descriptor> interior;
+  for(vertex_descriptor v : vertices(mesh))
+    if(!is_border(v, mesh) && halfedge(v, mesh) != boost::graph_traits<Mesh>::null_halfedge())
+      interior.push_back(v);
+  std::vector<std::pair<vertex_descriptor, double>> current;
+  for(const auto& s : sing)
+    if(s.second != 0) current.push_back(std::make_pair(vertex_descriptor(Mesh::size_type(s.first)), s.second));
+  std::mt19937 rng(12345);
+  std::vector<double> times;
+  for(long k = 0; k < edits && !current.empty(); ++k) {
+    auto& s = current[std::uniform_int_distribution<std::size_t>(0, current.size() - 1)(rng)];
+    vertex_descriptor to = s.first;
+    for(int tries = 0; tries < 100 && tc.singularity_index(to) != 0; ++tries)
+      to = interior[std::uniform_int_distribution<std::size_t>(0, interior.size() - 1)(rng)];
+    if(tc.singularity_index(to) != 0) continue;
+    tc.set_singularity(s.first, 0);
+    tc.set_singularity(to, s.second);
+    s.first = to;
+    Stopwatch edit_clock;
+    const SMDF::Trivial_connection_status est = tc.solve();
+    if(!est.success) throw Error(file + ": trivial connection solve failed during --edit-benchmark: " + est.message);
+    tc.field_angles(angles);
+    times.push_back(edit_clock.total());
+  }
+  Json median;
+  if(!times.empty()) {
+    std::sort(times.begin(), times.end());
+    const std::size_t m = times.size() / 2;
+    median = times.size() % 2 ? times[m] : 0.5 * (times[m - 1] + times[m]);
+  }
+  return median;
+}
+
+// The prescribed singularities by vertex, rounded to multiples of 1/N as the library stores
+// them, without the zeros.
+Json prescribed_list(Indexed_values sing, long N)
+{
+  std::sort(sing.begin(), sing.end());
+  Indexed_values prescribed;
+  for(const auto& s : sing)
+    if(s.second != 0) prescribed.push_back(std::make_pair(s.first, std::round(s.second * double(N)) / double(N)));
+  return singularity_list(prescribed);
+}
+
+// The prescribed turning number of every generator (default 0), rounded as the library stores them.
+std::vector<double> prescribed_turning(const Indexed_values& turning, std::size_t generators, long N)
+{
+  std::vector<double> t(generators, 0.);
+  for(const auto& p : turning)
+    if(p.first < generators) t[p.first] = std::round(p.second * double(N)) / double(N);
+  return t;
+}
+
+// The singularities of `topo` are exactly the nonzero ones of `sing` (rounded to 1/N).
+bool same_singularities(const SMDF::Field_topology<Mesh>& topo, const Indexed_values& sing, long N)
+{
+  std::map<std::size_t, double> wanted, seen;
+  for(const auto& s : sing)
+    if(s.second != 0) wanted[s.first] = std::round(s.second * double(N)) / double(N);
+  for(const auto& p : topo.singularities) seen[index(p.first)] = p.second;
+  return wanted == seen;
+}
+
+// What a reader of the face field without its matching sees (principal matching: the smallest
+// rotation per edge): its singularities and turning numbers, the vertices it gets wrong, and
+// the interior edges across which the connection turns by pi/N or more.
+Json principal_matching_report(const Mesh& mesh, const SMDF::Trivial_connection<Mesh>& tc,
+                               const SMDF::Field_topology<Mesh>& principal, const Indexed_values& sing, long N)
+{
+  std::map<std::size_t, double> wanted, seen;
+  for(const auto& s : sing)
+    if(s.second != 0) wanted[s.first] = std::round(s.second * double(N)) / double(N);
+  for(const auto& p : principal.singularities) seen[index(p.first)] = p.second;
+  Json extra = Json::array(), missing = Json::array();
+  for(const auto& p : seen) {
+    auto it = wanted.find(p.first);
+    if(it == wanted.end() || it->second != p.second) extra.push_back(p.first);
+  }
+  for(const auto& p : wanted) {
+    auto it = seen.find(p.first);
+    if(it == seen.end() || it->second != p.second) missing.push_back(p.first);
+  }
+  std::size_t wide = 0;
+  const double limit = CGAL_PI / double(N);
+  for(edge_descriptor e : edges(mesh))
+    if(!is_border(e, mesh) && std::abs(tc.adjustment_angle(halfedge(e, mesh))) >= limit) ++wide;
+  Json r = Json::object();
+  r["found"] = found_list(principal);
+  r["generator_turning_numbers"] = turning_numbers(principal);
+  r["extra"] = std::move(extra);
+  r["missing"] = std::move(missing);
+  r["edges_turning_at_least_pi_over_N"] = wide;
+  return r;
+}
+
+} // namespace
+
+Json run_connection(const Args& args)
+{
+  const std::string& file = args.positional[0];
+  const Connection_options opt = connection_options(args);
+  const long N = opt.N;
+
+  Mesh mesh;
+  load_mesh(file, mesh);
+  const Indexed_values sing = prescribed_singularities(args, opt.singularities, num_vertices(mesh));
+  std::vector<std::pair<face_descriptor, double>> constraints;
+  if(args.has("constraints")) constraints = read_constraints(args.value("constraints"), mesh);
+
+  Stopwatch clock;
+  SMDF::Trivial_connection<Mesh> tc(mesh, SMDF::parameters::symmetry_order(int(N)).connection_weights(opt.weights));
+  const double construct_s = clock.lap();
+  for(const auto& s : sing) tc.set_singularity(vertex_descriptor(Mesh::size_type(s.first)), s.second);
+  for(const auto& t : opt.turning) tc.set_generator_turning_number(t.first, t.second);
+  if(!constraints.empty()) tc.set_directional_constraints(constraints);
+  clock.lap();
+  const SMDF::Trivial_connection_status st = tc.solve();
+  clock.lap();
+
+  Face_angle_property angles = mesh.add_property_map<face_descriptor, double>("f:smdf_angle", 0.).first;
+  tc.field_angles(angles);
+  Edge_matching_property matching = mesh.add_property_map<edge_descriptor, int>("e:smdf_matching", 0).first;
+  const double off_lattice = tc.field_matching(angles, matching);
+  const double field_s = clock.lap();
+  // read back with the field's own matching (the result) and with principal matching (what a
+  // reader without the matching sees), both on the connection's intrinsic mesh
+  const auto read = [&](bool with_matching) {
+    return on_file(file, [&] {
+      const auto np = SMDF::parameters::symmetry_order(int(N)).intrinsic_mesh(tc.intrinsic_mesh());
+      return with_matching ? SMDF::field_singularities(mesh, angles, np.matching(matching))
+                           : SMDF::field_singularities(mesh, angles, np);
+    });
+  };
+  const SMDF::Field_topology<Mesh> topo = read(true);
+  const SMDF::Field_topology<Mesh> principal = read(false);
+  if(args.has("field-out") || args.has("svg")) {
+    Face_vector_property vectors =
+      mesh.add_property_map<face_descriptor, K::Vector_3>("f:smdf_vector", K::Vector_3(0, 0, 0)).first;
+    tc.angles_to_vectors(angles, vectors);
+    write_field_files(args, mesh, vectors, N, topo, opt.svg);
+  }
+  if(args.has("connection-out")) write_connection(args.value("connection-out"), mesh, tc);
+  if(args.has("matching-out")) write_matching(args.value("matching-out"), mesh, matching);
+
+  const Json edit_median = st.success && opt.edits > 0 && !sing.empty()
+                               ? edit_benchmark(file, mesh, tc, sing, opt.edits, angles) : Json();
+
+  Json timings = Json::object();
+  timings["setup_s"] = construct_s + st.factor_seconds;
+  timings["solve_s"] = st.solve_seconds;
+  timings["field_s"] = field_s;
+  timings["edit_median_s"] = edit_median;
+
+  Json out = Json::object();
+  out["N"] = N;
+  out["weights"] = opt.weights_name;
+  out["prescribed"] = prescribed_list(sing, N);   // as set before the edits
+  out["found"] = found_list(topo);
+  out["generator_turning_numbers"] = turning_numbers(topo);
+  out["principal_matching"] = principal_matching_report(mesh, tc, principal, sing, N);
+  out["energy"] = st.energy;
+  out["residual"] = st.residual;
+  out["scaled_residual"] = st.scaled_residual;
+  out["max_holonomy_error"] = st.max_holonomy_error;
+  out["max_matching_rounding"] = off_lattice;
+
+  // The result is what its read-back says: the field with its matching must have exactly the
+  // prescribed singularities and turning numbers.
+  std::string failure = st.success ? "" : "trivial connection solve failed: " + st.message;
+  if(failure.empty() && !same_singularities(topo, sing, N))
+    failure = "the field read back with its matching has other singularities than the prescribed ones";
+  if(failure.empty() &&
+     topo.generator_turning_numbers != prescribed_turning(opt.turning, tc.generators().size(), N))
+    failure = "the field read back with its matching has other generator turning numbers than the prescribed ones";
+  out["success"] = failure.empty();
+  out["timings"] = std::move(timings);
+  if(!failure.empty()) throw Failed_result{out, file + ": " + failure, 3};
+  return out;
+}
+
+Command connection_command()
+{
+  return {"connection", {"MESH"},
+          {{"singularities", "LIST", "prescribed indices 'v:k,v:k,...' (k integer, p/q or decimal)"},
+           {"singularities-file", "FILE", "prescribed indices, one line 'v k' per vertex"},
+           {"N", "n", "symmetry order (1 vectors, 2 lines, 4 crosses; default 1)"},
+           {"weights", "W", "cotan (default) or unit"},
+           {"generator-turning", "LIST", "turning numbers 'g:t,...' of the generators (default 0)"},
+           {"constraints", "FILE", "directional constraints: lines 'face angle' or 'face x y z'"},
+           {"field-out", "FILE", "write one unit direction 'x y z' per face"},
+           {"connection-out", "FILE", "write 'i j angle' per interior edge (adjustment angle)"},
+           {"matching-out", "FILE", "write 'i j k' per interior edge (period jump of the field)"},
+           {"edit-benchmark", "K", "time K random singularity moves (re-solve + field)"},
+           {"svg", "FILE", "write an SVG picture of the field and its found singularities"},
+           {"view", "A,E[,UP]", "view of --svg: azimuth,elevation in degrees, up axis x|y|z (default 30,20,z)"},
+           {"width", "PX", "width of the --svg picture in pixels (default 800)"}},
+          "trivial connection with prescribed singularities and its N-RoSy field",
+          "Computes the trivial connection closest to Levi-Civita with the prescribed singularity\n"
+          "indices (multiples of 1/N at interior vertices; on a closed component they must sum to\n"
+          "its Euler characteristic) and generator turning numbers, and the face field it transports.\n"
+          "Prints {N, weights, prescribed: [{vertex, index}], found: [{vertex, index}] (read back\n"
+          "from the computed field with its matching), generator_turning_numbers (read back),\n"
+          "principal_matching: {found, generator_turning_numbers, extra, missing,\n"
+          "edges_turning_at_least_pi_over_N} (what a reader without the matching sees), energy,\n"
+          "residual, scaled_residual, max_holonomy_error, max_matching_rounding, success, timings:\n"
+          "{setup_s, solve_s, field_s, edit_median_s}}. Exit code 3 (JSON printed) when the solve\n"
+          "fails or found differs from prescribed.\n"
+          "Constraint angles are in radians in the face frame, counterclockwise from halfedge(f);\n"
+          "3D directions are projected on the face plane. Files may hold blank lines and '#'\n"
+          "comments. --connection-out writes, per interior edge, the vertices i j of halfedge(e) and\n"
+          "the adjustment angle for crossing it from its right face into its left face;\n"
+          "--matching-out the period jump k: carrying the right face's direction into the left\n"
+          "face gives the left face's direction rotated by 2 pi k / N.\n"
+          "--edit-benchmark K moves a random singularity K times (pseudo-random, fixed seed) and\n"
+          "reports the median time of solve + field (null without singularities).\n"
+          "--svg draws the mesh (orthographic view, back faces culled), the field (one\n"
+          "glyph per visible face, thinned out on large meshes) and the found singularities (red\n"
+          "positive, blue negative).\n",
+          run_connection};
+}
+
+} // namespace smdf_cli

@@ -1,0 +1,268 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#include "common.h"
+
+#include <CGAL/Surface_mesh_direction_fields/field_singularities.h>
+#include <CGAL/Surface_mesh_direction_fields/homology_generators.h>
+#include <CGAL/Surface_mesh_direction_fields/parameters.h>
+#include <CGAL/Surface_mesh_direction_fields/IO/read_triangle_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/IO/svg_writer.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <locale>
+#include <utility>
+
+namespace smdf_cli {
+
+namespace {
+
+// Silences std::cerr while alive: CGAL's readers may print diagnostics of their own, and the
+// tool promises exactly one error line.
+class Silence_cerr
+{
+public:
+  Silence_cerr() : old_(std::cerr.rdbuf(sink_.rdbuf())) {}
+  ~Silence_cerr() { std::cerr.rdbuf(old_); }
+  Silence_cerr(const Silence_cerr&) = delete;
+  Silence_cerr& operator=(const Silence_cerr&) = delete;
+
+private:
+  std::ostringstream sink_;
+  std::streambuf* old_;
+};
+
+std::size_t index_field(const std::string& file, std::size_t line_no, const std::string& field, std::size_t n,
+                        const char* what, const char* plural)
+{
+  std::size_t i;
+  if(!parse_index(field, i))
+    throw line_error(file, line_no, "'" + shorten(field) + "' is not a " + what + " index");
+  if(i >= n)
+    throw line_error(file, line_no, std::string(what) + " " + field + " does not exist (the mesh has " +
+                     std::to_string(n) + " " + plural + ")");
+  return i;
+}
+
+} // namespace
+
+// ---- Files and their errors ---------------------------------------------------------------
+
+Error file_error(const std::string& file, const std::string& message, const char* kind)
+{
+  return Error(file + ": " + message + " [" + kind + "]");
+}
+
+Error line_error(const std::string& file, std::size_t line_no, const std::string& what)
+{
+  return file_error(file, "line " + std::to_string(line_no) + ": " + what, "file_error");
+}
+
+void for_each_data_line(const std::string& file,
+                        const std::function<void(std::size_t, const std::vector<std::string>&)>& f,
+                        Comment_style comments)
+{
+  std::ifstream in(file);
+  if(!in) throw file_error(file, "cannot open file", "file_error");
+  std::string line;
+  std::size_t line_no = 0;
+  while(std::getline(in, line)) {
+    ++line_no;
+    const std::size_t hash = comments == TRAILING_COMMENTS ? line.find('#') : std::string::npos;
+    if(hash != std::string::npos) line.erase(hash);
+    std::istringstream is(line);
+    std::vector<std::string> tok;
+    for(std::string t; is >> t;) tok.push_back(t);
+    if(tok.empty() || tok[0][0] == '#') continue;
+    f(line_no, tok);
+  }
+  if(in.bad()) throw file_error(file, "read error", "file_error");
+}
+
+std::size_t vertex_field(const std::string& file, std::size_t line_no, const std::string& field, std::size_t n)
+{
+  return index_field(file, line_no, field, n, "vertex", "vertices");
+}
+
+std::size_t face_field(const std::string& file, std::size_t line_no, const std::string& field, std::size_t n)
+{
+  return index_field(file, line_no, field, n, "face", "faces");
+}
+
+double finite_field(const std::string& file, std::size_t line_no, const std::string& field)
+{
+  char* end = nullptr;
+  const double d = std::strtod(field.c_str(), &end);
+  if(*end != '\0' || !std::isfinite(d))
+    throw line_error(file, line_no, "'" + shorten(field) + "' is not a finite number");
+  return d;
+}
+
+void write_lines_file(const std::string& file, const std::string& text)
+{
+  std::ofstream out(file);
+  if(!out) throw file_error(file, "cannot open file for writing", "file_error");
+  out << text;
+  out.flush();
+  if(!out) throw file_error(file, "write error", "file_error");
+}
+
+std::ostringstream number_stream()
+{
+  std::ostringstream os;
+  os.imbue(std::locale::classic());
+  os.precision(17);
+  return os;
+}
+
+std::string format_real(double d)
+{
+  std::ostringstream os = number_stream();
+  os << d;
+  return os.str();
+}
+
+// ---- Meshes -------------------------------------------------------------------------------
+
+SMDF::Polygon_soup_report load_mesh(const std::string& file, Mesh& mesh)
+{
+  return on_file(file, [&] {
+    Silence_cerr quiet;
+    return SMDF::read_triangle_mesh(file, mesh);
+  });
+}
+
+const char* kind_name(SMDF::Generator_kind k)
+{
+  return k == SMDF::HANDLE_GENERATOR ? "handle" : "boundary";
+}
+
+// ---- Direction fields ---------------------------------------------------------------------
+
+Indexed_values prescribed_singularities(const Args& args, const Indexed_values& listed, std::size_t nv)
+{
+  Indexed_values sing = listed;
+  std::vector<std::string> given_by(nv);   // where each vertex's index was given
+  for(const auto& s : sing) {
+    if(s.first >= nv)
+      throw Error("--singularities: vertex " + std::to_string(s.first) + " does not exist (the mesh has " +
+                  std::to_string(nv) + " vertices)");
+    if(!given_by[s.first].empty())
+      throw Error("--singularities: vertex " + std::to_string(s.first) + " is given twice");
+    given_by[s.first] = "--singularities";
+  }
+  if(args.has("singularities-file")) {
+    const std::string sf = args.value("singularities-file");
+    for_each_data_line(sf, [&](std::size_t line_no, const std::vector<std::string>& tok) {
+      double k;
+      if(tok.size() != 2) throw line_error(sf, line_no, "expected 'vertex index', got " + std::to_string(tok.size()) + " fields");
+      const std::size_t v = vertex_field(sf, line_no, tok[0], nv);
+      if(!parse_number(tok[1], k)) throw line_error(sf, line_no, "'" + shorten(tok[1]) + "' is not a number (integer, p/q or decimal)");
+      if(!given_by[v].empty()) throw line_error(sf, line_no, "vertex " + tok[0] + " was already given by " + given_by[v]);
+      given_by[v] = "line " + std::to_string(line_no);
+      sing.push_back(std::make_pair(v, k));
+    });
+  }
+  return sing;
+}
+
+Json singularity_list(const Indexed_values& s)
+{
+  Json list = Json::array();
+  for(const auto& p : s) {
+    Json j = Json::object();
+    j["vertex"] = p.first;
+    j["index"] = p.second;
+    list.push_back(std::move(j));
+  }
+  return list;
+}
+
+SMDF::Field_topology<Mesh> field_topology(const std::string& file, const Mesh& mesh,
+                                          Face_angle_property angles, long N,
+                                          const Edge_matching_property* matching)
+{
+  return on_file(file, [&] {
+    if(matching)
+      return SMDF::field_singularities(mesh, angles, SMDF::parameters::symmetry_order(int(N)).matching(*matching));
+    return SMDF::field_singularities(mesh, angles, SMDF::parameters::symmetry_order(int(N)));
+  });
+}
+
+void write_matching(const std::string& file, const Mesh& mesh, Edge_matching_property matching)
+{
+  std::ostringstream os;
+  for(edge_descriptor e : edges(mesh)) {
+    if(is_border(e, mesh)) continue;
+    const halfedge_descriptor h = halfedge(e, mesh);
+    os << index(source(h, mesh)) << ' ' << index(target(h, mesh)) << ' ' << get(matching, e) << '\n';
+  }
+  write_lines_file(file, os.str());
+}
+
+Json found_list(const SMDF::Field_topology<Mesh>& topo)
+{
+  Indexed_values s;
+  for(const auto& p : topo.singularities) s.push_back(std::make_pair(index(p.first), p.second));
+  std::sort(s.begin(), s.end());
+  return singularity_list(s);
+}
+
+Json turning_numbers(const SMDF::Field_topology<Mesh>& topo)
+{
+  Json list = Json::array();
+  for(double t : topo.generator_turning_numbers) list.push_back(t);
+  return list;
+}
+
+SMDF::Svg_options svg_options(const Args& args)
+{
+  SMDF::Svg_options svg;
+  if(!args.has("svg") && (args.has("view") || args.has("width")))
+    throw Usage_error(std::string("option --") + (args.has("view") ? "view" : "width") + " needs --svg FILE");
+  if(args.has("view")) {
+    const std::string view = args.value("view");
+    const std::size_t comma = view.find(',');
+    const std::size_t comma2 = comma == std::string::npos ? comma : view.find(',', comma + 1);
+    double a = 0, e = 0;
+    const std::string axis = comma2 == std::string::npos ? "z" : view.substr(comma2 + 1);
+    if(comma == std::string::npos || !parse_real(view.substr(0, comma), a) ||
+       !parse_real(view.substr(comma + 1, comma2 == std::string::npos ? std::string::npos : comma2 - comma - 1), e) ||
+       (axis != "x" && axis != "y" && axis != "z"))
+      throw Usage_error("option --view expects 'azimuth,elevation' in degrees, optionally followed by ',x', "
+                        "',y' or ',z' (the up axis, default z), got '" + shorten(view) + "'");
+    svg.up_axis = axis[0] - 'x';
+    svg.azimuth = a;
+    svg.elevation = e;
+  }
+  if(args.has("width")) {
+    const long w = args.integer("width", 800);
+    if(w < 1 || w > 100000) throw Usage_error("option --width expects a number of pixels in [1, 100000], got '" + args.value("width") + "'");
+    svg.width = int(w);
+  }
+  return svg;
+}
+
+void write_field_files(const Args& args, const Mesh& mesh, Face_vector_property vectors, long N,
+                       const SMDF::Field_topology<Mesh>& topo, const SMDF::Svg_options& svg)
+{
+  if(args.has("svg")) {
+    std::ostringstream os;
+    SMDF::write_field_svg(os, mesh, vectors, int(N), topo.singularities, svg);
+    write_lines_file(args.value("svg"), os.str());
+  }
+  if(args.has("field-out")) {
+    std::ostringstream os = number_stream();
+    for(face_descriptor f : faces(mesh)) {
+      const K::Vector_3& v = get(vectors, f);
+      os << v.x() << ' ' << v.y() << ' ' << v.z() << '\n';
+    }
+    write_lines_file(args.value("field-out"), os.str());
+  }
+}
+
+} // namespace smdf_cli

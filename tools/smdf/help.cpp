@@ -1,0 +1,53 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#include "help.h"
+
+#include "commands.h"
+
+#include <iomanip>
+#include <string>
+
+namespace smdf_cli {
+
+namespace {
+
+// "smdf <name> <positionals> [--option VALUE]...".
+std::string synopsis(const Command& cmd)
+{
+  std::string s = "smdf " + cmd.name;
+  for(const std::string& p : cmd.positionals) s += " " + p;
+  for(const Option_spec& o : cmd.options)
+    s += " [--" + o.name + (o.value_name.empty() ? "" : " " + o.value_name) + "]";
+  return s;
+}
+
+} // namespace
+
+void print_usage(std::ostream& os)
+{
+  os << "usage: smdf <command> [options] MESH\n"
+        "       smdf <command> --help\n"
+        "       smdf --version\n\n"
+        "Reads a triangle mesh (OFF, OBJ or PLY; it must be an orientable 2-manifold, possibly\n"
+        "with boundary and several components) and prints one JSON object on stdout. Vertex and\n"
+        "face indices are 0-based in file order. On failure prints one line to stderr and exits\n"
+        "with 1 (input that cannot be processed) or 2 (usage error); exit code 3 means the JSON\n"
+        "object was printed but the result failed (cone-metric: not converged, one stderr line).\n\n"
+        "commands:\n";
+  for(const Command& c : commands())
+    os << "  " << std::left << std::setw(14) << c.name << c.summary << "\n";
+}
+
+void print_command_usage(const Command& cmd, std::ostream& os)
+{
+  os << "usage: " << synopsis(cmd) << "\n\n" << cmd.description;
+  os << "\noptions:\n";
+  for(const Option_spec& o : cmd.options) {
+    const std::string head = "--" + o.name + (o.value_name.empty() ? "" : " " + o.value_name);
+    os << "  " << std::left << std::setw(18) << head << o.help << "\n";
+  }
+  os << "  " << std::left << std::setw(18) << "-h, --help" << "print this help and exit\n";
+}
+
+} // namespace smdf_cli
