@@ -15,6 +15,9 @@
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/intrinsic_geometry.h>
 #include <CGAL/Surface_mesh_direction_fields/holonomy.h>
+#include <CGAL/Surface_mesh_direction_fields/Eigen_sparse_cholesky.h>
+#include <CGAL/Surface_mesh_direction_fields/Intrinsic_mesh.h>
+#include <CGAL/Eigen_solver_traits.h>
 #include <CGAL/Surface_mesh_direction_fields/IO/read_triangle_mesh.h>
 
 #include <algorithm>
@@ -582,6 +585,44 @@ struct Tests
   }
 };
 
+// Other SparseCholeskySolver models (Eigen's LDLT, CGAL's Eigen_solver_traits) and a shared
+// Intrinsic_mesh give the metric of the default CHOLMOD solve; the shared mesh is not rebuilt.
+template <typename Mesh>
+void solver_policy(const Mesh& mesh, const std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, double>& cones,
+                   const std::string& what)
+{
+  auto tgt = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+  for(auto v : vertices(mesh)) put(tgt, v, 0.);
+  for(const auto& c : cones) put(tgt, c.first, c.second);
+  auto ref = get(CGAL::dynamic_edge_property_t<double>(), mesh);
+  auto other = get(CGAL::dynamic_edge_property_t<double>(), mesh);
+  const SMDF::Cone_metric_status st = SMDF::compute_cone_metric(mesh, tgt, ref);
+  SMDF_CHECK_MSG(st.converged, what << ": default solver converged");
+  auto compare = [&](const SMDF::Cone_metric_status& s2, const char* name) {
+    double d = 0;
+    for(auto e : edges(mesh)) {
+      const double a = get(ref, e), b = get(other, e);
+      if(std::isnan(a) && std::isnan(b)) continue;
+      d = (std::max)(d, std::abs(a - b) / a);
+    }
+    SMDF_CHECK_MSG(s2.converged && s2.max_curvature_error <= 1e-10 + s2.rounding_level && d < 1e-8,
+                   what << ", " << name << ": converged " << s2.converged << ", error " << s2.max_curvature_error
+                        << ", max relative length difference " << d);
+  };
+  compare(SMDF::compute_cone_metric(mesh, tgt, other,
+              SMDF::parameters::sparse_linear_solver(SMDF::Eigen_sparse_cholesky<>())), "Eigen_sparse_cholesky");
+  typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<CGAL::Eigen_sparse_matrix<double>::EigenType>> Traits;
+  compare(SMDF::compute_cone_metric(mesh, tgt, other, SMDF::parameters::sparse_linear_solver(Traits())),
+          "CGAL Eigen_solver_traits");
+  const SMDF::Intrinsic_mesh<Mesh> im(mesh);
+  const std::size_t builds = SMDF::internal::intrinsic_mesh_builds();
+  compare(SMDF::compute_cone_metric(mesh, tgt, other, SMDF::parameters::intrinsic_mesh(im)), "shared Intrinsic_mesh");
+  // the input's is not rebuilt; a punched surface (cones of index >= 1) is a new mesh with its own
+  const std::size_t expected = builds + (st.punched_vertices.empty() ? 0 : 1);
+  SMDF_CHECK_MSG(SMDF::internal::intrinsic_mesh_builds() == expected,
+                 what << ": " << SMDF::internal::intrinsic_mesh_builds() - builds << " intrinsic meshes built with a shared one");
+}
+
 template <typename Mesh>
 bool read(const std::string& file, Mesh& mesh)
 {
@@ -645,6 +686,17 @@ int main()
       c[*std::next(vertices(mesh).begin(), 1500)] = M_PI / 2;
       c[*std::next(vertices(mesh).begin(), 2500)] = M_PI / 2;
       ts.punched(mesh, c, "spot_c3d.obj, cones of index +3/2 (hole), +1/4, +1/4");
+    }
+  }
+  {
+    Surface_mesh spot, dt;
+    if(read(md + "spot_c3d.obj", spot)) solver_policy(spot, ts.extreme_cones(spot, M_PI / 2), "spot_c3d.obj, 8 cones pi/2");
+    if(read(md + "double-torus_jnd.off", dt)) solver_policy(dt, ts.standard_targets(dt), "double-torus_jnd.off, one cone of -4 pi");
+    Polyhedron ps;
+    if(read(md + "spot_c3d.obj", ps)) {   // one cone of index +2: a hole, solved on the holed surface
+      std::map<boost::graph_traits<Polyhedron>::vertex_descriptor, double> c;
+      c[*std::next(vertices(ps).begin(), 100)] = 4 * M_PI;
+      solver_policy(ps, c, "spot_c3d.obj (Polyhedron_3), one cone of index +2");
     }
   }
   {

@@ -7,7 +7,9 @@
 #include <CGAL/Surface_mesh_direction_fields/errors.h>
 #include <CGAL/Surface_mesh_direction_fields/parameters.h>
 #include <CGAL/Surface_mesh_direction_fields/intrinsic_triangle.h>
+#include <CGAL/Surface_mesh_direction_fields/Intrinsic_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/Intrinsic_triangulation.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/cholesky_solver_traits.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh_arrays.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/development.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/topology.h>
@@ -176,6 +178,16 @@ struct No_cone_metric_visitor { void operator()(int, double) const {} };
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{sparse_linear_solver}
+///     \cgalParamDescription{the solver of the Newton systems (copied)}
+///     \cgalParamType{a model of `SparseCholeskySolver`, or CGAL's `Eigen_solver_traits` of a direct symmetric solver}
+///     \cgalParamDefault{`Cholmod_cholesky`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{intrinsic_mesh}
+///     \cgalParamDescription{the input metric as an `Intrinsic_mesh` of `tm` built before, instead of building one; replaces `edge_length_map`, `vertex_point_map` and the index maps}
+///     \cgalParamType{`Intrinsic_mesh<TriangleMesh>`}
+///     \cgalParamDefault{one built from `tm` and the other parameters}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{visitor}
 ///     \cgalParamDescription{progress callback, called as `visitor(iteration, max_error)` once with
 ///       iteration 0 for the input metric and after every Newton iteration; `max_error` is the
@@ -205,9 +217,12 @@ Cone_metric_status compute_cone_metric(const TriangleMesh& tm,
                                   internal::No_cone_metric_visitor());
   const bool allow_flips = choose_parameter(get_parameter(np, internal_np::intrinsic_edge_flips), true);
 
-  internal::Mesh_arrays<TriangleMesh> m(tm, np);
-  internal::Topology_arrays topo(m);
+  const Intrinsic_mesh<TriangleMesh> im = internal::get_intrinsic_mesh(tm, np);
+  const internal::Mesh_arrays<TriangleMesh>& m = im.arrays();
+  const internal::Topology_arrays& topo = im.topology_arrays();
   const std::size_t nv = m.number_of_vertices();
+  typedef typename internal::Get_cholesky_solver<NamedParameters>::type Solver;
+  const Solver solver = internal::make_cholesky_solver<Solver>(np);
 
   // --- 1. the targets: finite, boundary ones below pi, Gauss-Bonnet on every component
   std::vector<double> target;
@@ -223,7 +238,7 @@ Cone_metric_status compute_cone_metric(const TriangleMesh& tm,
         holed.mesh, holed.target, holed.output_length,
         parameters::edge_length_map(holed.input_length).conformal_factor_map(holed.u)
             .number_of_iterations(max_iterations).curvature_tolerance(tol).visitor(visitor)
-            .intrinsic_edge_flips(allow_flips));
+            .intrinsic_edge_flips(allow_flips).sparse_linear_solver(solver));
     holed.map_back(m, output_lengths, np);
     st.punched_vertices.assign(punched.begin(), punched.end());
     st.seconds = internal::seconds_since(t0);
@@ -231,8 +246,8 @@ Cone_metric_status compute_cone_metric(const TriangleMesh& tm,
   }
 
   // --- 3. Newton, first on the input triangulation, then (if needed) with intrinsic flips
-  typedef internal::Vertex_scaling_flow<TriangleMesh> Flow;
-  Flow flow(m, topo);
+  typedef internal::Vertex_scaling_flow<TriangleMesh, Solver> Flow;
+  Flow flow(m, topo, solver);
   std::vector<double> u(nv, 0.), len;
   internal::Vertex_scaling_result r =
       internal::run_vertex_scaling(flow, target, u, len, max_iterations, tol, visitor, allow_flips);

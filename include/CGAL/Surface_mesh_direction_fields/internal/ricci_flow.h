@@ -72,12 +72,13 @@ struct Flippable_triangulation
 // Delaunay for the current metric by Ptolemy flips (l_cd l_ab = l_ad l_bc + l_db l_ca, which
 // commutes with vertex scaling), every Delaunay triangulation satisfies the triangle
 // inequalities, and a solution exists for every target satisfying Gauss-Bonnet.
-template <typename TM>
+// Solver: the SparseCholeskySolver of the Newton systems (reduced Hessians).
+template <typename TM, typename Solver = Cholmod_cholesky>
 class Vertex_scaling_flow
 {
 public:
-  Vertex_scaling_flow(const Mesh_arrays<TM>& m, const Topology_arrays& topo)
-    : m_(m), l0_(m.length)
+  Vertex_scaling_flow(const Mesh_arrays<TM>& m, const Topology_arrays& topo, const Solver& solver = Solver())
+    : m_(m), l0_(m.length), chol_(solver)
   {
     tri_.next = m.next;
     tri_.target = m.target;
@@ -610,7 +611,7 @@ private:
   std::vector<int> edge_pos_, diag_pos_;
   std::vector<double> w_, half_cot_;
   std::vector<double> half_exp_;   // per vertex: e^{u / 2} of the last lengths()
-  Cholmod_cholesky chol_;
+  Solver chol_;
 
   double residual_norm2(const std::vector<double>& k, const std::vector<double>& target) const
   {
