@@ -19,6 +19,7 @@
 #include <CGAL/Surface_mesh_direction_fields/homology_generators.h>
 #include <CGAL/Surface_mesh_direction_fields/holonomy.h>
 #include <CGAL/Surface_mesh_direction_fields/Trivial_connection.h>
+#include <CGAL/Surface_mesh_direction_fields/compute_trivial_connection.h>
 #include <CGAL/Surface_mesh_direction_fields/field_singularities.h>
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/Intrinsic_triangulation.h>

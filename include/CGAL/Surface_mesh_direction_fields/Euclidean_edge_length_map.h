@@ -26,6 +26,7 @@ namespace Surface_mesh_direction_fields {
 /// the package.
 /// \tparam TriangleMesh a model of `FaceGraph`
 /// \tparam VertexPointMap a readable property map from vertices to 3D points
+/// \cgalModels `EdgeLengthMap`
 template <typename TriangleMesh, typename VertexPointMap>
 class Euclidean_edge_length_map
 {

@@ -127,8 +127,11 @@ public:
   /// `true` if this object was built on `tm` (the same object, not a copy of it).
   bool is_built_on(const TriangleMesh& tm) const { return tm_ == &tm; }
 
+  /// The number of vertices (isolated ones included).
   std::size_t number_of_vertices() const { return arrays().number_of_vertices(); }
+  /// The number of edges.
   std::size_t number_of_edges() const { return arrays().number_of_edges(); }
+  /// The number of faces.
   std::size_t number_of_faces() const { return arrays().number_of_faces(); }
 
   /// The index of `v` (its position in the numbering, see `vertex_index_map`).

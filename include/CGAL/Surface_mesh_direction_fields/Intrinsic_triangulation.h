@@ -102,7 +102,7 @@ private:
 ///
 /// \tparam TriangleMesh a model of `VertexListGraph` with a `vertex_point` property
 /// \tparam OutputMesh a model of `MutableFaceGraph` with a `vertex_point` property
-/// \tparam EdgeLengthMap a writable property map with `edge_descriptor` keys of `OutputMesh`
+/// \tparam OutputEdgeLengthMap a writable property map with `edge_descriptor` keys of `OutputMesh`
 ///   and `double` values
 /// \param it the triangulation
 /// \param tm the mesh it was computed for (same number of vertices)
@@ -112,10 +112,10 @@ private:
 ///
 /// Throws `Input_error` if `it` and `tm` do not have the same number of vertices or `out` is
 /// not empty.
-template <typename TriangleMesh, typename OutputMesh, typename EdgeLengthMap>
+template <typename TriangleMesh, typename OutputMesh, typename OutputEdgeLengthMap>
 std::vector<typename boost::graph_traits<OutputMesh>::edge_descriptor>
 copy_intrinsic_triangulation(const Intrinsic_triangulation& it, const TriangleMesh& tm,
-                             OutputMesh& out, EdgeLengthMap out_lengths)
+                             OutputMesh& out, OutputEdgeLengthMap out_lengths)
 {
   typedef boost::graph_traits<OutputMesh> GT;
   if(num_vertices(tm) != it.number_of_vertices())

@@ -125,7 +125,7 @@ struct No_cone_metric_visitor { void operator()(int, double) const {} };
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
 /// \tparam VertexCurvatureMap a readable property map, `vertex_descriptor` keys, `double` values
-/// \tparam EdgeLengthMap a writable property map, `edge_descriptor` keys, `double` values
+/// \tparam OutputEdgeLengthMap a writable property map, `edge_descriptor` keys, `double` values
 ///
 /// \param tm the mesh
 /// \param target_curvature the target \f$\bar K_v\f$ / \f$\bar\kappa_v\f$ of every vertex
@@ -192,15 +192,15 @@ struct No_cone_metric_visitor { void operator()(int, double) const {} };
 ///     \cgalParamDescription{progress callback, called as `visitor(iteration, max_error)` once with
 ///       iteration 0 for the input metric and after every Newton iteration; `max_error` is the
 ///       current \f$\max_v |K_v - \bar K_v|\f$}
-///     \cgalParamType{a callable with signature `void(int, double)`}
+///     \cgalParamType{a model of `ConeMetricVisitor`: a callable with signature `void(int, double)`}
 ///     \cgalParamDefault{none}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
-template <typename TriangleMesh, typename VertexCurvatureMap, typename EdgeLengthMap,
+template <typename TriangleMesh, typename VertexCurvatureMap, typename OutputEdgeLengthMap,
           typename NamedParameters = parameters::Default_named_parameters>
 Cone_metric_status compute_cone_metric(const TriangleMesh& tm,
                                        VertexCurvatureMap target_curvature,
-                                       EdgeLengthMap output_lengths,
+                                       OutputEdgeLengthMap output_lengths,
                                        const NamedParameters& np = parameters::default_values())
 {
   using parameters::choose_parameter;

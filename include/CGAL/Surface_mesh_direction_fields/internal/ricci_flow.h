@@ -4,11 +4,15 @@
 #ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_RICCI_FLOW_H
 #define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_RICCI_FLOW_H
 
+// The Newton flow of discrete conformal vertex scaling (Springborn, Schroeder, Pinkall 2008)
+// with intrinsic Delaunay flips, one class whose steps are short member functions. Over 600
+// lines because the flip phase and the Newton phase share the triangulation state; splitting
+// them would pass that state between headers.
+
 #include <CGAL/Surface_mesh_direction_fields/intrinsic_triangle.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh_arrays.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/topology.h>
 #include <CGAL/Surface_mesh_direction_fields/Cholmod_cholesky.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/sparse_solvers.h>
 
 #include <algorithm>
 #include <array>

@@ -4,6 +4,9 @@
 #ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_TWO_DOMAIN_CHOLESKY_H
 #define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_TWO_DOMAIN_CHOLESKY_H
 
+// (One concern, over 600 lines: the ordering, the two CHOLMOD halves, the dense separator
+// kernels and the thread guards are parts of one factorisation and are used nowhere else.)
+
 // Sparse Cholesky factorisation on two threads by one level of nested dissection: the
 // unknowns are split into two domains D1, D2 that do not touch and a separator S,
 //
