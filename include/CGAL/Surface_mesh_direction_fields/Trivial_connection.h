@@ -124,17 +124,9 @@ public:
 
   /// Precomputes the metric, topology, generators and their Levi-Civita holonomy.
   /// Throws `Input_error` for invalid meshes or parameters.
+  /// Named parameters: `edge_length_map`, `vertex_point_map` (also the embedding of
+  /// angles_to_vectors()) and the index maps as in the constructor of `Intrinsic_mesh`, and
   /// \cgalNamedParamsBegin
-  ///   \cgalParamNBegin{edge_length_map}
-  ///     \cgalParamDescription{the intrinsic metric}
-  ///     \cgalParamType{a readable property map with `edge_descriptor` keys and `double` values}
-  ///     \cgalParamDefault{Euclidean lengths from `vertex_point_map`}
-  ///   \cgalParamNEnd
-  ///   \cgalParamNBegin{vertex_point_map}
-  ///     \cgalParamDescription{vertex positions: the default metric and the embedding of angles_to_vectors()}
-  ///     \cgalParamType{a readable property map with `vertex_descriptor` keys and 3D point values}
-  ///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
-  ///   \cgalParamNEnd
   ///   \cgalParamNBegin{symmetry_order}
   ///     \cgalParamDescription{\f$N\f$: directions are identified up to rotations by \f$2\pi/N\f$}
   ///     \cgalParamType{`int`, at least 1}
@@ -164,10 +156,6 @@ public:
   ///     \cgalParamDescription{the connectivity, metric and generators to use, built before on `tm`; replaces `edge_length_map`, `vertex_point_map` (except for angles_to_vectors()) and the index maps}
   ///     \cgalParamType{`Intrinsic_mesh<TriangleMesh>`}
   ///     \cgalParamDefault{one built from `tm` and the other parameters}
-  ///   \cgalParamNEnd
-  ///   \cgalParamNBegin{vertex_index_map, face_index_map, edge_index_map}
-  ///     \cgalParamDescription{the numbering of the simplices, as in `Intrinsic_mesh`}
-  ///     \cgalParamDefault{iteration order}
   ///   \cgalParamNEnd
   /// \cgalNamedParamsEnd
   template <typename NamedParameters = parameters::Default_named_parameters>
