@@ -19,6 +19,7 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
+#include <limits>
 #include <random>
 #include <memory>
 #include <map>
@@ -544,6 +545,127 @@ void shared_structure(const Mesh& mesh, const std::string& name)
   SMDF_CHECK(rejected);
 }
 
+// Smoothest generator turning numbers: the chosen ones are the lattice minimum of the energy
+// (against every turning vector in a box when there are few generators, against each single
+// step of +-1/N otherwise), the solve reaches the predicted energy, and the field read back with
+// its matching has those turning numbers.
+void smoothest_turning(const Surface_mesh& mesh, const std::string& name, int box)
+{
+  typedef boost::graph_traits<Surface_mesh>::vertex_descriptor vertex_descriptor;
+  const int N = 4;
+  const long chi = long(num_vertices(mesh)) - long(num_edges(mesh)) + long(num_faces(mesh));
+  std::vector<vertex_descriptor> vs(vertices(mesh).begin(), vertices(mesh).end());
+  SMDF::Trivial_connection<Surface_mesh> tc(mesh, SMDF::parameters::symmetry_order(N));
+  const int n = int(std::abs(4 * chi));
+  for(int i = 0; i < n; ++i) tc.set_singularity(vs[(std::size_t(i) * 7919 + 13) % vs.size()], chi > 0 ? 0.25 : -0.25);
+  const SMDF::Smoothest_turning_numbers r = tc.choose_smoothest_generator_turning_numbers();
+  const SMDF::Trivial_connection_status st = tc.solve();
+  std::cout << name << ", " << n << " x " << (chi > 0 ? "+" : "-") << "1/4, N = 4, cotan: energy " << r.energy_with_zero_turning
+            << " with turning numbers 0, " << r.energy << " with the smoothest (" << r.generators << " generators, "
+            << (r.exact ? "exact" : "local minimum") << "), solve " << st.energy << std::endl;
+  SMDF_CHECK_MSG(st.success && std::abs(st.energy - r.energy) <= 1e-8 * (1 + r.energy),
+                 name << ": predicted energy " << r.energy << ", solved " << st.energy);
+  SMDF_CHECK(r.energy <= r.energy_with_zero_turning * (1 + 1e-12));
+  SMDF_CHECK(r.exact == (r.generators <= 12));
+  auto angles = get(CGAL::dynamic_face_property_t<double>(), mesh);
+  auto matching = get(CGAL::dynamic_edge_property_t<int>(), mesh);
+  tc.field_angles(angles);
+  tc.field_matching(angles, matching);
+  const auto back = SMDF::field_singularities(mesh, angles,
+      SMDF::parameters::symmetry_order(N).matching(matching).intrinsic_mesh(tc.intrinsic_mesh()));
+  SMDF_CHECK_MSG(back.generator_turning_numbers == r.turning_numbers, name << ": chosen turning numbers read back");
+  const std::vector<double> chosen = r.turning_numbers;
+  const double tol = 1e-9 * (1 + r.energy);
+  auto energy_of = [&](const std::vector<double>& t) {
+    for(std::size_t g = 0; g < t.size(); ++g) tc.set_generator_turning_number(g, t[g]);
+    return tc.solve().energy;
+  };
+  std::size_t tried = 0;
+  double lowest = std::numeric_limits<double>::infinity();
+  if(box > 0) {   // every vector with entries chosen_g + j/N, |j| <= box
+    const std::size_t k = chosen.size();
+    std::vector<int> j(k, -box);
+    while(true) {
+      std::vector<double> t(chosen);
+      for(std::size_t g = 0; g < k; ++g) t[g] += double(j[g]) / N;
+      lowest = (std::min)(lowest, energy_of(t));
+      ++tried;
+      std::size_t g = 0;
+      while(g < k && j[g] == box) j[g++] = -box;
+      if(g == k) break;
+      ++j[g];
+    }
+  } else {
+    for(std::size_t g = 0; g < chosen.size(); ++g)
+      for(double step : {-1.0 / N, 1.0 / N}) {
+        std::vector<double> t(chosen);
+        t[g] += step;
+        lowest = (std::min)(lowest, energy_of(t));
+        ++tried;
+      }
+  }
+  SMDF_CHECK_MSG(lowest >= r.energy - tol, name << ": " << tried << " other turning vectors, lowest energy " << lowest
+                                              << " vs chosen " << r.energy);
+}
+
+// Lai et al. meet Crane et al. (DESIGN.md section 5): on a flat cone metric the trivial
+// connection with index K/2pi at every cone (and, on genus > 0, the generator turning numbers of
+// the metric's own holonomy) is Levi-Civita itself, x = 0; the field drawn on the embedding
+// through the faces' linear maps lies in the face planes.
+void flat_metric_connection(const Surface_mesh& mesh, const std::string& name)
+{
+  typedef boost::graph_traits<Surface_mesh>::vertex_descriptor vertex_descriptor;
+  const int N = 4;
+  const long chi = long(num_vertices(mesh)) - long(num_edges(mesh)) + long(num_faces(mesh));
+  std::map<vertex_descriptor, double> cones;   // genus 0: 8 cones of pi/2 at the extreme vertices
+  if(chi == 2)
+    for(int corner = 0; corner < 8; ++corner) {
+      const double sx = corner & 1 ? 1 : -1, sy = corner & 2 ? 1 : -1, sz = corner & 4 ? 1 : -1;
+      vertex_descriptor best = *vertices(mesh).begin();
+      double bd = -1e300;
+      for(auto v : vertices(mesh)) {
+        const auto& p = mesh.point(v);
+        const double d = sx * p.x() + sy * p.y() + sz * p.z();
+        if(d > bd && !cones.count(v)) { bd = d; best = v; }
+      }
+      cones[best] = M_PI / 2;
+    }
+  auto curvature = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+  for(auto v : vertices(mesh)) put(curvature, v, cones.count(v) ? cones[v] : 0.);
+  auto flat = get(CGAL::dynamic_edge_property_t<double>(), mesh);
+  const SMDF::Cone_metric_status cm = SMDF::compute_cone_metric(mesh, curvature, flat, SMDF::parameters::intrinsic_edge_flips(false));
+  SMDF_CHECK_MSG(cm.converged && !cm.triangulation_changed, name << ": flat cone metric " << cm.message);
+  SMDF::Trivial_connection<Surface_mesh> tc(mesh, SMDF::parameters::symmetry_order(N).edge_length_map(flat));
+  for(const auto& c : cones) tc.set_singularity(c.first, c.second / (2 * M_PI));
+  for(std::size_t g = 0; g < tc.generators().size(); ++g)
+    tc.set_generator_turning_number(g, std::round(tc.generator_levi_civita_holonomy(g) * N / (2 * M_PI)) / N);
+  const SMDF::Trivial_connection_status st = tc.solve();
+  double xmax = 0;
+  for(auto h : halfedges(mesh)) xmax = (std::max)(xmax, std::abs(tc.adjustment_angle(h)));
+  SMDF_CHECK_MSG(st.success && xmax < 1e-9, name << ": on its flat cone metric the connection is Levi-Civita, max |x| = " << xmax);
+  SMDF::Trivial_connection<Surface_mesh> te(mesh, SMDF::parameters::symmetry_order(N));
+  for(const auto& c : cones) te.set_singularity(c.first, c.second / (2 * M_PI));
+  te.solve();
+  double xe = 0;
+  for(auto h : halfedges(mesh)) xe = (std::max)(xe, std::abs(te.adjustment_angle(h)));
+  SMDF_CHECK_MSG(xe > 1e-3, name << ": on the embedding it is not (max |x| = " << xe << ")");
+  auto angles = get(CGAL::dynamic_face_property_t<double>(), mesh);
+  auto vectors = get(CGAL::dynamic_face_property_t<K::Vector_3>(), mesh);
+  tc.field_angles(angles);
+  tc.angles_to_vectors(angles, vectors);
+  double off_plane = 0, off_unit = 0;
+  for(auto f : faces(mesh)) {
+    const auto h = halfedge(f, mesh);
+    const K::Vector_3 n = CGAL::cross_product(mesh.point(target(h, mesh)) - mesh.point(source(h, mesh)),
+                                              mesh.point(target(next(h, mesh), mesh)) - mesh.point(source(h, mesh)));
+    const K::Vector_3 v = get(vectors, f);
+    off_plane = (std::max)(off_plane, std::abs(v * n) / std::sqrt(n.squared_length()));
+    off_unit = (std::max)(off_unit, std::abs(v.squared_length() - 1));
+  }
+  SMDF_CHECK_MSG(off_plane < 1e-12 && off_unit < 1e-12, name << ": field vectors in the face planes ("
+                                                             << off_plane << "), unit (" << off_unit << ")");
+}
+
 // An exact kernel compiles and gives the connection of its double approximation.
 void exact_kernel()
 {
@@ -563,6 +685,21 @@ void exact_kernel()
   auto he = halfedges(exact).begin();
   for(auto h : halfedges(approx)) d = (std::max)(d, std::abs(te.adjustment_angle(*he++) - ta.adjustment_angle(h)));
   SMDF_CHECK_MSG(d < 1e-9, "exact kernel: max |x_exact - x_double| = " << d);
+  // the default metric comes from the geom_traits' squared distance, converted once
+  const auto lengths = SMDF::get_edge_length_map(exact, SMDF::parameters::geom_traits(EK()));
+  double worst = 0;
+  for(auto e : edges(exact)) {
+    const auto h = halfedge(e, exact);
+    const double want = std::sqrt(CGAL::to_double(CGAL::squared_distance(exact.point(source(h, exact)), exact.point(target(h, exact)))));
+    worst = (std::max)(worst, std::abs(get(lengths, e) - want));
+  }
+  SMDF_CHECK_MSG(worst == 0, "exact kernel: lengths from geom_traits differ by " << worst);
+  SMDF::Trivial_connection<CGAL::Surface_mesh<EK::Point_3>> tg(exact, SMDF::parameters::geom_traits(EK()));
+  tg.set_singularity(v0, 1); tg.set_singularity(v1, -1);
+  SMDF_CHECK(tg.solve().success);
+  double dg = 0;
+  for(auto h : halfedges(exact)) dg = (std::max)(dg, std::abs(tg.adjustment_angle(h) - te.adjustment_angle(h)));
+  SMDF_CHECK_MSG(dg == 0, "exact kernel: geom_traits given explicitly changes x by " << dg);
 }
 
 // Separate triangles (no interior edge, no constraint row): a valid, trivial answer, no crash.
@@ -585,6 +722,10 @@ void separate_triangles()
     SMDF_CHECK(SMDF::field_singularities(mesh, angles, SMDF::parameters::symmetry_order(4)).singularities.empty());
   }
 }
+
+static_assert(SMDF::internal::Accepts_cholesky_hints<SMDF::Cholmod_cholesky>::value,
+              "Cholmod_cholesky takes the ordering hints of the trivial connection");
+static_assert(!SMDF::internal::Accepts_cholesky_hints<SMDF::Eigen_sparse_cholesky<>>::value, "");
 
 int main()
 {
@@ -633,6 +774,17 @@ int main()
     Surface_mesh dt;
     SMDF::read_triangle_mesh(dir + "/meshes/double-torus_jnd.off", dt);
     shared_structure(dt, "double-torus_jnd.off");
+    smoothest_turning(dt, "double-torus_jnd.off", 2);   // 4 generators: all 5^4 vectors around the choice
+    Surface_mesh g3, cheese;
+    SMDF::read_triangle_mesh(dir + "/meshes/genus3_vhacd.off", g3);
+    smoothest_turning(g3, "genus3_vhacd.off", 1);       // 6 generators: 3^6 vectors
+    SMDF::read_triangle_mesh(dir + "/meshes/cheese_cgal.off", cheese);
+    smoothest_turning(cheese, "cheese_cgal.off", 0);    // 266 generators: single steps
+    Surface_mesh spot, torus;
+    SMDF::read_triangle_mesh(dir + "/meshes/spot_c3d.obj", spot);
+    flat_metric_connection(spot, "spot_c3d.obj, 8 cones of pi/2");
+    SMDF::read_triangle_mesh(dir + "/meshes/torus_ddg.obj", torus);
+    flat_metric_connection(torus, "torus_ddg.obj, flat");
   }
   {
     Polyhedron p;

@@ -30,7 +30,6 @@ namespace smdf_cli {
 namespace {
 
 typedef Mesh::Property_map<vertex_descriptor, double> Vertex_real_property;
-typedef Mesh::Property_map<edge_descriptor, double> Edge_length_property;
 
 // The options of `cone-metric` that do not need the mesh, checked before it is read.
 struct Cone_metric_options

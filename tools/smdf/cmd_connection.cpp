@@ -30,6 +30,7 @@ struct Connection_options
   long edits;
   SMDF::Svg_options svg;
   Indexed_values singularities, turning;
+  bool smoothest = false;   // --generator-turning smoothest
 };
 
 Connection_options connection_options(const Args& args)
@@ -44,7 +45,8 @@ Connection_options connection_options(const Args& args)
   if(o.edits < 0) throw Usage_error("option --edit-benchmark expects a non-negative integer");
   o.svg = svg_options(args);
   o.singularities = index_list_option(args, "singularities");
-  o.turning = index_list_option(args, "generator-turning");
+  o.smoothest = args.has("generator-turning") && args.value("generator-turning") == "smoothest";
+  if(!o.smoothest) o.turning = index_list_option(args, "generator-turning");
   return o;
 }
 
@@ -157,13 +159,18 @@ Json prescribed_list(Indexed_values sing, long N)
   return singularity_list(prescribed);
 }
 
-// The prescribed turning number of every generator (default 0), rounded as the library stores them.
-std::vector<double> prescribed_turning(const Indexed_values& turning, std::size_t generators, long N)
+// --generator-turning smoothest: chooses and sets the turning numbers of least energy.
+Json smoothest_turning(const std::string& file, SMDF::Trivial_connection<Mesh>& tc)
 {
-  std::vector<double> t(generators, 0.);
-  for(const auto& p : turning)
-    if(p.first < generators) t[p.first] = std::round(p.second * double(N)) / double(N);
-  return t;
+  const SMDF::Smoothest_turning_numbers s = on_file(file, [&] { return tc.choose_smoothest_generator_turning_numbers(); });
+  Json r = Json::object();
+  Json t = Json::array();
+  for(double x : s.turning_numbers) t.push_back(x);
+  r["turning_numbers"] = std::move(t);
+  r["energy"] = s.energy;
+  r["energy_with_zero_turning"] = s.energy_with_zero_turning;
+  r["exact"] = s.exact;
+  return r;
 }
 
 // The singularities of `topo` are exactly the nonzero ones of `sing` (rounded to 1/N).
@@ -223,12 +230,23 @@ Json run_connection(const Args& args)
   if(args.has("constraints")) constraints = read_constraints(args.value("constraints"), mesh);
 
   Stopwatch clock;
-  SMDF::Trivial_connection<Mesh> tc(mesh, SMDF::parameters::symmetry_order(int(N)).connection_weights(opt.weights));
+  // --lengths: the connection of another metric (e.g. a flat cone metric from cone-metric
+  // --lengths-out); the field is drawn on the embedding through each face's linear map
+  const bool own_metric = args.has("lengths");
+  const std::string metric_file = own_metric ? args.value("lengths") : file;
+  const auto np = SMDF::parameters::symmetry_order(int(N)).connection_weights(opt.weights);
+  auto connect = [&](const auto& params) {
+    return on_file(metric_file, [&] { return SMDF::Trivial_connection<Mesh>(mesh, params); });
+  };
+  SMDF::Trivial_connection<Mesh> tc = own_metric ? connect(np.edge_length_map(read_edge_lengths(metric_file, mesh)))
+                                                 : connect(np);
   const double construct_s = clock.lap();
   for(const auto& s : sing) tc.set_singularity(vertex_descriptor(Mesh::size_type(s.first)), s.second);
   for(const auto& t : opt.turning) tc.set_generator_turning_number(t.first, t.second);
   if(!constraints.empty()) tc.set_directional_constraints(constraints);
-  clock.lap();
+  Json smoothest;
+  if(opt.smoothest) smoothest = smoothest_turning(file, tc);   // factors the system
+  const double prepare_s = clock.lap();
   const SMDF::Trivial_connection_status st = tc.solve();
   clock.lap();
 
@@ -261,7 +279,7 @@ Json run_connection(const Args& args)
                                ? edit_benchmark(file, mesh, tc, sing, opt.edits, angles) : Json();
 
   Json timings = Json::object();
-  timings["setup_s"] = construct_s + st.factor_seconds;
+  timings["setup_s"] = construct_s + prepare_s + st.factor_seconds;
   timings["solve_s"] = st.solve_seconds;
   timings["field_s"] = field_s;
   timings["edit_median_s"] = edit_median;
@@ -269,10 +287,12 @@ Json run_connection(const Args& args)
   Json out = Json::object();
   out["N"] = N;
   out["weights"] = opt.weights_name;
+  out["metric"] = own_metric ? "lengths" : "embedding";
   out["prescribed"] = prescribed_list(sing, N);   // as set before the edits
   out["found"] = found_list(topo);
   out["generator_turning_numbers"] = turning_numbers(topo);
   out["principal_matching"] = principal_matching_report(mesh, tc, principal, sing, N);
+  if(opt.smoothest) out["smoothest_generator_turning"] = std::move(smoothest);
   out["energy"] = st.energy;
   out["residual"] = st.residual;
   out["scaled_residual"] = st.scaled_residual;
@@ -284,8 +304,9 @@ Json run_connection(const Args& args)
   std::string failure = st.success ? "" : "trivial connection solve failed: " + st.message;
   if(failure.empty() && !same_singularities(topo, sing, N))
     failure = "the field read back with its matching has other singularities than the prescribed ones";
-  if(failure.empty() &&
-     topo.generator_turning_numbers != prescribed_turning(opt.turning, tc.generators().size(), N))
+  std::vector<double> prescribed_turning;
+  for(std::size_t g = 0; g < tc.generators().size(); ++g) prescribed_turning.push_back(tc.generator_turning_number(g));
+  if(failure.empty() && topo.generator_turning_numbers != prescribed_turning)
     failure = "the field read back with its matching has other generator turning numbers than the prescribed ones";
   out["success"] = failure.empty();
   out["timings"] = std::move(timings);
@@ -300,11 +321,12 @@ Command connection_command()
            {"singularities-file", "FILE", "prescribed indices, one line 'v k' per vertex"},
            {"N", "n", "symmetry order (1 vectors, 2 lines, 4 crosses; default 1)"},
            {"weights", "W", "cotan (default) or unit"},
-           {"generator-turning", "LIST", "turning numbers 'g:t,...' of the generators (default 0)"},
+           {"generator-turning", "LIST", "turning numbers 'g:t,...' of the generators (default 0), or 'smoothest'"},
            {"constraints", "FILE", "directional constraints: lines 'face angle' or 'face x y z'"},
            {"field-out", "FILE", "write one unit direction 'x y z' per face"},
            {"connection-out", "FILE", "write 'i j angle' per interior edge (adjustment angle)"},
            {"matching-out", "FILE", "write 'i j k' per interior edge (period jump of the field)"},
+           {"lengths", "FILE", "intrinsic metric: one line 'i j length' per edge (as holonomy --lengths)"},
            {"edit-benchmark", "K", "time K random singularity moves (re-solve + field)"},
            {"svg", "FILE", "write an SVG picture of the field and its found singularities"},
            {"view", "A,E[,UP]", "view of --svg: azimuth,elevation in degrees, up axis x|y|z (default 30,20,z)"},
@@ -318,7 +340,10 @@ Command connection_command()
           "principal_matching: {found, generator_turning_numbers, extra, missing,\n"
           "edges_turning_at_least_pi_over_N} (what a reader without the matching sees), energy,\n"
           "residual, scaled_residual, max_holonomy_error, max_matching_rounding, success, timings:\n"
-          "{setup_s, solve_s, field_s, edit_median_s}}. Exit code 3 (JSON printed) when the solve\n"
+          "{setup_s, solve_s, field_s, edit_median_s}}; with --generator-turning smoothest also\n"
+          "smoothest_generator_turning: {turning_numbers, energy, energy_with_zero_turning, exact}\n"
+          "(the turning numbers of least energy; exact: global minimum over multiples of 1/N,\n"
+          "searched exhaustively up to 12 generators). Exit code 3 (JSON printed) when the solve\n"
           "fails or found differs from prescribed.\n"
           "Constraint angles are in radians in the face frame, counterclockwise from halfedge(f);\n"
           "3D directions are projected on the face plane. Files may hold blank lines and '#'\n"
@@ -326,6 +351,9 @@ Command connection_command()
           "the adjustment angle for crossing it from its right face into its left face;\n"
           "--matching-out the period jump k: carrying the right face's direction into the left\n"
           "face gives the left face's direction rotated by 2 pi k / N.\n"
+          "--lengths runs on another metric than the embedding's (e.g. cone-metric --lengths-out\n"
+          "without flips); --field-out and --svg then map each face's directions to 3D by the\n"
+          "linear map from the metric's triangle to the embedded one.\n"
           "--edit-benchmark K moves a random singularity K times (pseudo-random, fixed seed) and\n"
           "reports the median time of solve + field (null without singularities).\n"
           "--svg draws the mesh (orthographic view, back faces culled), the field (one\n"

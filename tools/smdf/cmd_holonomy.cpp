@@ -23,53 +23,6 @@ namespace smdf_cli {
 
 namespace {
 
-typedef Mesh::Property_map<edge_descriptor, double> Edge_length_property;
-
-// Reads an edge-length file: one line `i j length` per edge of `mesh` (vertex indices in
-// either order); blank lines and lines starting with '#' are ignored. Every problem is an
-// Error naming the file and the line.
-Edge_length_property read_edge_lengths(const std::string& file, Mesh& mesh)
-{
-  Edge_length_property lengths =
-    mesh.add_property_map<edge_descriptor, double>("e:smdf_length", 0.).first;
-  std::vector<std::size_t> given_on(num_edges(mesh), 0);   // line number per edge, 0 = missing
-  const std::size_t nv = num_vertices(mesh);
-  for_each_data_line(file, [&](std::size_t line_no, const std::vector<std::string>& tok) {
-    auto fail = [&](const std::string& what) { return line_error(file, line_no, what); };
-    if(tok.size() != 3)
-      throw fail("expected 'i j length', got " + std::to_string(tok.size()) + " fields");
-    std::size_t ij[2];
-    for(int k = 0; k < 2; ++k) ij[k] = vertex_field(file, line_no, tok[k], nv);
-    const std::string pair = "(" + tok[0] + ", " + tok[1] + ")";
-    const auto h = halfedge(vertex_descriptor(Mesh::size_type(ij[0])),
-                            vertex_descriptor(Mesh::size_type(ij[1])), mesh);
-    if(!h.second)
-      throw fail("vertices " + tok[0] + " and " + tok[1] + " are not joined by an edge of the mesh");
-    const edge_descriptor e = edge(h.first, mesh);
-    if(given_on[std::size_t(e)] != 0)
-      throw fail("edge " + pair + " was already given on line " + std::to_string(given_on[std::size_t(e)]));
-    char* end = nullptr;
-    const double l = std::strtod(tok[2].c_str(), &end);
-    if(*end != '\0')
-      throw fail("'" + shorten(tok[2]) + "' is not a number");
-    if(!std::isfinite(l) || !(l > 0))
-      throw fail("the length of edge " + pair + " must be positive and finite, got " + shorten(tok[2]));
-    put(lengths, e, l);
-    given_on[std::size_t(e)] = line_no;
-  }, LINE_COMMENTS);
-  const std::size_t missing = std::size_t(std::count(given_on.begin(), given_on.end(), std::size_t(0)));
-  if(missing > 0) {
-    for(edge_descriptor e : edges(mesh))
-      if(given_on[std::size_t(e)] == 0) {
-        const halfedge_descriptor h = halfedge(e, mesh);
-        throw file_error(file, "no length for edge (" + std::to_string(index(source(h, mesh))) + ", " +
-                         std::to_string(index(target(h, mesh))) + "); " + std::to_string(missing) +
-                         " of " + std::to_string(num_edges(mesh)) + " edges are missing", "file_error");
-      }
-  }
-  return lengths;
-}
-
 // Gauss-Bonnet and the holonomy of every generator for the metric given by `np`, read from
 // `metric_file` (errors of the metric, such as degenerate faces, name that file).
 template <typename NamedParameters>

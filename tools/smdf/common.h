@@ -41,6 +41,7 @@ typedef boost::graph_traits<Mesh>::face_descriptor face_descriptor;
 typedef Mesh::Property_map<face_descriptor, double> Face_angle_property;
 typedef Mesh::Property_map<face_descriptor, K::Vector_3> Face_vector_property;
 typedef Mesh::Property_map<edge_descriptor, int> Edge_matching_property;   // period jump per edge
+typedef Mesh::Property_map<edge_descriptor, double> Edge_length_property;
 
 // ---- Files and their errors ---------------------------------------------------------------
 
@@ -135,6 +136,11 @@ Json singularity_list(const Indexed_values& s);
 SMDF::Field_topology<Mesh> field_topology(const std::string& file, const Mesh& mesh,
                                           Face_angle_property angles, long N,
                                           const Edge_matching_property* matching = nullptr);
+
+// Reads an edge-length file (--lengths): one line `i j length` per edge of `mesh` (vertex
+// indices in either order); blank lines and lines starting with '#' are ignored. Every problem
+// is an Error naming the file and the line.
+Edge_length_property read_edge_lengths(const std::string& file, Mesh& mesh);
 
 // --matching-out FILE: 'i j k' per interior edge, i j the vertices of halfedge(e).
 void write_matching(const std::string& file, const Mesh& mesh, Edge_matching_property matching);

@@ -5,6 +5,7 @@
 
 #include "commands.h"
 
+#include <algorithm>
 #include <iomanip>
 #include <string>
 
@@ -33,7 +34,9 @@ void print_usage(std::ostream& os)
         "with boundary and several components) and prints one JSON object on stdout. Vertex and\n"
         "face indices are 0-based in file order. On failure prints one line to stderr and exits\n"
         "with 1 (input that cannot be processed) or 2 (usage error); exit code 3 means the JSON\n"
-        "object was printed but the result failed (cone-metric: not converged, one stderr line).\n\n"
+        "object was printed but the result failed, with one stderr line (cone-metric: not\n"
+        "converged; connection: the solve failed or the field's read-back differs from the\n"
+        "prescription).\n\n"
         "commands:\n";
   for(const Command& c : commands())
     os << "  " << std::left << std::setw(14) << c.name << c.summary << "\n";
@@ -43,11 +46,12 @@ void print_command_usage(const Command& cmd, std::ostream& os)
 {
   os << "usage: " << synopsis(cmd) << "\n\n" << cmd.description;
   os << "\noptions:\n";
-  for(const Option_spec& o : cmd.options) {
-    const std::string head = "--" + o.name + (o.value_name.empty() ? "" : " " + o.value_name);
-    os << "  " << std::left << std::setw(18) << head << o.help << "\n";
-  }
-  os << "  " << std::left << std::setw(18) << "-h, --help" << "print this help and exit\n";
+  auto head = [](const Option_spec& o) { return "--" + o.name + (o.value_name.empty() ? "" : " " + o.value_name); };
+  std::size_t width = std::string("-h, --help").size();
+  for(const Option_spec& o : cmd.options) width = (std::max)(width, head(o).size());
+  width += 2;   // the descriptions start two columns after the longest option
+  for(const Option_spec& o : cmd.options) os << "  " << std::left << std::setw(int(width)) << head(o) << o.help << "\n";
+  os << "  " << std::left << std::setw(int(width)) << "-h, --help" << "print this help and exit\n";
 }
 
 } // namespace smdf_cli

@@ -73,10 +73,10 @@ public:
   // Largest separator accepted: its dense Schur complement costs |S|^3 / 3 flops and 8 |S|^2 bytes.
   static constexpr int max_separator = 2500;
 
-  Cholmod_cholesky() { solver_.reset(new Solver()); }
+  Cholmod_cholesky() { reset_solver(); }
   /// Copies the settings, not the factorisation: the copy must be factored before it solves.
   Cholmod_cholesky(const Cholmod_cholesky&) : Cholmod_cholesky() {}
-  Cholmod_cholesky& operator=(const Cholmod_cholesky&) { solver_.reset(new Solver()); two_domain_.reset(); return *this; }
+  Cholmod_cholesky& operator=(const Cholmod_cholesky&) { reset_solver(); two_domain_.reset(); return *this; }
 
   /// Analyses the pattern of `lower` (AMD ordering, or the two-domain split of large
   /// matrices) and factors it. Returns `false`, with a message, if the matrix is not positive
@@ -109,7 +109,7 @@ public:
       }
       if(why.compare(0, 9, "internal:") != 0) { message = why; return false; }
     }
-    solver_.reset(new Solver());
+    reset_solver();
     solver_->setMode(lower.rows() < 300000 ? Eigen::CholmodSimplicialLLt : Eigen::CholmodSupernodalLLt);
     if(hints.preordered) {
       solver_->cholmod().nmethods = 1;
@@ -140,6 +140,12 @@ public:
 
 private:
   typedef Eigen::CholmodDecomposition<Matrix, Eigen::Lower> Solver;
+  // A library does not print: CHOLMOD's messages are silenced, its failures are the return values.
+  void reset_solver()
+  {
+    solver_.reset(new Solver());
+    solver_->cholmod().print = 0;
+  }
   std::unique_ptr<Solver> solver_;
   std::unique_ptr<internal::Two_domain_cholesky> two_domain_;
 };

@@ -9,6 +9,7 @@
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Kernel_traits.h>
 #include <CGAL/property_map.h>
 
 #include <boost/property_map/property_map.hpp>
@@ -22,12 +23,17 @@ namespace Surface_mesh_direction_fields {
 
 /// \ingroup PkgSurfaceMeshDirectionFieldsIntrinsic
 /// A readable property map from the edges of a mesh to their Euclidean lengths, computed on
-/// the fly from a vertex point map. It is the default `edge_length_map` of every function of
-/// the package.
+/// the fly from a vertex point map: \f$\sqrt{d^2}\f$ with the squared distance \f$d^2\f$ of
+/// the kernel `GeomTraits` (exact for exact kernels) converted once by `CGAL::to_double()`.
+/// It is the default `edge_length_map` of every function of the package.
 /// \tparam TriangleMesh a model of `FaceGraph`
 /// \tparam VertexPointMap a readable property map from vertices to 3D points
+/// \tparam GeomTraits a kernel with `Compute_squared_distance_3` for those points (default:
+///         the points' kernel; functions pass their `geom_traits` parameter)
 /// \cgalModels `EdgeLengthMap`
-template <typename TriangleMesh, typename VertexPointMap>
+template <typename TriangleMesh, typename VertexPointMap,
+          typename GeomTraits = typename CGAL::Kernel_traits<
+              typename boost::property_traits<VertexPointMap>::value_type>::Kernel>
 class Euclidean_edge_length_map
 {
 public:
@@ -37,22 +43,20 @@ public:
   typedef boost::readable_property_map_tag category;
 
   Euclidean_edge_length_map() : tm_(nullptr) {}
-  Euclidean_edge_length_map(const TriangleMesh& tm, VertexPointMap vpm) : tm_(&tm), vpm_(vpm) {}
+  Euclidean_edge_length_map(const TriangleMesh& tm, VertexPointMap vpm, const GeomTraits& gt = GeomTraits())
+    : tm_(&tm), vpm_(vpm), gt_(gt) {}
 
   friend double get(const Euclidean_edge_length_map& m, key_type e)
   {
     const auto h = halfedge(e, *m.tm_);
-    const auto& p = get(m.vpm_, source(h, *m.tm_));
-    const auto& q = get(m.vpm_, target(h, *m.tm_));
-    const double dx = CGAL::to_double(q.x()) - CGAL::to_double(p.x());
-    const double dy = CGAL::to_double(q.y()) - CGAL::to_double(p.y());
-    const double dz = CGAL::to_double(q.z()) - CGAL::to_double(p.z());
-    return std::sqrt(dx * dx + dy * dy + dz * dz);
+    return std::sqrt(CGAL::to_double(m.gt_.compute_squared_distance_3_object()(
+        get(m.vpm_, source(h, *m.tm_)), get(m.vpm_, target(h, *m.tm_)))));
   }
 
 private:
   const TriangleMesh* tm_;
   VertexPointMap vpm_;
+  GeomTraits gt_;
 };
 
 /// \ingroup PkgSurfaceMeshDirectionFieldsIntrinsic
@@ -63,7 +67,8 @@ template <typename TriangleMesh, typename NamedParameters = parameters::Default_
 struct GetEdgeLengthMap
 {
   typedef typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
-  typedef Euclidean_edge_length_map<TriangleMesh, VPM> Default_map;
+  typedef typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type Geom_traits;
+  typedef Euclidean_edge_length_map<TriangleMesh, VPM, Geom_traits> Default_map;
   typedef typename CGAL::internal_np::Lookup_named_param_def<internal_np::edge_length_t,
                                                              NamedParameters,
                                                              Default_map>::type type;
@@ -81,8 +86,9 @@ get_edge_length_map(const TriangleMesh& tm,
   typedef GetEdgeLengthMap<TriangleMesh, NamedParameters> Get;
   typename Get::VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                            get_const_property_map(CGAL::vertex_point, tm));
+  const typename Get::Geom_traits gt = choose_parameter<typename Get::Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits));
   return choose_parameter(get_parameter(np, internal_np::edge_length),
-                          typename Get::Default_map(tm, vpm));
+                          typename Get::Default_map(tm, vpm, gt));
 }
 
 namespace internal {

@@ -81,6 +81,11 @@ public:
   ///     \cgalParamType{a readable property map with `vertex_descriptor` keys and 3D point values of any kernel}
   ///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
   ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{geom_traits}
+  ///     \cgalParamDescription{the kernel whose `Compute_squared_distance_3` gives the default metric (converted to `double` once per edge)}
+  ///     \cgalParamType{a model of `Kernel`}
+  ///     \cgalParamDefault{the kernel of the points of `vertex_point_map`}
+  ///   \cgalParamNEnd
   ///   \cgalParamNBegin{vertex_index_map}
   ///     \cgalParamDescription{numbers the vertices 0 .. n-1: the numbers used in messages and in the order of internal arrays}
   ///     \cgalParamType{a readable property map with `vertex_descriptor` keys and integer values (a bijection)}

@@ -17,6 +17,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/connection_system.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/field_propagation.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/guide_solver.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/lattice_minimum.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/sparse_solvers.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -74,6 +75,17 @@ struct Trivial_connection_status
   double max_holonomy_error = 0; ///< max over all interior-vertex cycles and generators of the distance between the connection's holonomy and \f$2\pi\f$ times the prescribed index / turning number
   double factor_seconds = 0;     ///< time spent building and factoring the system in this call (0 when reused)
   double solve_seconds = 0;      ///< time of the solve in this call
+};
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsTrivialConnections
+/// Outcome of `Trivial_connection::choose_smoothest_generator_turning_numbers()`.
+struct Smoothest_turning_numbers
+{
+  std::vector<double> turning_numbers;   ///< the chosen turning number of every generator
+  double energy = 0;                     ///< \f$\|Dx\|^2\f$ with them (from the quadratic form)
+  double energy_with_zero_turning = 0;   ///< \f$\|Dx\|^2\f$ with all turning numbers 0
+  std::size_t generators = 0;            ///< number of generators \f$2g + b - 1\f$
+  bool exact = false;                    ///< `true`: the global minimum over the lattice
 };
 
 /// \ingroup PkgSurfaceMeshDirectionFieldsTrivialConnections
@@ -186,7 +198,7 @@ public:
     typedef typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
     VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                get_const_property_map(CGAL::vertex_point, tm));
-    internal::face_frames(m_, vpm, frames_);
+    internal::face_maps(m_, vpm, frames_);
 
     for(const auto& g : gens_) z_.push_back(internal::wrap_angle(internal::transport_along(m_, g.dual)));
     increment_.resize(m_.number_of_halfedges());
@@ -242,6 +254,69 @@ public:
                         "generator " + std::to_string(i) + " does not exist (there are " +
                         std::to_string(gens_.size()) + ")");
     turning_[i] = check_fraction(t, "turning number of generator " + std::to_string(i));
+  }
+
+  /// The prescribed turning number of generator `i`.
+  double generator_turning_number(std::size_t i) const { return turning_.at(i); }
+
+  /// Sets the generator turning numbers (multiples of \f$1/N\f$) that minimise the energy
+  /// \f$\|Dx\|^2\f$ for the current singularities and directional constraints, and returns
+  /// what was found. The energy is a quadratic form in the \f$k = 2g + b - 1\f$ turning numbers
+  /// (through the \f$k \times k\f$ Schur complement of the factored system, \f$k + 1\f$ pairs of
+  /// triangular solves), minimised over the lattice \f$(1/N)\mathbb{Z}^k\f$: exactly by
+  /// enumeration (Schnorr-Euchner) when \f$k \le 12\f$ (`exact`); for larger \f$k\f$ by rounding
+  /// the continuous minimiser and descending by single steps of \f$\pm 1/N\f$, which gives a
+  /// local minimum that is never worse than all turning numbers 0 (`exact` is then `false`).
+  /// Factors the system if needed. Throws `Input_error` with guide directions (their energy
+  /// is not this quadratic form) or with the `SPQR_MINIMUM_NORM` solver.
+  Smoothest_turning_numbers choose_smoothest_generator_turning_numbers()
+  {
+    if(!guide_faces_.empty() || solver_kind_ != CHOLMOD_NORMAL_EQUATIONS)
+      throw Input_error(Input_error::INVALID_ARGUMENT,
+                        "smoothest generator turning numbers need the normal-equation solver and no guide directions");
+    check_index_sums();
+    Smoothest_turning_numbers r;
+    r.generators = gens_.size();
+    if(!factored_) {
+      Trivial_connection_status st;
+      if(!build_and_factor(st)) throw Input_error(Input_error::INVALID_ARGUMENT, "cannot factor the system: " + st.message);
+      factored_ = true;
+    }
+    std::vector<double> t(gens_.size(), 0.);
+    turning_.swap(t);   // b0: all turning numbers 0
+    const Eigen::VectorXd b0 = sys_.rhs(m_, K_, index_, z_, turning_, constraint_angles_, N_);
+    turning_.swap(t);
+    const Eigen::Index k = Eigen::Index(gens_.size());
+    if(sys_.rows_ == 0 || k == 0) { r.exact = true; return r; }
+    // E(t) = b(t)^T M^-1 b(t), b(t) = b0 - 2 pi P t, P the generator rows: with Z = M^-1 P,
+    // E = b0^T M^-1 b0 - 4 pi (Z^T b0) . t + 4 pi^2 t^T (P^T Z) t
+    Eigen::MatrixXd G(k, k);
+    Eigen::VectorXd h(k);
+    for(Eigen::Index g = 0; g < k; ++g) {
+      Eigen::VectorXd e = Eigen::VectorXd::Zero(sys_.rows_);
+      e[sys_.first_generator_row_ + g] = 1;
+      const Eigen::VectorXd z = chol_.solve(e);
+      h[g] = z.dot(b0);
+      for(Eigen::Index j = 0; j < k; ++j) G(j, g) = z[sys_.first_generator_row_ + j];
+    }
+    G = 0.5 * (G + G.transpose());
+    const double c0 = b0.dot(chol_.solve(b0));
+    auto energy = [&](const Eigen::VectorXd& tt) {
+      return c0 - 4 * CGAL_PI * h.dot(tt) + 4 * CGAL_PI * CGAL_PI * tt.dot(G * tt);
+    };
+    // in s = N t: minimise (s - c)^T G (s - c) with c = N G^-1 h / (2 pi)
+    Eigen::LDLT<Eigen::MatrixXd> ldlt(G);
+    const Eigen::VectorXd c = ldlt.solve(h) * (N_ / (2 * CGAL_PI));
+    const internal::Lattice_minimum lm = internal::lattice_minimum(G, c);
+    Eigen::VectorXd best = lm.s / double(N_);
+    const Eigen::VectorXd zero = Eigen::VectorXd::Zero(k);
+    r.energy_with_zero_turning = energy(zero);
+    if(!lm.positive_definite || energy(best) > r.energy_with_zero_turning) best = zero;
+    r.energy = energy(best);
+    r.exact = lm.exact && lm.positive_definite;
+    for(Eigen::Index g = 0; g < k; ++g) turning_[std::size_t(g)] = std::round(best[g] * N_) / N_;
+    r.turning_numbers = turning_;
+    return r;
   }
 
   /// Fixes the field direction in the given faces: pairs (face, angle in the face frame, in
@@ -451,22 +526,22 @@ public:
   }
 
   /// Converts face angles (in the face frames) to unit 3D vectors in the plane of each face of the
-  /// embedding given by `vertex_point_map`: \f$\cos\beta\,e_1 + \sin\beta\,e_2\f$ with \f$e_1\f$
-  /// along `halfedge(f)` and \f$e_2 = n \times e_1\f$. When the metric is not the embedding's,
-  /// angles are mapped as they are.
+  /// embedding given by `vertex_point_map`. When the metric is the embedding's, this is
+  /// \f$\cos\beta\,e_1 + \sin\beta\,e_2\f$ with \f$e_1\f$ along `halfedge(f)` and
+  /// \f$e_2 = n \times e_1\f$. For any other metric (e.g. a flat cone metric), the direction
+  /// is mapped by the linear map of the face that takes the metric's triangle (laid out with
+  /// `source(halfedge(f))` at the origin and `halfedge(f)` on the x axis) to the embedded
+  /// triangle, and normalised: directions keep their barycentric meaning, not their angles.
   /// \tparam FaceVectorMap writable, `face_descriptor` keys, values constructible from three doubles
   template <typename FaceAngleMap, typename FaceVectorMap>
   void angles_to_vectors(const FaceAngleMap& angles, FaceVectorMap vectors) const
   {
     typedef typename boost::property_traits<FaceVectorMap>::value_type Vector;
     for(std::size_t f = 0; f < m_.number_of_faces(); ++f) {
-      const double beta = double(get(angles, m_.faces[f]));
-      const auto& fr = frames_[f];
-      const double c = std::cos(beta), s = std::sin(beta);
-      put(vectors, m_.faces[f], Vector(c * fr[0] + s * fr[3], c * fr[1] + s * fr[4], c * fr[2] + s * fr[5]));
+      const std::array<double, 3> v = internal::embedded_direction(frames_[f], double(get(angles, m_.faces[f])));
+      put(vectors, m_.faces[f], Vector(v[0], v[1], v[2]));
     }
   }
-
 
 private:
   typedef internal::Sparse_matrix_int Sparse_matrix_int;
@@ -580,7 +655,7 @@ private:
   const std::vector<double>& K_;                            // angle defects
   std::vector<double> z_, index_, turning_, x_;
   std::vector<double> increment_;   // Levi-Civita transport increment per halfedge
-  std::vector<std::array<double, 6>> frames_;
+  std::vector<internal::Face_map> frames_;   // per face: metric triangle -> embedded triangle
   int N_ = 1;
   Connection_weights weights_ = COTAN_WEIGHTS;
   double clamp_ = 1e-3;

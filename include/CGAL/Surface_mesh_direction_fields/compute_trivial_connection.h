@@ -33,6 +33,11 @@ namespace Surface_mesh_direction_fields {
 ///     \cgalParamType{a range of `double` (multiples of \f$1/N\f$)}
 ///     \cgalParamDefault{all 0}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{smoothest_generator_turning_numbers}
+///     \cgalParamDescription{if `true`, the turning numbers that minimise the energy, see `Trivial_connection::choose_smoothest_generator_turning_numbers()` (not with `generator_turning_numbers` or `guide_directions`)}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{directional_constraints}
 ///     \cgalParamDescription{faces with a fixed field angle, see `Trivial_connection::set_directional_constraints()`}
 ///     \cgalParamType{a range of `std::pair<face_descriptor, double>`}
@@ -81,6 +86,12 @@ Trivial_connection_status compute_trivial_connection(const TriangleMesh& tm,
   }
   if constexpr(!is_default_parameter<NamedParameters, internal_np::directional_constraints_t>::value)
     tc.set_directional_constraints(get_parameter(np, internal_np::directional_constraints));
+  if(choose_parameter(get_parameter(np, internal_np::smoothest_generator_turning_numbers), false)) {
+    if constexpr(!is_default_parameter<NamedParameters, internal_np::generator_turning_numbers_t>::value)
+      throw Input_error(Input_error::INVALID_ARGUMENT,
+                        "generator_turning_numbers and smoothest_generator_turning_numbers exclude each other");
+    tc.choose_smoothest_generator_turning_numbers();
+  }
   if constexpr(!is_default_parameter<NamedParameters, internal_np::guide_directions_t>::value)
     tc.set_guide_directions(get_parameter(np, internal_np::guide_directions),
                             choose_parameter(get_parameter(np, internal_np::guide_weight), 1.));

@@ -7,6 +7,7 @@
 // A face-based field that is parallel for a trivial connection, by propagation along a
 // breadth-first spanning forest of the faces (Crane et al. 2010, Eq. 3), and the 3D frames of
 // the faces.
+#include <CGAL/Surface_mesh_direction_fields/intrinsic_triangle.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh_arrays.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/topology.h>
 
@@ -62,33 +63,47 @@ struct Face_tree
   }
 };
 
-// Per face: unit e1 along halfedge(f) and e2 = n x e1, in the embedding of vpm.
-template <typename TM, typename VPM>
-void face_frames(const Mesh_arrays<TM>& m_, VPM vpm, std::vector<std::array<double, 6>>& frames_)
+// Per face, the linear map from the metric's triangle to the embedded one: the embedded edge
+// vectors E1 = p1 - p0, E2 = p2 - p0 (p0 = source(halfedge(f))) and the metric's layout of the
+// same corners, p1 = (l0, 0), p2 = (x2, y2). A direction of angle beta in the face frame is
+// a (l0, 0) + b (x2, y2) and maps to a E1 + b E2; when the metric is the embedding's this is
+// cos(beta) e1 + sin(beta) e2 with the unit frame of the embedded face.
+struct Face_map
 {
-  frames_.resize(m_.number_of_faces());
+  double E1[3], E2[3];
+  double l0, x2, y2;
+};
+
+template <typename TM, typename VPM>
+void face_maps(const Mesh_arrays<TM>& m_, VPM vpm, std::vector<Face_map>& maps)
+{
+  maps.resize(m_.number_of_faces());
   for(std::size_t f = 0; f < m_.number_of_faces(); ++f) {
-    const int h0 = m_.face_halfedge[f], h1 = m_.next[h0];
+    const int h0 = m_.face_halfedge[f], h1 = m_.next[h0], h2 = m_.next[h1];
     double p[3][3];
     const int vs[3] = {m_.source(h0), m_.target[h0], m_.target[h1]};
     for(int i = 0; i < 3; ++i) {
       const auto& q = get(vpm, m_.vertices[vs[i]]);
       p[i][0] = CGAL::to_double(q.x()); p[i][1] = CGAL::to_double(q.y()); p[i][2] = CGAL::to_double(q.z());
     }
-    double e1[3] = {p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]};
-    double e2[3] = {p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]};
-    double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
-    auto normalize = [](double* v) {
-      const double l = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-      if(l > 0) { v[0] /= l; v[1] /= l; v[2] /= l; }
-    };
-    normalize(e1);
-    normalize(n);
-    const double b[3] = {n[1] * e1[2] - n[2] * e1[1], n[2] * e1[0] - n[0] * e1[2], n[0] * e1[1] - n[1] * e1[0]};
-    frames_[f] = {{e1[0], e1[1], e1[2], b[0], b[1], b[2]}};
+    Face_map& fm = maps[f];
+    for(int k = 0; k < 3; ++k) { fm.E1[k] = p[1][k] - p[0][k]; fm.E2[k] = p[2][k] - p[0][k]; }
+    const double l0 = m_.edge_length(h0), l1 = m_.edge_length(h1), l2 = m_.edge_length(h2);
+    fm.l0 = l0;
+    fm.x2 = (l0 * l0 + l2 * l2 - l1 * l1) / (2 * l0);
+    fm.y2 = 2 * triangle_area(l0, l1, l2) / l0;
   }
 }
 
+// The unit 3D direction of angle beta of face map fm (see Face_map).
+inline std::array<double, 3> embedded_direction(const Face_map& fm, double beta)
+{
+  const double b = std::sin(beta) / fm.y2, a = (std::cos(beta) - b * fm.x2) / fm.l0;
+  std::array<double, 3> v = {{a * fm.E1[0] + b * fm.E2[0], a * fm.E1[1] + b * fm.E2[1], a * fm.E1[2] + b * fm.E2[2]}};
+  const double l = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  if(l > 0) for(double& x : v) x /= l;
+  return v;
+}
 
 // Angles into [0, 2pi). Subtracting 2pi floor(b / 2pi) rather than std::fmod, which took a
 // quarter of an edit at 400k faces; the rounding is eps |b|, that of the propagation itself.

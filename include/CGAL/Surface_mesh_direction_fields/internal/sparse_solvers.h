@@ -30,6 +30,7 @@ inline bool spqr_minimum_norm(const Sparse_matrix& M, const Eigen::VectorXd& r, 
 {
   cholmod_common cc;
   cholmod_l_start(&cc);
+  cc.print = 0;   // failures are the return value, nothing is printed
   Sparse_matrix Mc = M;
   Mc.makeCompressed();
   cholmod_sparse A = Eigen::viewAsCholmod(Mc);

@@ -202,6 +202,7 @@ inline std::vector<int> amd_ordering(int n, std::vector<int>& col_begin, std::ve
   if(n == 0) return order;
   cholmod_common cc;
   cholmod_start(&cc);
+  cc.print = 0;   // failures are the return value, nothing is printed
   cholmod_sparse A = lower_triangle_view(n, col_begin.data(), rows.data(), rows.size(), nullptr);
   const bool ok = cholmod_amd(&A, nullptr, 0, order.data(), &cc) && cc.status == CHOLMOD_OK;
   cholmod_finish(&cc);
@@ -591,6 +592,7 @@ private:
     Half()
     {
       cholmod_start(&cc);
+      cc.print = 0;   // failures are reported by factor(), nothing is printed
       cc.nmethods = 1;
       cc.method[0].ordering = CHOLMOD_NATURAL;
       cc.postorder = 0;
