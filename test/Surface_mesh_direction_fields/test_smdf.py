@@ -27,6 +27,7 @@ import csv
 import json
 import math
 import os
+import random
 import subprocess
 import sys
 import tempfile
@@ -646,6 +647,101 @@ def test_shared_matching(smdf, c, meshes):
                             "%s: the written field read back with the written matching == prescribed" % label)
 
 
+def outcome_ok(rc, out, err):
+    """A clean outcome: exit 0 with one JSON line and nothing on stderr, or exit 1, 2 or 3 with
+    exactly one stderr line (and JSON on stdout only for 3); never a signal or a timeout."""
+    lines = err.decode("utf-8", "replace").splitlines()
+    if rc == 0:
+        return not err and out.count(b"\n") == 1
+    if rc in (1, 2):
+        return len(lines) == 1 and lines[0].startswith("smdf: error: ") and not out
+    if rc == 3:
+        return len(lines) == 1 and out.count(b"\n") == 1
+    return False
+
+
+def test_shared_robustness(smdf, c, meshes, tmp):
+    """Every subcommand on every shared mesh (bad ones and soups included), and on truncated
+    and random files: exit 0, 1, 2 or 3 with one stderr line, never a signal."""
+    rng = random.Random(20261201)
+    names = sorted(n for n in os.listdir(meshes) if n not in TOO_LARGE)
+    bad = 0
+    for name in names:
+        path = os.path.join(meshes, name)
+        small = os.path.getsize(path) < 1500000
+        runs = [["connection", path, "--N", "4"], ["connection", path, "--weights", "unit"]]
+        if small:
+            runs.append(["cone-metric", path])
+        for args in runs:
+            rc, out, err = smdf.run(args)
+            if not outcome_ok(rc, out, err):
+                bad += 1
+                c.check(False, "smdf %s: clean outcome (rc=%s, stderr=%r)" % (" ".join(args), rc, err[:200]))
+    c.check(bad == 0, "connection (N = 1 and 4) and cone-metric on all %d shared meshes end cleanly" % len(names))
+    # truncated copies of real files and random bytes, in every format
+    sources = [n for n in ("spot_c3d.obj", "double-torus_jnd.off", "mushroom_cgal.off", "bob_small_gc.off",
+                           "soup_trimesh.off") if n in names]
+    cases = 0
+    bad = 0
+    for name in sources:
+        data = open(os.path.join(meshes, name), "rb").read()
+        ext = os.path.splitext(name)[1]
+        for k in range(12):
+            cut = rng.randrange(1, len(data))
+            chunk = bytearray(data[:cut])
+            if k % 3 == 2 and chunk:   # also flip some bytes
+                for _ in range(8):
+                    chunk[rng.randrange(len(chunk))] = rng.randrange(256)
+            f = os.path.join(tmp, "cut%d%s" % (k, ext))
+            with open(f, "wb") as fh:
+                fh.write(bytes(chunk))
+            for cmd in (["info", f], ["connection", f, "--N", "2"], ["holonomy", f]):
+                rc, out, err = smdf.run(cmd)
+                cases += 1
+                if not outcome_ok(rc, out, err):
+                    bad += 1
+                    c.check(False, "smdf %s on a truncated %s (cut at %d of %d): clean outcome (rc=%s, stderr=%r)"
+                            % (cmd[0], name, cut, len(data), rc, err[:200]))
+    for ext in (".off", ".obj", ".ply", ".stl"):
+        for k in range(4):
+            f = os.path.join(tmp, "random%d%s" % (k, ext))
+            with open(f, "wb") as fh:
+                fh.write(bytes(rng.randrange(256) for _ in range(rng.randrange(1, 4000))))
+            rc, out, err = smdf.run(["info", f])
+            cases += 1
+            if not outcome_ok(rc, out, err):
+                bad += 1
+                c.check(False, "smdf info on random bytes %s: clean outcome (rc=%s, stderr=%r)" % (ext, rc, err[:200]))
+    c.check(bad == 0, "%d runs on truncated, corrupted and random mesh files end cleanly" % cases)
+    # malformed lists and files for the tool's parsers
+    spot = os.path.join(meshes, "spot_c3d.obj")
+    junk = ["", ",", "0", "0:", ":1", "0:1,", "0:1:2", "a:b", "0:1/0", "0:1e999", "-1:1", "99999999:1",
+            "0:nan", "0:inf", "0:1,0:1", "0x1:1", " 0:1", "0:1 ", "1/2:1", "0:1//2", "0:+-1"]
+    bad = 0
+    for j in junk:
+        for opt in ("--singularities", "--generator-turning"):
+            rc, out, err = smdf.run(["connection", spot, "--N", "4", opt, j])
+            if not outcome_ok(rc, out, err):
+                bad += 1
+                c.check(False, "connection %s %r: clean outcome (rc=%s, stderr=%r)" % (opt, j, rc, err[:200]))
+        rc, out, err = smdf.run(["cone-metric", spot, "--cones", j])
+        if not outcome_ok(rc, out, err):
+            bad += 1
+            c.check(False, "cone-metric --cones %r: clean outcome (rc=%s, stderr=%r)" % (j, rc, err[:200]))
+    for k in range(10):
+        f = os.path.join(tmp, "junk%d.txt" % k)
+        with open(f, "wb") as fh:
+            fh.write(bytes(rng.randrange(256) for _ in range(rng.randrange(0, 300))))
+        for args in (["connection", spot, "--singularities-file", f], ["connection", spot, "--constraints", f],
+                     ["holonomy", spot, "--lengths", f], ["singularities", spot, "--field", f],
+                     ["connection", spot, "--lengths", f]):
+            rc, out, err = smdf.run(args)
+            if not outcome_ok(rc, out, err):
+                bad += 1
+                c.check(False, "%s on junk: clean outcome (rc=%s, stderr=%r)" % (" ".join(args[:1] + args[2:]), rc, err[:200]))
+    c.check(bad == 0, "malformed lists and files end cleanly (%d lists, 10 junk files x 5 options)" % len(junk))
+
+
 # ---- connection --svg ------------------------------------------------------------------------
 
 SVG_NS = "{http://www.w3.org/2000/svg}"
@@ -814,6 +910,8 @@ def test_shared(smdf, c, shared):
     # trivial connection on a genus-2 surface
     test_shared_connection(smdf, c, meshes)
     test_shared_matching(smdf, c, meshes)
+    with tempfile.TemporaryDirectory(prefix="smdf_robust_") as tmp:
+        test_shared_robustness(smdf, c, meshes, tmp)
     test_shared_svg(smdf, c, meshes)
     test_shared_cone_metric(smdf, c, meshes)
 

@@ -100,7 +100,15 @@ long symmetry_order_option(const Args& args)
 
 std::string shorten(const std::string& s, std::size_t n)
 {
-  return s.size() <= n ? s : s.substr(0, n) + "...";
+  // printable ASCII as it is, every other byte as \xNN, so that an error stays one line
+  static const char hex[] = "0123456789abcdef";
+  std::string r;
+  for(std::size_t i = 0; i < s.size() && i < n; ++i) {
+    const unsigned char c = static_cast<unsigned char>(s[i]);
+    if(c >= 0x20 && c < 0x7f) r += char(c);
+    else { r += "\\x"; r += hex[c >> 4]; r += hex[c & 15]; }
+  }
+  return s.size() <= n ? r : r + "...";
 }
 
 bool parse_index(const std::string& s, std::size_t& out)
