@@ -2,6 +2,10 @@
 # The README's two entry points (CONVENTIONS section 9):
 #   ./run.sh example   install missing Debian packages, build smdf (Release), run it on data/torus.off
 #   ./run.sh test      install missing Debian packages, build everything, run ctest
+#   ./run.sh sanitize  the same tests built with AddressSanitizer + UBSan (build-sanitize/;
+#                      examples, benchmarks and the downstream test are left out)
+#   ./run.sh fuzz      the libFuzzer targets (clang, build-fuzz/), each run for SMDF_FUZZ_SECONDS
+#                      (default 60) on its seed corpus
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")"
 
@@ -9,12 +13,15 @@ BUILD_DIR=${BUILD_DIR:-build}
 JOBS=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 # libopenblas0-pthread: CHOLMOD's supernodal factorisation runs its dense blocks through BLAS;
 # Debian's reference BLAS is several times slower.
-PACKAGES=(cmake g++ libcgal-dev libeigen3-dev libsuitesparse-dev libboost-dev libbenchmark-dev ccache doxygen python3 libopenblas0-pthread)
+# clang, libclang-rt-14-dev: the libFuzzer targets (./run.sh fuzz).
+PACKAGES=(cmake g++ libcgal-dev libeigen3-dev libsuitesparse-dev libboost-dev libbenchmark-dev ccache doxygen python3 libopenblas0-pthread clang libclang-rt-14-dev)
 
 usage() {
   echo "usage: $0 example|test" >&2
   echo "  example  build the smdf tool and run it on data/torus.off" >&2
   echo "  test     build everything and run the test suite (ctest)" >&2
+  echo "  sanitize build the tests and smdf with ASan + UBSan and run them" >&2
+  echo "  fuzz     build the libFuzzer targets with clang and run each for a bounded time" >&2
   exit 2
 }
 
@@ -69,9 +76,41 @@ run_tests() {
   ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS"
 }
 
+run_sanitized_tests() {
+  local dir=${SANITIZE_BUILD_DIR:-build-sanitize}
+  export OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1
+  # CHOLMOD and OpenBLAS are not instrumented; leaks of their one-time allocations are not ours
+  export ASAN_OPTIONS=detect_leaks=0:abort_on_error=0 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+  export SMDF_TEST_MAX_FACES=${SMDF_TEST_MAX_FACES:-15000}   # a reduced mesh set: instrumented code is slower
+  # -O1: instrumented CGAL translation units took 6 min each at -O2 -g on 2 cores
+  cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O1" -DSMDF_SANITIZE=ON \
+        -DSMDF_BUILD_EXAMPLES=OFF -DSMDF_BUILD_BENCHMARKS=OFF
+  cmake --build "$dir" -j "$JOBS"
+  ctest --test-dir "$dir" --output-on-failure -j "$JOBS" -E 'downstream|doc_warnings'
+}
+
+run_fuzzers() {
+  local dir=${FUZZ_BUILD_DIR:-build-fuzz} seconds=${SMDF_FUZZ_SECONDS:-60}
+  local corpus=test/Surface_mesh_direction_fields/fuzz/corpus
+  export OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 ASAN_OPTIONS=detect_leaks=0
+  CC=clang CXX=clang++ cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O1" -DSMDF_BUILD_FUZZERS=ON \
+        -DSMDF_BUILD_TESTS=OFF -DSMDF_BUILD_EXAMPLES=OFF -DSMDF_BUILD_BENCHMARKS=OFF -DSMDF_BUILD_TOOLS=OFF
+  local targets=(fuzz_mesh_reading fuzz_cli_lists fuzz_cli_files) t scratch
+  cmake --build "$dir" -j "$JOBS" --target "${targets[@]}"
+  for t in "${targets[@]}"; do
+    scratch=$(mktemp -d)   # new inputs go there, the seed corpus in the repository stays as it is
+    echo "run.sh: $t for ${seconds} s"
+    "$dir/test/Surface_mesh_direction_fields/fuzz/$t" -max_total_time="$seconds" -timeout=20 \
+      -rss_limit_mb=4096 -print_final_stats=1 "$scratch" "$corpus/$t"
+    rm -rf "$scratch"
+  done
+}
+
 [ $# -eq 1 ] || usage
 case "$1" in
   example) install_dependencies; configure; run_example ;;
   test)    install_dependencies; configure; run_tests ;;
+  sanitize) install_dependencies; run_sanitized_tests ;;
+  fuzz)    install_dependencies; run_fuzzers ;;
   *)       usage ;;
 esac

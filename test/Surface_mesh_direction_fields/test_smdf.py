@@ -49,6 +49,21 @@ BAD_MESHES = {
     "horse_quad_igltut.obj": "not_triangle_mesh",
 }
 TOO_LARGE = {"dragon_vrip_npm.off"}   # 32 MB: keeps the test fast
+# ./run.sh sanitize sets SMDF_TEST_MAX_FACES: meshes with more faces are left out there.
+MAX_FACES = int(os.environ.get("SMDF_TEST_MAX_FACES", "0")) or None
+
+
+def too_large(meshes, name):
+    """True for meshes left out of this run (TOO_LARGE, or more faces than MAX_FACES)."""
+    if name in TOO_LARGE:
+        return True
+    if MAX_FACES is None:
+        return False
+    with open(os.path.join(os.path.dirname(meshes), "MANIFEST.tsv"), newline="") as f:
+        for r in csv.DictReader(f, delimiter="\t"):
+            if r["file"] == name:
+                return int(r["F"]) > MAX_FACES
+    return False
 # Meshes whose holonomy is also computed (Gauss-Bonnet and rotation agreement).
 HOLONOMY_MESHES = ["torus_ddg.obj", "double-torus_jnd.off", "punctured-torus_bff.obj",
                    "holes_cgal.off", "stanford-bunny_c3d.obj", "soup_trimesh.off"]
@@ -605,7 +620,7 @@ def test_shared_matching(smdf, c, meshes):
     with tempfile.TemporaryDirectory(prefix="smdf_matching_") as tmp:
         for name, q in cases:
             path = os.path.join(meshes, name)
-            if not os.path.isfile(path):
+            if not os.path.isfile(path) or too_large(meshes, name):
                 print("skip: %s not found" % name)
                 continue
             info = smdf.json(["info", path])
@@ -664,7 +679,7 @@ def test_shared_robustness(smdf, c, meshes, tmp):
     """Every subcommand on every shared mesh (bad ones and soups included), and on truncated
     and random files: exit 0, 1, 2 or 3 with one stderr line, never a signal."""
     rng = random.Random(20261201)
-    names = sorted(n for n in os.listdir(meshes) if n not in TOO_LARGE)
+    names = sorted(n for n in os.listdir(meshes) if not too_large(meshes, n))
     bad = 0
     for name in names:
         path = os.path.join(meshes, name)
@@ -842,7 +857,7 @@ def test_shared(smdf, c, shared):
     for r in rows:
         name = r["file"]
         path = os.path.join(meshes, name)
-        if name in TOO_LARGE:
+        if too_large(meshes, name):
             print("skip: %s (too large for this test)" % name)
             continue
         if name in BAD_MESHES:

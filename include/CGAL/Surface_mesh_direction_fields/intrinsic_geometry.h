@@ -12,6 +12,7 @@
 #include <CGAL/boost/graph/iterator.h>
 
 #include <array>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -33,7 +34,13 @@ namespace Surface_mesh_direction_fields {
 ///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
-template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
+template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters
+#ifndef DOXYGEN_RUNNING
+          // not a candidate for corner_angle(opposite, a, b) of three lengths (clang instantiates
+          // graph_traits<double> otherwise, a hard error)
+          , typename = std::enable_if_t<!std::is_arithmetic<TriangleMesh>::value>
+#endif
+          >
 double corner_angle(typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h,
                     const TriangleMesh& tm,
                     const NamedParameters& np = parameters::default_values())

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdint>
 #include <fstream>
+#include <iterator>
 #include <numeric>
 #include <sstream>
 #include <string>
@@ -228,6 +229,110 @@ void read_obj(const std::string& filename, std::vector<Point>& points,
   }
 }
 
+// ASCII OFF reader (headers OFF, COFF, NOFF, CNOFF, STOFF, or none; '#' comments; extra
+// per-vertex and per-face values such as colours are ignored). CGAL 5.5's scanner converts a
+// negative face index to an unsigned integer (undefined behaviour, found by fuzzing), so the
+// package reads OFF itself and checks every count and index.
+template <typename Point>
+void read_off(const std::string& filename, std::vector<Point>& points,
+              std::vector<std::vector<std::size_t>>& polygons)
+{
+  std::ifstream in(filename, std::ios::binary);
+  std::string line;
+  std::size_t line_no = 0;
+  auto fail = [&](const std::string& what) {
+    throw Input_error(Input_error::FILE_ERROR, "'" + filename + "' line " + std::to_string(line_no) + ": " + what);
+  };
+  // the next line with content, comments removed
+  auto next_line = [&](std::istringstream& is) {
+    while(std::getline(in, line)) {
+      ++line_no;
+      const std::size_t hash = line.find('#');
+      if(hash != std::string::npos) line.erase(hash);
+      if(line.find_first_not_of(" \t\r\f\v") == std::string::npos) continue;
+      is.clear();
+      is.str(line);
+      return true;
+    }
+    return false;
+  };
+  auto count = [&](std::istringstream& is, const char* what) {
+    long long n = -1;
+    if(!(is >> n) || n < 0 || n > (1LL << 40)) fail(std::string("expected the number of ") + what);
+    return std::size_t(n);
+  };
+  std::istringstream is;
+  if(!next_line(is)) fail("empty file");
+  std::string head;
+  is >> head;
+  static const char* const headers[] = {"OFF", "COFF", "NOFF", "CNOFF", "STOFF", "STCOFF", "STNOFF", "STCNOFF"};
+  const bool has_header = std::find(std::begin(headers), std::end(headers), head) != std::end(headers);
+  if(!has_header) {
+    if(head.find("OFF") != std::string::npos) fail("unsupported OFF variant '" + head + "' (binary and 4D OFF are not read)");
+    is.clear();
+    is.str(line);   // a file without header starts with the counts
+  }
+  std::string rest;
+  if(has_header && (is >> rest)) {
+    if(rest == "BINARY") fail("binary OFF is not read");
+    is.clear();
+    is.str(line.substr(line.find(head) + head.size()));
+  } else if(has_header && !next_line(is)) {
+    fail("missing the counts line");
+  }
+  const std::size_t nv = count(is, "vertices"), nf = count(is, "faces");
+  points.reserve((std::min)(nv, std::size_t(1) << 24));
+  polygons.reserve((std::min)(nf, std::size_t(1) << 24));
+  for(std::size_t v = 0; v < nv; ++v) {
+    if(!next_line(is)) fail("the file ends after " + std::to_string(v) + " of " + std::to_string(nv) + " vertices");
+    double x, y, z;
+    if(!(is >> x >> y >> z)) fail("a vertex needs three coordinates");
+    points.push_back(Point(x, y, z));
+  }
+  for(std::size_t f = 0; f < nf; ++f) {
+    if(!next_line(is)) fail("the file ends after " + std::to_string(f) + " of " + std::to_string(nf) + " faces");
+    long long k = -1;
+    if(!(is >> k) || k < 1 || k > 1000000) fail("a face needs its number of vertices (at least 1)");
+    std::vector<std::size_t> poly(static_cast<std::size_t>(k));
+    for(auto& i : poly) {
+      long long idx = -1;
+      if(!(is >> idx)) fail("a face has fewer vertex indices than announced");
+      if(idx < 0 || idx >= (long long)nv) fail("vertex index " + std::to_string(idx) + " out of range [0, " + std::to_string(nv) + ")");
+      i = std::size_t(idx);
+    }
+    polygons.push_back(std::move(poly));
+  }
+}
+
+// Checks a PLY header before CGAL's reader sees it: CGAL 5.5 reads a `property` line that
+// comes before any `element` line through back() of an empty vector (undefined behaviour,
+// found by fuzzing), and it accepts unknown header keywords silently.
+inline void check_ply_header(const std::string& filename)
+{
+  std::ifstream in(filename, std::ios::binary);
+  std::string line;
+  std::size_t line_no = 0;
+  bool element = false;
+  auto fail = [&](const std::string& what) {
+    throw Input_error(Input_error::FILE_ERROR, "'" + filename + "' is not a valid PLY file: header line " +
+                      std::to_string(line_no) + ": " + what);
+  };
+  while(std::getline(in, line) && line_no < 100000) {
+    ++line_no;
+    if(!line.empty() && line.back() == '\r') line.pop_back();
+    std::istringstream is(line);
+    std::string key;
+    is >> key;
+    if(line_no == 1) { if(key != "ply") fail("the first line must be 'ply'"); continue; }
+    if(key == "end_header") return;
+    if(key == "element") { element = true; continue; }
+    if(key == "property") { if(!element) fail("a property before any element"); continue; }
+    if(key != "format" && key != "comment" && key != "obj_info" && !key.empty())
+      fail("unknown keyword");
+  }
+  fail("no end_header");
+}
+
 } // namespace internal
 
 /// \ingroup PkgSurfaceMeshDirectionFieldsIO
@@ -253,7 +358,11 @@ Polygon_soup_report read_triangle_mesh(const std::string& filename, TriangleMesh
   const std::string ext = filename.size() >= 4 ? filename.substr(filename.size() - 4) : "";
   try {
     if(ext == ".obj" || ext == ".OBJ") { internal::read_obj(filename, points, polygons); ok = true; }
-    else ok = CGAL::IO::read_polygon_soup(filename, points, polygons);
+    else if(ext == ".off" || ext == ".OFF") { internal::read_off(filename, points, polygons); ok = true; }
+    else {
+      if(ext == ".ply" || ext == ".PLY") internal::check_ply_header(filename);
+      ok = CGAL::IO::read_polygon_soup(filename, points, polygons);
+    }
   } catch(const Input_error&) {
     throw;
   } catch(const std::exception& e) {
