@@ -74,6 +74,24 @@ std::vector<std::pair<Vertex, double>> initial_singularities(const smdf_bench::B
   return s;
 }
 
+// Factor and solve times (averaged per iteration) and the largest holonomy error of the solves.
+struct Status_totals
+{
+  double factor_s = 0, solve_s = 0, hol_err = 0;
+  void add(const SMDF::Trivial_connection_status& st)
+  {
+    factor_s += st.factor_seconds;
+    solve_s += st.solve_seconds;
+    hol_err = (std::max)(hol_err, st.max_holonomy_error);
+  }
+  void report(benchmark::State& state) const
+  {
+    state.counters["factor_s"] = benchmark::Counter(factor_s, benchmark::Counter::kAvgIterations);
+    state.counters["solve_s"] = benchmark::Counter(solve_s, benchmark::Counter::kAvgIterations);
+    state.counters["holonomy_error"] = hol_err;
+  }
+};
+
 bool check_status(benchmark::State& state, const SMDF::Trivial_connection_status& st)
 {
   std::string error;
@@ -84,6 +102,23 @@ bool check_status(benchmark::State& state, const SMDF::Trivial_connection_status
   smdf_bench::had_errors() = true;
   state.SkipWithError(error.c_str());
   return false;
+}
+
+// The timed loop: step() (a solve and its field, returning the solve's status) once per
+// iteration, every status checked; then the memory probe and the status totals.
+template <typename Step>
+void timed_solves(benchmark::State& state, Step step, const std::vector<double>& angles)
+{
+  Status_totals totals;
+  smdf_bench::Memory_probe mem;
+  for(auto _ : state) {
+    const SMDF::Trivial_connection_status st = step();
+    benchmark::DoNotOptimize(angles.data());
+    if(!check_status(state, st)) return;
+    totals.add(st);
+  }
+  mem.report(state);
+  totals.report(state);
 }
 
 void fail(benchmark::State& state, const std::exception& e)
@@ -101,25 +136,13 @@ void tc_setup(benchmark::State& state, int N, SMDF::Connection_solver solver)
   try {
     const auto sing = initial_singularities(*b, N);
     std::vector<double> angles(face_index_bound(mesh));
-    double factor_s = 0, solve_s = 0, hol_err = 0;
-    bool ok = true;
-    smdf_bench::Memory_probe mem;
-    for(auto _ : state) {
+    timed_solves(state, [&] {
       Connection tc(mesh, SMDF::parameters::symmetry_order(N).solver(solver));
       for(const auto& s : sing) tc.set_singularity(s.first, s.second);
       const SMDF::Trivial_connection_status st = tc.solve();
       tc.field_angles(Face_angles{&angles});
-      benchmark::DoNotOptimize(angles.data());
-      if(!check_status(state, st)) { ok = false; break; }
-      factor_s += st.factor_seconds;
-      solve_s += st.solve_seconds;
-      hol_err = (std::max)(hol_err, st.max_holonomy_error);
-    }
-    if(!ok) return;
-    mem.report(state);
-    state.counters["factor_s"] = benchmark::Counter(factor_s, benchmark::Counter::kAvgIterations);
-    state.counters["solve_s"] = benchmark::Counter(solve_s, benchmark::Counter::kAvgIterations);
-    state.counters["holonomy_error"] = hol_err;
+      return st;
+    }, angles);
   } catch(const std::exception& e) {
     fail(state, e);
   }
@@ -143,10 +166,7 @@ void tc_edit(benchmark::State& state, int N, SMDF::Connection_solver solver)
     tc.field_angles(Face_angles{&angles});
 
     std::size_t next_target = 0, moved = 0;
-    double factor_s = 0, solve_s = 0, hol_err = 0;
-    bool ok = true;
-    smdf_bench::Memory_probe mem;
-    for(auto _ : state) {
+    timed_solves(state, [&] {
       auto& s = sing[moved++ % sing.size()];
       Vertex to = targets[next_target++ % targets.size()];
       while(tc.singularity_index(to) != 0) to = targets[next_target++ % targets.size()];
@@ -155,17 +175,8 @@ void tc_edit(benchmark::State& state, int N, SMDF::Connection_solver solver)
       s.first = to;
       const SMDF::Trivial_connection_status st = tc.solve();
       tc.field_angles(Face_angles{&angles});
-      benchmark::DoNotOptimize(angles.data());
-      if(!check_status(state, st)) { ok = false; break; }
-      factor_s += st.factor_seconds;
-      solve_s += st.solve_seconds;
-      hol_err = (std::max)(hol_err, st.max_holonomy_error);
-    }
-    if(!ok) return;
-    mem.report(state);
-    state.counters["factor_s"] = benchmark::Counter(factor_s, benchmark::Counter::kAvgIterations);
-    state.counters["solve_s"] = benchmark::Counter(solve_s, benchmark::Counter::kAvgIterations);
-    state.counters["holonomy_error"] = hol_err;
+      return st;
+    }, angles);
   } catch(const std::exception& e) {
     fail(state, e);
   }

@@ -61,11 +61,10 @@ template <typename TriangleMesh>
 class Intrinsic_mesh
 {
 public:
-  typedef boost::graph_traits<TriangleMesh> GT;
-  typedef typename GT::vertex_descriptor vertex_descriptor;
-  typedef typename GT::halfedge_descriptor halfedge_descriptor;
-  typedef typename GT::edge_descriptor edge_descriptor;
-  typedef typename GT::face_descriptor face_descriptor;
+  typedef typename internal::Mesh_arrays<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  typedef typename internal::Mesh_arrays<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  typedef typename internal::Mesh_arrays<TriangleMesh>::edge_descriptor edge_descriptor;
+  typedef typename internal::Mesh_arrays<TriangleMesh>::face_descriptor face_descriptor;
 
   /// Builds the intrinsic mesh of `tm`. Throws `Input_error` for non-triangle faces,
   /// non-manifold vertices, non-finite or degenerate lengths, and index maps that are not

@@ -128,11 +128,10 @@ class Trivial_connection
   typedef SparseCholeskySolver Solver;
 
 public:
-  typedef boost::graph_traits<TriangleMesh> GT;
-  typedef typename GT::vertex_descriptor vertex_descriptor;
-  typedef typename GT::halfedge_descriptor halfedge_descriptor;
-  typedef typename GT::edge_descriptor edge_descriptor;
-  typedef typename GT::face_descriptor face_descriptor;
+  // the descriptors of the mesh (those of its Intrinsic_mesh)
+  typedef typename Intrinsic_mesh<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  typedef typename Intrinsic_mesh<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  typedef typename Intrinsic_mesh<TriangleMesh>::face_descriptor face_descriptor;
 
   /// Precomputes the metric, topology, generators and their Levi-Civita holonomy.
   /// Throws `Input_error` for invalid meshes or parameters.
