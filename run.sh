@@ -96,11 +96,14 @@ run_fuzzers() {
   CC=clang CXX=clang++ cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O1" -DSMDF_BUILD_FUZZERS=ON \
         -DSMDF_BUILD_TESTS=OFF -DSMDF_BUILD_EXAMPLES=OFF -DSMDF_BUILD_BENCHMARKS=OFF -DSMDF_BUILD_TOOLS=OFF
   local targets=(fuzz_mesh_reading fuzz_cli_lists fuzz_cli_files) t scratch
+  # runs per target at most (with the fixed seed: the inputs of a clean local run of 45 s each)
+  local -A runs=([fuzz_mesh_reading]=70000 [fuzz_cli_lists]=1500000 [fuzz_cli_files]=2800)
   cmake --build "$dir" -j "$JOBS" --target "${targets[@]}"
   for t in "${targets[@]}"; do
     scratch=$(mktemp -d)   # new inputs go there, the seed corpus in the repository stays as it is
     echo "run.sh: $t for ${seconds} s"
-    "$dir/test/Surface_mesh_direction_fields/fuzz/$t" -max_total_time="$seconds" -timeout=20 \
+    # a fixed seed: CI explores the same inputs every time (new findings come from local runs)
+    "$dir/test/Surface_mesh_direction_fields/fuzz/$t" -seed="${SMDF_FUZZ_SEED:-1}" -max_total_time="$seconds" -runs="${SMDF_FUZZ_RUNS:-${runs[$t]}}" -timeout=20 \
       -rss_limit_mb=4096 -print_final_stats=1 "$scratch" "$corpus/$t"
     rm -rf "$scratch"
   done
