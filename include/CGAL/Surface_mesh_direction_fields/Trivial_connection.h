@@ -4,6 +4,9 @@
 #ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_TRIVIAL_CONNECTION_H
 #define CGAL_SURFACE_MESH_DIRECTION_FIELDS_TRIVIAL_CONNECTION_H
 
+// (One concern, over 600 lines: the public API of the class, two thirds of it documentation;
+// the system, the guide solver, the field propagation and the lattice search are in internal/.)
+
 #include <CGAL/Surface_mesh_direction_fields/errors.h>
 #include <CGAL/Surface_mesh_direction_fields/parameters.h>
 #include <CGAL/Surface_mesh_direction_fields/homology_generators.h>
