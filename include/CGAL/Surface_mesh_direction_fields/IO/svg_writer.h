@@ -143,6 +143,59 @@ inline std::string svg_index_label(double k, int N)
   return s + os.str();
 }
 
+// Throws Input_error for invalid options, N or singularity indices (see write_field_svg()).
+template <typename Singularities>
+void svg_check_options(const Svg_options& o, int N, const Singularities& singularities)
+{
+  auto invalid = [](const std::string& what) { throw Input_error(Input_error::INVALID_ARGUMENT, what); };
+  if(o.width <= 0) invalid("Svg_options::width must be positive, got " + std::to_string(o.width));
+  if(!std::isfinite(o.azimuth) || !std::isfinite(o.elevation))
+    invalid("Svg_options::azimuth and elevation must be finite numbers of degrees");
+  if(o.up_axis < 0 || o.up_axis > 2)
+    invalid("Svg_options::up_axis must be 0, 1 or 2, got " + std::to_string(o.up_axis));
+  auto check_size = [&](double x, const char* name) {
+    if(!std::isfinite(x) || x < 0) invalid(std::string("Svg_options::") + name + " must be finite and non-negative");
+  };
+  check_size(o.glyph_scale, "glyph_scale");
+  check_size(o.glyph_stroke_width, "glyph_stroke_width");
+  check_size(o.edge_stroke_width, "edge_stroke_width");
+  check_size(o.singularity_radius, "singularity_radius");
+  internal::svg_check_color(o.face_color, "face_color");
+  internal::svg_check_color(o.edge_color, "edge_color");
+  internal::svg_check_color(o.glyph_color, "glyph_color");
+  internal::svg_check_color(o.positive_color, "positive_color");
+  internal::svg_check_color(o.negative_color, "negative_color");
+  internal::svg_check_color(o.background_color, "background_color");
+  if(N < 1) invalid("symmetry order N must be at least 1, got " + std::to_string(N));
+  for(const auto& s : singularities)
+    if(!std::isfinite(s.second)) invalid("singularity index is not finite");
+}
+
+// The orthographic camera of write_field_svg(): view direction d (towards the viewer), screen
+// axes r (right) and u (up), and a fixed light from the upper left of the viewer.
+struct Svg_camera
+{
+  double d[3], r[3], u[3], light[3];
+  explicit Svg_camera(const Svg_options& o)
+  {
+    const double deg = CGAL_PI / 180;
+    const double ca = std::cos(o.azimuth * deg), sa = std::sin(o.azimuth * deg);
+    const double ce = std::cos(o.elevation * deg), se = std::sin(o.elevation * deg);
+    // in coordinates (x', y', z') with z' the up axis, a cyclic permutation of (x, y, z)
+    const double dp[3] = {ce * ca, ce * sa, se};
+    const double rp[3] = {-sa, ca, 0};
+    const double up[3] = {-se * ca, -se * sa, ce};
+    for(int k = 0; k < 3; ++k) {
+      const int w = (o.up_axis + 1 + k) % 3;
+      d[w] = dp[k]; r[w] = rp[k]; u[w] = up[k];
+    }
+    // fixed light, from the upper left of the viewer
+    for(int k = 0; k < 3; ++k) light[k] = d[k] + 0.5 * u[k] - 0.4 * r[k];
+    const double ll = std::sqrt(light[0] * light[0] + light[1] * light[1] + light[2] * light[2]);
+    for(double& x : light) x /= ll;
+  }
+};
+
 } // namespace internal
 
 /// \ingroup PkgSurfaceMeshDirectionFieldsIO
@@ -195,53 +248,16 @@ void write_field_svg(std::ostream& os, const TriangleMesh& tm, const FaceVectorM
   using parameters::choose_parameter;
   using parameters::get_parameter;
 
-  // ---- validation
-  auto invalid = [](const std::string& what) { throw Input_error(Input_error::INVALID_ARGUMENT, what); };
   const Svg_options& o = options;
-  if(o.width <= 0) invalid("Svg_options::width must be positive, got " + std::to_string(o.width));
-  if(!std::isfinite(o.azimuth) || !std::isfinite(o.elevation))
-    invalid("Svg_options::azimuth and elevation must be finite numbers of degrees");
-  if(o.up_axis < 0 || o.up_axis > 2)
-    invalid("Svg_options::up_axis must be 0, 1 or 2, got " + std::to_string(o.up_axis));
-  auto check_size = [&](double x, const char* name) {
-    if(!std::isfinite(x) || x < 0) invalid(std::string("Svg_options::") + name + " must be finite and non-negative");
-  };
-  check_size(o.glyph_scale, "glyph_scale");
-  check_size(o.glyph_stroke_width, "glyph_stroke_width");
-  check_size(o.edge_stroke_width, "edge_stroke_width");
-  check_size(o.singularity_radius, "singularity_radius");
-  internal::svg_check_color(o.face_color, "face_color");
-  internal::svg_check_color(o.edge_color, "edge_color");
-  internal::svg_check_color(o.glyph_color, "glyph_color");
-  internal::svg_check_color(o.positive_color, "positive_color");
-  internal::svg_check_color(o.negative_color, "negative_color");
-  internal::svg_check_color(o.background_color, "background_color");
-  if(N < 1) invalid("symmetry order N must be at least 1, got " + std::to_string(N));
-  for(const auto& s : singularities)
-    if(!std::isfinite(s.second)) invalid("singularity index is not finite");
+  internal::svg_check_options(o, N, singularities);
 
   auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                               get_const_property_map(CGAL::vertex_point, tm));
   auto fim = CGAL::get_initialized_face_index_map(tm);
 
-  // ---- camera: view direction d (towards the viewer), screen axes r (right) and u (up)
-  const double deg = CGAL_PI / 180;
-  const double ca = std::cos(o.azimuth * deg), sa = std::sin(o.azimuth * deg);
-  const double ce = std::cos(o.elevation * deg), se = std::sin(o.elevation * deg);
-  // in coordinates (x', y', z') with z' the up axis, a cyclic permutation of (x, y, z)
-  const double dp[3] = {ce * ca, ce * sa, se};
-  const double rp[3] = {-sa, ca, 0};
-  const double up[3] = {-se * ca, -se * sa, ce};
-  double d[3], r[3], u[3];
-  for(int k = 0; k < 3; ++k) {
-    const int w = (o.up_axis + 1 + k) % 3;
-    d[w] = dp[k]; r[w] = rp[k]; u[w] = up[k];
-  }
-  // fixed light, from the upper left of the viewer
-  double light[3];
-  for(int k = 0; k < 3; ++k) light[k] = d[k] + 0.5 * u[k] - 0.4 * r[k];
-  const double ll = std::sqrt(light[0] * light[0] + light[1] * light[1] + light[2] * light[2]);
-  for(double& x : light) x /= ll;
+  // ---- camera: view direction d (towards the viewer), screen axes r (right) and u (up), light
+  const internal::Svg_camera camera(o);
+  const double (&d)[3] = camera.d, (&r)[3] = camera.r, (&u)[3] = camera.u, (&light)[3] = camera.light;
 
   auto point = [&](vertex_descriptor v, double p[3]) {
     const auto& q = get(vpm, v);
