@@ -11,9 +11,8 @@
 #   SMDF_BENCH_SIZES  comma-separated target face counts (default: 10000,100000,400000,1000000)
 #   SMDF_BUILD_LOCK   lock file serialising builds and timed runs (default: /tmp/smdf_build.lock)
 #   JOBS              parallel build jobs (default: 2)
-#   SMDF_BENCH_HUGEPAGES  1: run with GLIBC_TUNABLES=glibc.malloc.hugetlb=1 (transparent huge pages
-#                     for large allocations; on this VM first-touch page faults are a third of the
-#                     setup time at 1M faces, see README.md)
+#   SMDF_BENCH_HUGEPAGES  1: CHOLMOD's large blocks on transparent huge pages, as in the smdf tool
+#                     (enable_cholmod_huge_pages(); see README.md)
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
@@ -30,7 +29,6 @@ locked() {
 
 # Single-threaded BLAS/OpenMP, as in the tests (CONVENTIONS section 7).
 export OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1
-if [ "${SMDF_BENCH_HUGEPAGES:-0}" = 1 ]; then export GLIBC_TUNABLES=glibc.malloc.hugetlb=1; fi
 
 if [ ! -f "$BUILD_DIR/CMakeCache.txt" ]; then
   locked cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release

@@ -31,6 +31,7 @@
 
 #include <CGAL/Surface_mesh_direction_fields/IO/read_triangle_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/topology.h>
+#include "huge_page_new.h"
 
 #include <sys/resource.h>
 #if defined(__GLIBC__)
@@ -432,8 +433,17 @@ inline void standard_options(benchmark::internal::Benchmark* b)
   b->Unit(benchmark::kMillisecond)->UseRealTime()->Repetitions(5)->ReportAggregatesOnly(true);
 }
 
+// SMDF_BENCH_HUGEPAGES=1: large blocks (operator new and CHOLMOD's) on transparent huge pages,
+// as in the smdf tool (tools/smdf/huge_page_new.cpp).
+inline bool cholmod_huge_pages()
+{
+  const char* env = std::getenv("SMDF_BENCH_HUGEPAGES");
+  return env && std::string(env) == "1";
+}
+
 inline void add_context()
 {
+  benchmark::AddCustomContext("smdf_cholmod_huge_pages", cholmod_huge_pages() ? "yes (SMDF_BENCH_HUGEPAGES=1)" : "no");
   benchmark::AddCustomContext("smdf_base_mesh", base_mesh_description());
   benchmark::AddCustomContext("smdf_peak_rss_reset", peak_rss_resettable() ? "yes" : "no");
   benchmark::AddCustomContext("smdf_allocator", warm_allocator()
@@ -454,6 +464,8 @@ inline void add_context()
   {                                                                         \
     ::benchmark::Initialize(&argc, argv);                                   \
     if(::benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;      \
+    if(::smdf_bench::cholmod_huge_pages())                                  \
+      ::smdf_memory::enable_huge_pages();                                   \
     ::smdf_bench::add_context();                                            \
     ::benchmark::RunSpecifiedBenchmarks();                                  \
     ::benchmark::Shutdown();                                                \

@@ -19,11 +19,15 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
+#include <atomic>
+#include <thread>
 #include <limits>
 #include <random>
 #include <memory>
 #include <map>
 #include <set>
+
+#include <dlfcn.h>
 
 #include "test_util.h"
 #include "mesh_generators.h"
@@ -331,6 +335,50 @@ struct Tests
   }
 };
 
+// While alive: OpenBLAS's pool set to `threads` (0: left as it is) and a thread that reads its
+// size until the end; unchanged() if it never differed. Nothing is checked without OpenBLAS.
+class Blas_pool_watch
+{
+public:
+  explicit Blas_pool_watch(int threads)
+  {
+    set_ = reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+    get_ = reinterpret_cast<int (*)()>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
+    if(!set_ || !get_) return;
+    old_ = get_();
+    if(threads > 0) set_(threads);
+    expected_ = get_();
+    watcher_ = std::thread([this] {
+      while(!stop_.load()) {
+        if(get_() != expected_) changed_.store(true);
+        std::this_thread::yield();
+      }
+    });
+  }
+  ~Blas_pool_watch()
+  {
+    finish();
+    if(set_ && get_ && get_() != old_) set_(old_);
+  }
+  bool unchanged()
+  {
+    finish();
+    return !changed_.load();
+  }
+
+private:
+  void finish()
+  {
+    stop_.store(true);
+    if(watcher_.joinable()) watcher_.join();
+  }
+  void (*set_)(int) = nullptr;
+  int (*get_)() = nullptr;
+  int old_ = 0, expected_ = 0;
+  std::atomic<bool> stop_{false}, changed_{false};
+  std::thread watcher_;
+};
+
 // The two-thread factorisation (internal/two_domain_cholesky.h) against Eigen's LDL^T on SPD
 // matrices with the structure it must handle: a periodic grid (one component, level-set
 // separator), two grids (components split without separator), and dense rows that join the
@@ -372,6 +420,9 @@ void two_domain_solver()
     for(int i = 0; i < n; ++i) b[i] = std::sin(1.3 * i) + 0.1;
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> ref(L.cast<double>());
     for(int pass = 0; pass < 2; ++pass) {
+      // pass 1 with a threaded OpenBLAS pool: the halves run in sequence, and the pool size, a
+      // process-wide setting, is never changed (a second thread watches it throughout)
+      Blas_pool_watch watch(pass == 1 ? 2 : 0);
       SMDF::Cholmod_cholesky f;
       std::string msg;
       SMDF_CHECK(f.factor(L, msg));
@@ -391,6 +442,7 @@ void two_domain_solver()
       SMDF::Cholmod_cholesky g;
       std::string msg3;
       SMDF_CHECK(!g.factor(L3, msg3) && msg3.find("not positive definite") != std::string::npos);
+      SMDF_CHECK_MSG(watch.unchanged(), "variant " << variant << ": the OpenBLAS pool size changed during a factorisation");
       L = L2;
       b *= 2.0;
       ref.compute(L.cast<double>());

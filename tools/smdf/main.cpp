@@ -35,6 +35,7 @@
 #include "args.h"
 #include "commands.h"
 #include "help.h"
+#include "huge_page_new.h"
 #include "json.h"
 
 #include <CGAL/Surface_mesh_direction_fields/errors.h>
@@ -46,8 +47,6 @@
 #include <new>
 #include <string>
 #include <vector>
-
-#include <unistd.h>   // execv
 
 #ifndef SMDF_VERSION
 #define SMDF_VERSION "unknown"
@@ -133,17 +132,9 @@ int run(const std::vector<std::string>& argv)
 int main(int argc, char** argv)
 {
   using namespace smdf_cli;
-#ifdef __linux__
-  // Large meshes: a third of the solver setup is first-touch page faults of the factorisation
-  // (1M faces, 4 KB pages on this VM); glibc maps large blocks with transparent huge pages only
-  // if told at start-up, so restart once with that tunable unless the user set GLIBC_TUNABLES
-  // (trivial connection setup at 1M faces: 4.5 s -> 3.3 s). SMDF_NO_HUGEPAGES=1 disables it.
-  if(!std::getenv("GLIBC_TUNABLES") && !std::getenv("SMDF_NO_HUGEPAGES")) {
-    setenv("GLIBC_TUNABLES", "glibc.malloc.hugetlb=1", 1);
-    execv("/proc/self/exe", argv);
-    unsetenv("GLIBC_TUNABLES");   // exec failed: go on without
-  }
-#endif
+  // The tool owns its process: large blocks on transparent huge pages (huge_page_new.cpp).
+  // SMDF_NO_HUGEPAGES=1 keeps the default allocation.
+  if(!std::getenv("SMDF_NO_HUGEPAGES")) smdf_memory::enable_huge_pages();
   std::cout.imbue(std::locale::classic());
   try {
     return run(std::vector<std::string>(argv + 1, argv + argc));

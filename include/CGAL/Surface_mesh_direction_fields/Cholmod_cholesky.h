@@ -38,8 +38,11 @@ struct Cholesky_hints
 ///
 /// From 100,000 rows on, the matrix is split by one level of nested dissection into two
 /// domains and a separator, the two halves are factored concurrently and the dense Schur
-/// complement of the separator is factored with LAPACK; while the halves run, CHOLMOD's OpenMP
-/// regions and OpenBLAS's thread pool are limited to one thread each.
+/// complement of the separator is factored with LAPACK. While the halves run, the OpenMP regions
+/// CHOLMOD starts from the factoring threads are limited to one thread (a per-thread setting,
+/// restored afterwards). Nothing process-wide is changed: when OpenBLAS runs a thread pool of
+/// more than one thread, the halves are factored one after the other and the pool works on
+/// their dense blocks. See `enable_cholmod_huge_pages()` for an opt-in memory setting.
 /// \cgalModels `SparseCholeskySolver`
 //
 // CHOLMOD and not SPQR: the normal-equation matrix of the trivial-connection system is a

@@ -31,7 +31,6 @@ std::stringstream sink;
 
 extern "C" int LLVMFuzzerInitialize(int*, char***)
 {
-  setenv("SMDF_NO_HUGEPAGES", "1", 1);   // the tool must not re-execute the fuzzer
   std::cout.rdbuf(sink.rdbuf());
   std::cerr.rdbuf(sink.rdbuf());
   return 0;

@@ -122,51 +122,23 @@ private:
   int dynamic_ = 0, threads_ = 1;
 };
 
-// The same for OpenBLAS's own thread pool, whose size is a process-wide setting: while the two
-// halves are factored or solved concurrently, each BLAS call runs in its calling thread. With
-// two pool threads, the two callers queued for the pool and its threads spun on sched_yield
-// (433k-face cone metric: 5.5 s instead of 3.2-4.6 s, 4 s of system time). The setting is
-// restored afterwards; BLAS calls of other threads of the process in that window also run on one
-// thread. Nothing happens with other BLAS libraries (looked up at run time).
-class Single_thread_blas_scope
+// OpenBLAS's thread pool is process-wide and its size may not be changed here: another thread
+// of the user's program could see it. With two pool threads, two concurrent callers queued for
+// the pool and its threads spun on sched_yield (433k-face cone metric: 5.5 s instead of 3.2-4.6
+// s, 4 s of system time). So the two halves run concurrently only when BLAS runs in its calling
+// thread (a pool of one thread, or a BLAS without a pool); with a threaded pool they run one
+// after the other and the pool parallelises their dense blocks. The size is only read, once per
+// factorisation; BLAS libraries other than OpenBLAS count as one thread.
+inline bool blas_runs_in_caller()
 {
-public:
-  Single_thread_blas_scope()
-  {
-    const Api& api = get_api();
-    if(!api.ok) return;
-    threads_ = api.get_num_threads();
-    if(threads_ > 1) api.set_num_threads(1);
-  }
-  ~Single_thread_blas_scope()
-  {
-    if(threads_ > 1) get_api().set_num_threads(threads_);
-  }
-  Single_thread_blas_scope(const Single_thread_blas_scope&) = delete;
-  Single_thread_blas_scope& operator=(const Single_thread_blas_scope&) = delete;
-
-private:
-  struct Api
-  {
-    void (*set_num_threads)(int) = nullptr;
-    int (*get_num_threads)() = nullptr;
-    bool ok = false;
-  };
-  static const Api& get_api()
-  {
-    static const Api api = [] {
-      Api a;
 #ifdef CGAL_SMDF_HAS_DLSYM
-      a.set_num_threads = reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
-      a.get_num_threads = reinterpret_cast<int (*)()>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
-      a.ok = a.set_num_threads && a.get_num_threads;
+  typedef int (*Getter)();
+  static const Getter get = reinterpret_cast<Getter>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
+  return !get || get() <= 1;
+#else
+  return true;
 #endif
-      return a;
-    }();
-    return api;
-  }
-  int threads_ = 0;
-};
+}
 
 typedef Eigen::SparseMatrix<double, Eigen::ColMajor, int> Sparse_matrix_int;
 
@@ -270,12 +242,12 @@ inline void triangular(int n, const double* L, double* x, bool transpose, bool i
 } // namespace dense
 
 // Runs f(0) on the calling thread and f(1) on another one (on the calling thread too if no
-// thread can be started), and returns when both are done.
+// thread can be started, or if concurrent is false), and returns when both are done.
 template <typename F>
-void run_on_two_threads(const F& f)
+void run_on_two_threads(const F& f, bool concurrent = true)
 {
   std::future<void> other;
-  try {
+  if(concurrent) try {
     other = std::async(std::launch::async, [&f] { f(1); });
   } catch(const std::system_error&) {
   }
@@ -512,10 +484,8 @@ public:
     std::vector<double> ass(std::size_t(s_) * std::size_t(s_), 0.);
     for(const auto& d : sep_dest_) ass[std::size_t(d.second)] += value[d.first];
     std::string m0, m1;
-    {
-      Single_thread_blas_scope one_blas_thread;
-      run_on_two_threads([&](int i) { (i == 0 ? m0 : m1) = half_[i].factor_and_schur(s_); });
-    }
+    concurrent_ = blas_runs_in_caller();
+    run_on_two_threads([&](int i) { (i == 0 ? m0 : m1) = half_[i].factor_and_schur(s_); }, concurrent_);
     if(!m0.empty() || !m1.empty()) { message = m0.empty() ? m1 : m0; return false; }
     // S = S_1 + S_2 - Ass (lower triangles), then its Cholesky factor
     schur_.resize(ass.size());
@@ -560,12 +530,11 @@ public:
       h.solve(CHOLMOD_Lt, z);
       for(int k = 0; k < h.nd; ++k) x[h.rows[std::size_t(k)]] = z[std::size_t(k)];
     };
-    Single_thread_blas_scope one_blas_thread;
-    run_on_two_threads(forward);
+    run_on_two_threads(forward, concurrent_);
     for(int k = 0; k < s_; ++k) sep[std::size_t(k)] += c[0][std::size_t(k)] + c[1][std::size_t(k)];
     dense::triangular(s_, schur_.data(), sep.data(), false, true);
     dense::triangular(s_, schur_.data(), sep.data(), true, true);
-    run_on_two_threads([&](int i) { back(i, sep); });
+    run_on_two_threads([&](int i) { back(i, sep); }, concurrent_);
     for(int k = 0; k < s_; ++k) x[sep_rows_[std::size_t(k)]] = sep[std::size_t(k)];
     return x;
   }
@@ -685,6 +654,7 @@ private:
   };
 
   int n_ = 0, n1_ = 0, n2_ = 0, s_ = 0;
+  bool concurrent_ = true;   // the halves on two threads (see blas_runs_in_caller())
   std::vector<int> sep_rows_;                          // input row of each separator unknown
   Half half_[2];
   std::vector<std::pair<std::size_t, long long>> sep_dest_;   // nonzero -> entry of dense Ass
