@@ -452,7 +452,7 @@ def test_connection(smdf, c, torus, tmp, verts, faces):
                    "--connection-out", conn], "smdf connection torus 0:1,100:-1")
     if r:
         want = [{"vertex": 0, "index": 1}, {"vertex": 100, "index": -1}]
-        c.check(r.get("N") == 1 and r.get("weights") == "cotan", "connection: N 1, cotan weights")
+        c.check(r.get("N") == 1 and r.get("weights") == "unit", "connection: N 1, unit weights (the default)")
         c.check(r.get("prescribed") == want, "connection: prescribed %r" % r.get("prescribed"))
         c.check(r.get("found") == want, "connection: found == prescribed (%r)" % r.get("found"))
         c.check(r.get("generator_turning_numbers") == [0, 0], "connection: turning numbers [0, 0]")

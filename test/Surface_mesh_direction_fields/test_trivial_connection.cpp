@@ -12,6 +12,7 @@
 #include <CGAL/Surface_mesh_direction_fields/IO/read_triangle_mesh.h>
 
 #include <CGAL/Eigen_solver_traits.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
 #include <Eigen/SparseCholesky>
@@ -607,7 +608,7 @@ void smoothest_turning(const Surface_mesh& mesh, const std::string& name, int bo
   const int N = 4;
   const long chi = long(num_vertices(mesh)) - long(num_edges(mesh)) + long(num_faces(mesh));
   std::vector<vertex_descriptor> vs(vertices(mesh).begin(), vertices(mesh).end());
-  SMDF::Trivial_connection<Surface_mesh> tc(mesh, SMDF::parameters::symmetry_order(N));
+  SMDF::Trivial_connection<Surface_mesh> tc(mesh, SMDF::parameters::symmetry_order(N).connection_weights(SMDF::COTAN_WEIGHTS));
   const int n = int(std::abs(4 * chi));
   for(int i = 0; i < n; ++i) tc.set_singularity(vs[(std::size_t(i) * 7919 + 13) % vs.size()], chi > 0 ? 0.25 : -0.25);
   const SMDF::Smoothest_turning_numbers r = tc.choose_smoothest_generator_turning_numbers();
@@ -779,6 +780,91 @@ static_assert(SMDF::internal::Accepts_cholesky_hints<SMDF::Cholmod_cholesky>::va
               "Cholmod_cholesky takes the ordering hints of the trivial connection");
 static_assert(!SMDF::internal::Accepts_cholesky_hints<SMDF::Eigen_sparse_cholesky<>>::value, "");
 
+
+// Robustness (Crane et al., Figure 10). One connection per variant of the mesh, N = 4, eight
+// +1/4 singularities at fixed vertices plus a +-1/4 pair; each read back with its own matching.
+struct Robustness_run
+{
+  SMDF::Trivial_connection_status status;
+  std::vector<int> matching;   // per edge
+  bool exact = false;          // read-back with the matching == prescription
+};
+
+Robustness_run robust_solve(const Surface_mesh& mesh, const std::vector<std::pair<Surface_mesh::Vertex_index, double>>& sing)
+{
+  Robustness_run r;
+  SMDF::Trivial_connection<Surface_mesh> tc(mesh, SMDF::parameters::symmetry_order(4));
+  for(const auto& p : sing) tc.set_singularity(p.first, p.second);
+  r.status = tc.solve();
+  auto angles = get(CGAL::dynamic_face_property_t<double>(), mesh);
+  auto matching = get(CGAL::dynamic_edge_property_t<int>(), mesh);
+  tc.field_angles(angles);
+  tc.field_matching(angles, matching);
+  for(auto e : edges(mesh)) r.matching.push_back(get(matching, e));
+  const auto ft = SMDF::field_singularities(mesh, angles, SMDF::parameters::symmetry_order(4).matching(matching));
+  std::map<Surface_mesh::Vertex_index, double> got(ft.singularities.begin(), ft.singularities.end()), want(sing.begin(), sing.end());
+  r.exact = got == want;
+  // the condition number is estimated exactly when the holonomy error exceeds 1e-12
+  SMDF_CHECK_MSG((r.status.condition_estimate > 0) == (r.status.max_holonomy_error > 1e-12),
+                 "condition estimate " << r.status.condition_estimate << " with holonomy error " << r.status.max_holonomy_error);
+  return r;
+}
+
+void robustness(const Surface_mesh& spot, const std::string& name)
+{
+  typedef Surface_mesh::Vertex_index V;
+  std::vector<std::pair<V, double>> sing;
+  for(unsigned i = 0; i < 9; ++i) sing.emplace_back(V(37 + 311 * i), 0.25);
+  sing.emplace_back(V(2901), -0.25);
+  // scales 1e-6 ... 1e6: the same singularities, matching and energy
+  const Robustness_run ref = robust_solve(spot, sing);
+  SMDF_CHECK_MSG(ref.status.success && ref.exact, name << ": unscaled " << ref.status.message);
+  for(double scale : {1e-6, 1e-3, 1e3, 1e6}) {
+    Surface_mesh m = spot;
+    for(auto v : vertices(m)) m.point(v) = CGAL::ORIGIN + scale * (m.point(v) - CGAL::ORIGIN);
+    const Robustness_run r = robust_solve(m, sing);
+    SMDF_CHECK_MSG(r.status.success && r.exact, name << " x " << scale << ": " << r.status.message);
+    SMDF_CHECK_MSG(r.matching == ref.matching, name << " x " << scale << ": the matching changed");
+    SMDF_CHECK_MSG(std::abs(r.status.energy - ref.status.energy) <= 1e-9 * ref.status.energy,
+                   name << " x " << scale << ": energy " << r.status.energy << " vs " << ref.status.energy);
+  }
+  // random vertex noise up to 30% of the mean edge length: still exactly the singularities
+  double mean = 0;
+  for(auto e : edges(spot)) mean += std::sqrt(CGAL::squared_distance(spot.point(source(e, spot)), spot.point(target(e, spot))));
+  mean /= double(num_edges(spot));
+  for(unsigned seed = 1; seed <= 3; ++seed) {
+    Surface_mesh m = spot;
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for(auto v : vertices(m)) {
+      K::Vector_3 d(u(rng), u(rng), u(rng));
+      while(d.squared_length() > 1) d = K::Vector_3(u(rng), u(rng), u(rng));
+      m.point(v) = m.point(v) + 0.3 * mean * d;
+    }
+    const Robustness_run r = robust_solve(m, sing);
+    SMDF_CHECK_MSG(r.status.success && r.exact, name << ", 30% noise, seed " << seed << ": " << r.status.message
+                   << ", largest rotation " << r.status.max_rotation);
+  }
+  // a cap: face 0 (a, b, c) split at a point of relative height 1e-8 above the middle of ab
+  // into (a, b, m), (b, c, m), (c, a, m). Accepted (the metric is the edge lengths) and exact.
+  {
+    Surface_mesh m = spot;
+    const auto f0 = *faces(m).begin();
+    const auto h = halfedge(f0, m);
+    const V a = source(h, m), b = target(h, m), c = target(next(h, m), m);
+    const K::Point_3 mid = CGAL::midpoint(m.point(a), m.point(b));
+    K::Vector_3 up = m.point(c) - mid;
+    up = up / std::sqrt(up.squared_length());
+    const double ab = std::sqrt(CGAL::squared_distance(m.point(a), m.point(b)));
+    CGAL::Euler::add_center_vertex(h, m);
+    const V cap = V(num_vertices(m) - 1);
+    m.point(cap) = mid + 1e-8 * ab * up;
+    const Robustness_run r = robust_solve(m, sing);
+    SMDF_CHECK_MSG(r.status.success && r.exact, name << ", cap of relative height 1e-8: " << r.status.message);
+    SMDF_CHECK(num_faces(m) == num_faces(spot) + 2);
+  }
+}
+
 int main()
 {
   two_domain_solver();
@@ -845,6 +931,7 @@ int main()
     Surface_mesh spot;
     SMDF::read_triangle_mesh(dir + "/meshes/spot_c3d.obj", spot);
     ts.large_index(spot, "spot_c3d.obj");
+    robustness(spot, "spot_c3d.obj");
     ts.guides(spot, "spot_c3d.obj");
   }
   std::cout << "field read-back exact on " << ts.resolvable_solves + tp.resolvable_solves << " solves; "

@@ -37,10 +37,14 @@ Connection_options connection_options(const Args& args)
 {
   Connection_options o;
   o.N = symmetry_order_option(args);
-  o.weights_name = args.value("weights", "cotan");
+  o.weights_name = args.value("weights", "unit");
   if(o.weights_name == "cotan") o.weights = SMDF::COTAN_WEIGHTS;
   else if(o.weights_name == "unit") o.weights = SMDF::UNIT_WEIGHTS;
-  else throw Usage_error("option --weights expects 'cotan' or 'unit', got '" + shorten(o.weights_name) + "'");
+  else if(o.weights_name == "nonnegative-cotan") o.weights = SMDF::NONNEGATIVE_COTAN_WEIGHTS;
+  else if(o.weights_name == "bounded-cotan") o.weights = SMDF::BOUNDED_COTAN_WEIGHTS;
+  else
+    throw Usage_error("option --weights expects 'unit', 'cotan', 'nonnegative-cotan' or 'bounded-cotan', got '" +
+                      shorten(o.weights_name) + "'");
   o.edits = args.integer("edit-benchmark", 0);
   if(o.edits < 0) throw Usage_error("option --edit-benchmark expects a non-negative integer");
   o.svg = svg_options(args);
@@ -297,6 +301,10 @@ Json run_connection(const Args& args)
   out["residual"] = st.residual;
   out["scaled_residual"] = st.scaled_residual;
   out["max_holonomy_error"] = st.max_holonomy_error;
+  out["max_rotation"] = st.max_rotation;
+  out["edges_beyond_half_period"] = st.edges_beyond_half_period;
+  out["edges_beyond_pi"] = st.edges_beyond_pi;
+  if(st.condition_estimate > 0) out["condition_estimate"] = st.condition_estimate;
   out["max_matching_rounding"] = off_lattice;
 
   // The result is what its read-back says: the field with its matching must have exactly the
@@ -320,7 +328,7 @@ Command connection_command()
           {{"singularities", "LIST", "prescribed indices 'v:k,v:k,...' (k integer, p/q or decimal)"},
            {"singularities-file", "FILE", "prescribed indices, one line 'v k' per vertex"},
            {"N", "n", "symmetry order (1 vectors, 2 lines, 4 crosses; default 1)"},
-           {"weights", "W", "cotan (default) or unit"},
+           {"weights", "W", "unit (default), cotan, nonnegative-cotan or bounded-cotan (manual: choice of weights)"},
            {"generator-turning", "LIST", "turning numbers 'g:t,...' of the generators (default 0), or 'smoothest'"},
            {"constraints", "FILE", "directional constraints: lines 'face angle' or 'face x y z'"},
            {"field-out", "FILE", "write one unit direction 'x y z' per face"},
@@ -339,7 +347,9 @@ Command connection_command()
           "from the computed field with its matching), generator_turning_numbers (read back),\n"
           "principal_matching: {found, generator_turning_numbers, extra, missing,\n"
           "edges_turning_at_least_pi_over_N} (what a reader without the matching sees), energy,\n"
-          "residual, scaled_residual, max_holonomy_error, max_matching_rounding, success, timings:\n"
+          "residual, scaled_residual, max_holonomy_error, max_rotation (largest |x_e|),\n"
+          "edges_beyond_half_period (|x_e| > pi/N), edges_beyond_pi, condition_estimate (only when\n"
+          "the holonomy error exceeds 1e-12), max_matching_rounding, success, timings:\n"
           "{setup_s, solve_s, field_s, edit_median_s}}; with --generator-turning smoothest also\n"
           "smoothest_generator_turning: {turning_numbers, energy, energy_with_zero_turning, exact}\n"
           "(the turning numbers of least energy; exact: global minimum over multiples of 1/N,\n"

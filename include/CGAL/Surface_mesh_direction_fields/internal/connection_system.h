@@ -90,9 +90,18 @@ struct Connection_system
   }
 
 
-  // unit: w_e = 1; else cotan weights raised to clamp_ times their mean positive value
+  // How the weights w_e are made (Connection_weights): 1, or the cotan formula with its two
+  // cotangents optionally clamped at 0 each, then kept in [floor, cap] times the mean positive
+  // weight (cap <= 0: no upper bound).
+  struct Weight_rule
+  {
+    bool unit = false;
+    bool nonnegative_cotangents = false;
+    double floor = 1e-3, cap = 0;
+  };
+
   template <typename TM>
-  void compute_weights(const Mesh_arrays<TM>& m_, bool unit, double clamp_)
+  void compute_weights(const Mesh_arrays<TM>& m_, const Weight_rule& rule)
   {
     col_of_edge_.assign(m_.number_of_edges(), -1);
     edge_of_col_.clear();
@@ -102,25 +111,27 @@ struct Connection_system
       edge_of_col_.push_back(int(e));
     }
     W_.setOnes(Eigen::Index(edge_of_col_.size()));
-    if(unit) return;
+    if(rule.unit) return;
     // per face: cot of the corner opposite each halfedge, (a^2 + b^2 - c^2) / 4A, added to w_e / 2
     std::vector<double> w(m_.number_of_edges(), 0.);
+    const double lowest_cot = rule.nonnegative_cotangents ? 0. : -std::numeric_limits<double>::infinity();
     for(std::size_t f = 0; f < m_.number_of_faces(); ++f) {
       const int h0 = m_.face_halfedge[f], h1 = m_.next[h0], h2 = m_.next[h1];
       const double l0 = m_.edge_length(h0), l1 = m_.edge_length(h1), l2 = m_.edge_length(h2);
       const double q0 = l0 * l0, q1 = l1 * l1, q2 = l2 * l2;
-      const double inv8A = 1. / (8. * triangle_area(l0, l1, l2));
-      w[h0 >> 1] += (q1 + q2 - q0) * inv8A;
-      w[h1 >> 1] += (q2 + q0 - q1) * inv8A;
-      w[h2 >> 1] += (q0 + q1 - q2) * inv8A;
+      const double inv4A = 1. / (4. * triangle_area(l0, l1, l2));
+      w[h0 >> 1] += 0.5 * (std::max)((q1 + q2 - q0) * inv4A, lowest_cot);
+      w[h1 >> 1] += 0.5 * (std::max)((q2 + q0 - q1) * inv4A, lowest_cot);
+      w[h2 >> 1] += 0.5 * (std::max)((q0 + q1 - q2) * inv4A, lowest_cot);
     }
     double sum = 0;
     std::size_t count = 0;
     for(int e : edge_of_col_) if(w[e] > 0 && std::isfinite(w[e])) { sum += w[e]; ++count; }
-    const double floor = clamp_ * (count ? sum / double(count) : 1.);
+    const double mean = count ? sum / double(count) : 1.;
+    const double lo = rule.floor * mean, hi = rule.cap > 0 ? rule.cap * mean : std::numeric_limits<double>::infinity();
     for(std::size_t c = 0; c < edge_of_col_.size(); ++c) {
       const double x = w[edge_of_col_[c]];
-      W_[Eigen::Index(c)] = x >= floor ? x : floor;
+      W_[Eigen::Index(c)] = x >= lo ? (x <= hi ? x : hi) : lo;   // NaN (degenerate face) -> lo
     }
   }
 
