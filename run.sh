@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The README's two entry points (CONVENTIONS section 9):
-#   ./run.sh example   install missing Debian packages, build smdf (Release), run it on data/torus.off
+#   ./run.sh example   install missing Debian packages, build smdf (Release), run it on data/spot.off
 #   ./run.sh test      install missing Debian packages, build everything, run ctest
 #   ./run.sh sanitize  the same tests built with AddressSanitizer + UBSan (build-sanitize/;
 #                      examples, benchmarks and the downstream test are left out)
@@ -18,7 +18,7 @@ PACKAGES=(cmake g++ libcgal-dev libeigen3-dev libsuitesparse-dev libboost-dev li
 
 usage() {
   echo "usage: $0 example|test" >&2
-  echo "  example  build the smdf tool and run it on data/torus.off" >&2
+  echo "  example  build the smdf tool and run it on data/spot.off (cross field, cone metric, SVGs)" >&2
   echo "  test     build everything and run the test suite (ctest)" >&2
   echo "  sanitize build the tests and smdf with ASan + UBSan and run them" >&2
   echo "  fuzz     build the libFuzzer targets with clang and run each for a bounded time" >&2
@@ -63,12 +63,26 @@ show() {
   echo
 }
 
+# The package's job on a real mesh (data/spot.off, CC0, see data/README.md): a cross field with
+# eight singularities of index 1/4 at the vertices extreme in the eight diagonal directions
+# (they sum to chi = 2), then a flat cone metric with cones of pi/2 at the same vertices, and
+# the cross field of that metric, which is parallel (Lai et al.: no rotation at all).
 run_example() {
-  local mesh=data/torus.off
+  local mesh=data/spot.off out=$BUILD_DIR/example
+  local corners=(2202 1077 2587 1488 2221 1090 533 248)
+  local sing="" cones="" v
+  for v in "${corners[@]}"; do sing+="${sing:+,}$v:1/4"; cones+="${cones:+,}$v:pi/2"; done
   cmake --build "$BUILD_DIR" -j "$JOBS" --target smdf
+  mkdir -p "$out"
   show info "$mesh"
-  show holonomy "$mesh"
-  echo "Ran smdf info and smdf holonomy on $mesh (build: $BUILD_DIR, Release)."
+  show connection "$mesh" --N 4 --singularities "$sing" --svg "$out/spot_cross_field.svg"
+  show cone-metric "$mesh" --cones "$cones" --no-flips --lengths-out "$out/spot_cone_metric.txt"
+  show connection "$mesh" --lengths "$out/spot_cone_metric.txt" --N 4 --singularities "$sing" \
+    --svg "$out/spot_parallel_cross_field.svg"
+  echo "Ran smdf on $mesh: a cross field with 8 singularities of index 1/4, a flat cone metric with"
+  echo "8 cones of pi/2 and the parallel cross field of that metric (max_rotation 0)."
+  echo "Pictures: $out/spot_cross_field.svg and $out/spot_parallel_cross_field.svg"
+  echo "(build: $BUILD_DIR, Release)."
 }
 
 run_tests() {

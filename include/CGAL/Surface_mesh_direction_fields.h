@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Surface_mesh_direction_fields authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Umbrella header: includes every public header of the core (no I/O). Mesh reading and SVG
 // pictures are in <CGAL/Surface_mesh_direction_fields/IO.h>; define
 // CGAL_SURFACE_MESH_DIRECTION_FIELDS_WITH_IO before including this header to get them too.

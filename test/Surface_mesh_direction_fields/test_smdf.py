@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # Copyright (c) 2026 The Surface_mesh_direction_fields authors.
-# SPDX-License-Identifier: LGPL-3.0-or-later
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Developer test of the smdf command-line tool (python3 standard library only).
 
 usage: test_smdf.py SMDF SHARED_DATA_DIR [--torus OFF] [--part all|torus|shared]

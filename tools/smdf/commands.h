@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Surface_mesh_direction_fields authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // smdf: the subcommands. cmd_<name>.cpp defines run_<name>() and <name>_command(), the entry
 // of commands() (name, positional arguments, options, help text, run function).

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Surface_mesh_direction_fields authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // smdf: the mesh type and the helpers shared by several subcommands (mesh loading, data files,
 // vertex and face fields of a line, singularity lists, face fields and their SVG picture).

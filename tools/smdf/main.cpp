@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Surface_mesh_direction_fields authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // smdf: command-line front end of the Surface_mesh_direction_fields package.
 //
@@ -118,6 +118,14 @@ int run(const std::vector<std::string>& argv)
     json = r.json.str();
     failure = r.message;
     code = r.exit_code;
+  } catch(const SMDF::Input_error& e) {
+    // every error about the input names it first, as "<mesh>: ..." (errors about options
+    // start with "--option: ..." instead)
+    const std::string what = e.what();
+    if(args.positional.empty() || what.compare(0, args.positional[0].size(), args.positional[0]) == 0 ||
+       what.compare(0, 2, "--") == 0)
+      throw;
+    throw SMDF::Input_error(e.kind(), args.positional[0] + ": " + what);
   }
   std::cout << json << '\n' << std::flush;
   if(!std::cout) throw Error("cannot write to standard output");

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Surface_mesh_direction_fields authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 
 #ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_CHOLMOD_CHOLESKY_H
 #define CGAL_SURFACE_MESH_DIRECTION_FIELDS_CHOLMOD_CHOLESKY_H
@@ -128,7 +128,7 @@ public:
     if(two_domain_) return two_domain_->refactor(lower, message);
     solver_->factorize(lower);
     if(solver_->info() != Eigen::Success) {
-      message = "CHOLMOD could not factor the normal equations (matrix not positive definite)";
+      message = "CHOLMOD could not factor the normal equations (matrix not positive definite)" + internal::take_cholmod_error();
       return false;
     }
     return true;
@@ -147,7 +147,7 @@ private:
   void reset_solver()
   {
     solver_.reset(new Solver());
-    solver_->cholmod().print = 0;
+    internal::make_cholmod_quiet(solver_->cholmod());
   }
   std::unique_ptr<Solver> solver_;
   std::unique_ptr<internal::Two_domain_cholesky> two_domain_;

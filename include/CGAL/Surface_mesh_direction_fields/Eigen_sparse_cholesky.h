@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Surface_mesh_direction_fields authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 
 #ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_EIGEN_SPARSE_CHOLESKY_H
 #define CGAL_SURFACE_MESH_DIRECTION_FIELDS_EIGEN_SPARSE_CHOLESKY_H

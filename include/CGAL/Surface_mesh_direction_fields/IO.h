@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Surface_mesh_direction_fields authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The package's input and output: validated mesh reading and SVG pictures. Not included by the
 // core headers; the umbrella header includes it when CGAL_SURFACE_MESH_DIRECTION_FIELDS_WITH_IO
 // is defined.

@@ -1,8 +1,10 @@
 // Copyright (c) 2026 The Surface_mesh_direction_fields authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 
 #ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_SPARSE_SOLVERS_H
 #define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_SPARSE_SOLVERS_H
+
+#include <CGAL/Surface_mesh_direction_fields/internal/cholmod_errors.h>
 
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
@@ -30,7 +32,7 @@ inline bool spqr_minimum_norm(const Sparse_matrix& M, const Eigen::VectorXd& r, 
 {
   cholmod_common cc;
   cholmod_l_start(&cc);
-  cc.print = 0;   // failures are the return value, nothing is printed
+  make_cholmod_quiet(cc);   // failures are the return value, nothing is printed
   Sparse_matrix Mc = M;
   Mc.makeCompressed();
   cholmod_sparse A = Eigen::viewAsCholmod(Mc);

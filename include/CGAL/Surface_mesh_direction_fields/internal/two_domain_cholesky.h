@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Surface_mesh_direction_fields authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 
 #ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_TWO_DOMAIN_CHOLESKY_H
 #define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_TWO_DOMAIN_CHOLESKY_H
@@ -22,6 +22,8 @@
 //
 // Why: CHOLMOD 3's numeric factorisation of a mesh Laplacian is sequential (its supernodes are
 // too small for threaded BLAS to help), and the machines this package targets have 2 cores.
+
+#include <CGAL/Surface_mesh_direction_fields/internal/cholmod_errors.h>
 
 #include <cholmod.h>
 
@@ -174,7 +176,7 @@ inline std::vector<int> amd_ordering(int n, std::vector<int>& col_begin, std::ve
   if(n == 0) return order;
   cholmod_common cc;
   cholmod_start(&cc);
-  cc.print = 0;   // failures are the return value, nothing is printed
+  make_cholmod_quiet(cc);   // failures are the return value, nothing is printed
   cholmod_sparse A = lower_triangle_view(n, col_begin.data(), rows.data(), rows.size(), nullptr);
   const bool ok = cholmod_amd(&A, nullptr, 0, order.data(), &cc) && cc.status == CHOLMOD_OK;
   cholmod_finish(&cc);
@@ -561,7 +563,7 @@ private:
     Half()
     {
       cholmod_start(&cc);
-      cc.print = 0;   // failures are reported by factor(), nothing is printed
+      make_cholmod_quiet(cc);   // failures are reported by factor(), nothing is printed
       cc.nmethods = 1;
       cc.method[0].ordering = CHOLMOD_NATURAL;
       cc.postorder = 0;
@@ -592,7 +594,7 @@ private:
         analysed = true;
       }
       if(!cholmod_factorize(&A, factor, &cc) || cc.status != CHOLMOD_OK || factor->minor < factor->n)
-        return "CHOLMOD could not factor the normal equations (matrix not positive definite)";
+        return "CHOLMOD could not factor the normal equations (matrix not positive definite)" + take_cholmod_error();
       extract_lss(s);
       schur.assign(lss.size(), 0.);
       dense::lower_times_transpose(s, lss.data(), schur.data());
