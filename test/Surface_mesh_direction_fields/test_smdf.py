@@ -811,6 +811,9 @@ def test_svg(smdf, c, torus, tmp, faces):
         c.check(len(colors) == 2 and None not in colors and
                 sorted(("+" if rgb[0] > rgb[2] else "-") for rgb in colors) == ["+", "-"],
                 "torus.svg: one red-ish (+1) and one blue-ish (-1) marker (%r)" % colors)
+        captions = [t.text or "" for t in root.findall(SVG_NS + "text") if (t.text or "").startswith("view:")]
+        c.check(len(captions) == 1 and "z up (chosen" in captions[0],
+                "torus.svg: the caption names the view, z up for the flat torus (%r)" % captions)
 
     svg4 = os.path.join(tmp, "torus4.svg")
     r = smdf.json(["connection", torus, "--N", "4", "--singularities", "0:1/4,100:-1/4", "--svg", svg4,
@@ -825,7 +828,10 @@ def test_svg(smdf, c, torus, tmp, faces):
     svgy = os.path.join(tmp, "torus_y.svg")
     r = smdf.json(["connection", torus, "--singularities", "0:1,100:-1", "--svg", svgy, "--view=-20,10,y"],
                   "smdf connection --view=-20,10,y")
-    c.check(r is not None and parse_svg(c, svgy, "torus_y.svg") is not None, "--view with an up axis")
+    root = parse_svg(c, svgy, "torus_y.svg") if r else None
+    captions = [t.text or "" for t in root.findall(SVG_NS + "text")] if root is not None else []
+    c.check(root is not None and "view: azimuth -20, elevation 10, y up" in captions,
+            "--view with an up axis, named in the caption (%r)" % captions)
 
     for view in ("30", "30,", ",20", "a,b", "30,nan", "30,inf", "30,20,w", "30,20,z,1", "30;20"):
         smdf.error(["connection", torus, "--svg", svg, "--view", view], "malformed --view " + view, 2, "--view")

@@ -337,7 +337,7 @@ Command connection_command()
            {"lengths", "FILE", "intrinsic metric: one line 'i j length' per edge (as holonomy --lengths)"},
            {"edit-benchmark", "K", "time K random singularity moves (re-solve + field)"},
            {"svg", "FILE", "write an SVG picture of the field and its found singularities"},
-           {"view", "A,E[,UP]", "view of --svg: azimuth,elevation in degrees, up axis x|y|z (default 30,20,z)"},
+           {"view", "A,E[,UP]", "view of --svg: azimuth,elevation in degrees, up axis x|y|z (default 30,20 and an up axis chosen from the bounding box, named in the picture)"},
            {"width", "PX", "width of the --svg picture in pixels (default 800)"}},
           "trivial connection with prescribed singularities and its N-RoSy field",
           "Computes the trivial connection closest to Levi-Civita with the prescribed singularity\n"

@@ -3,6 +3,7 @@
 
 #include "common.h"
 
+#include <CGAL/Bbox_3.h>
 #include <CGAL/Surface_mesh_direction_fields/field_singularities.h>
 #include <CGAL/Surface_mesh_direction_fields/homology_generators.h>
 #include <CGAL/Surface_mesh_direction_fields/parameters.h>
@@ -271,12 +272,12 @@ SMDF::Svg_options svg_options(const Args& args)
     const std::size_t comma = view.find(',');
     const std::size_t comma2 = comma == std::string::npos ? comma : view.find(',', comma + 1);
     double a = 0, e = 0;
-    const std::string axis = comma2 == std::string::npos ? "z" : view.substr(comma2 + 1);
+    const std::string axis = comma2 == std::string::npos ? "y" : view.substr(comma2 + 1);
     if(comma == std::string::npos || !parse_real(view.substr(0, comma), a) ||
        !parse_real(view.substr(comma + 1, comma2 == std::string::npos ? std::string::npos : comma2 - comma - 1), e) ||
        (axis != "x" && axis != "y" && axis != "z"))
       throw Usage_error("option --view expects 'azimuth,elevation' in degrees, optionally followed by ',x', "
-                        "',y' or ',z' (the up axis, default z), got '" + shorten(view) + "'");
+                        "',y' or ',z' (the up axis; default: chosen from the mesh's bounding box), got '" + shorten(view) + "'");
     svg.up_axis = axis[0] - 'x';
     svg.azimuth = a;
     svg.elevation = e;
@@ -289,12 +290,32 @@ SMDF::Svg_options svg_options(const Args& args)
   return svg;
 }
 
+// The axis drawn pointing up when --view does not say: the thin axis of a flat object (its
+// bounding box is less than half as deep along it as along the next axis), else y, the
+// convention of most modelled and scanned meshes (OBJ, Stanford's and Crane's models).
+int default_up_axis(const Mesh& mesh)
+{
+  if(num_vertices(mesh) == 0) return 1;
+  const CGAL::Bbox_3 box = CGAL::bbox_3(mesh.points().begin(), mesh.points().end());
+  double extent[3];
+  for(int k = 0; k < 3; ++k) extent[k] = box.max(k) - box.min(k);
+  int order[3] = {0, 1, 2};
+  std::sort(order, order + 3, [&](int a, int b) { return extent[a] < extent[b]; });
+  return extent[order[0]] < 0.5 * extent[order[1]] ? order[0] : 1;
+}
+
 void write_field_files(const Args& args, const Mesh& mesh, Face_vector_property vectors, long N,
                        const SMDF::Field_topology<Mesh>& topo, const SMDF::Svg_options& svg)
 {
   if(args.has("svg")) {
+    SMDF::Svg_options view = svg;
+    if(!args.has("view")) view.up_axis = default_up_axis(mesh);
+    std::ostringstream caption;
+    caption << "view: azimuth " << view.azimuth << ", elevation " << view.elevation << ", " << char('x' + view.up_axis)
+            << " up" << (args.has("view") ? "" : " (chosen; set with --view A,E,x|y|z)");
+    view.caption = caption.str();
     std::ostringstream os;
-    SMDF::write_field_svg(os, mesh, vectors, int(N), topo.singularities, svg);
+    SMDF::write_field_svg(os, mesh, vectors, int(N), topo.singularities, view);
     write_lines_file(args.value("svg"), os.str());
   }
   if(args.has("field-out")) {

@@ -49,6 +49,7 @@ struct Svg_options
   std::string positive_color = "#d62020"; ///< color of the largest positive index (smaller ones are paler)
   std::string negative_color = "#2050d6"; ///< color of the largest negative index (smaller ones are paler)
   std::string background_color = "none";  ///< background of the picture
+  std::string caption;              ///< a line of text under the picture (empty: none)
 };
 
 namespace internal {
@@ -382,7 +383,8 @@ void write_field_svg(std::ostream& os, const TriangleMesh& tm, const FaceVectorM
   }
   const double font = 12;
   const double legend_h = legend.empty() ? 0 : font + 8;
-  const double H = mesh_h + legend_h;
+  const double caption_h = options.caption.empty() ? 0 : font + 8;
+  const double H = mesh_h + legend_h + caption_h;
 
   // ---- output
   std::string out;
@@ -498,6 +500,12 @@ void write_field_svg(std::ostream& os, const TriangleMesh& tm, const FaceVectorM
       x += 2 * rr + 4 + font * 0.6 * double(label.size()) + 14;
     }
     out += "</g>\n";
+  }
+  if(!options.caption.empty()) {
+    std::string text;
+    for(char ch : options.caption) text += ch == '&' ? "&amp;" : ch == '<' ? "&lt;" : ch == '>' ? "&gt;" : std::string(1, ch);
+    out += "<text x=\""; num(margin); out += "\" y=\""; num(mesh_h + legend_h + caption_h / 2 + font * 0.35);
+    out += "\" fill=\"#606060\">" + text + "</text>\n";
   }
   out += "</svg>\n";
   os.write(out.data(), std::streamsize(out.size()));
