@@ -684,7 +684,11 @@ def test_shared_robustness(smdf, c, meshes, tmp):
     for name in names:
         path = os.path.join(meshes, name)
         small = os.path.getsize(path) < 1500000
-        runs = [["connection", path, "--N", "4"], ["connection", path, "--weights", "unit"]]
+        field = os.path.join(tmp, "robust_field.txt")
+        if os.path.exists(field):
+            os.remove(field)
+        runs = [["info", path], ["generators", path], ["holonomy", path],
+                ["connection", path, "--N", "4", "--field-out", field], ["connection", path, "--weights", "cotan"]]
         if small:
             runs.append(["cone-metric", path])
         for args in runs:
@@ -692,7 +696,14 @@ def test_shared_robustness(smdf, c, meshes, tmp):
             if not outcome_ok(rc, out, err):
                 bad += 1
                 c.check(False, "smdf %s: clean outcome (rc=%s, stderr=%r)" % (" ".join(args), rc, err[:200]))
-    c.check(bad == 0, "connection (N = 1 and 4) and cone-metric on all %d shared meshes end cleanly" % len(names))
+            if args[0] == "connection" and os.path.exists(field):   # the field just written, read back
+                rc, out, err = smdf.run(["singularities", path, "--field", field, "--N", "4"])
+                os.remove(field)
+                if not outcome_ok(rc, out, err) or rc != 0:
+                    bad += 1
+                    c.check(False, "smdf singularities %s on its own field: exit 0 (rc=%s, stderr=%r)" % (name, rc, err[:200]))
+    c.check(bad == 0, "every subcommand (info, generators, holonomy, connection N = 1 and 4, singularities on "
+            "the field written, cone-metric) on all %d shared meshes ends cleanly" % len(names))
     # truncated copies of real files and random bytes, in every format
     sources = [n for n in ("spot_c3d.obj", "double-torus_jnd.off", "mushroom_cgal.off", "bob_small_gc.off",
                            "soup_trimesh.off") if n in names]
