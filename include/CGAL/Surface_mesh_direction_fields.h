@@ -18,6 +18,9 @@
 #include <CGAL/Surface_mesh_direction_fields/topology.h>
 #include <CGAL/Surface_mesh_direction_fields/homology_generators.h>
 #include <CGAL/Surface_mesh_direction_fields/holonomy.h>
+#include <CGAL/Surface_mesh_direction_fields/homotopy_basis.h>
+#include <CGAL/Surface_mesh_direction_fields/holonomy_group.h>
+#include <CGAL/Surface_mesh_direction_fields/huge_pages.h>
 #include <CGAL/Surface_mesh_direction_fields/Trivial_connection.h>
 #include <CGAL/Surface_mesh_direction_fields/compute_trivial_connection.h>
 #include <CGAL/Surface_mesh_direction_fields/field_singularities.h>

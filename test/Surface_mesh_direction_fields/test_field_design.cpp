@@ -1,0 +1,292 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+// Metric-driven field design (Lai et al. 2010): the homotopy basis of the punctured surface, the
+// holonomy group of flat cone metrics and its compatibility tests (Theorems 3.2 and 3.5), on
+// flat tori made from planar lattices (whose holonomy is known exactly) and on flat cone metrics
+// of shared meshes of genus 0 and 3.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CGAL/Surface_mesh_direction_fields.h>
+#include <CGAL/Surface_mesh_direction_fields/IO/read_triangle_mesh.h>
+
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "test_util.h"
+#include "mesh_generators.h"
+
+namespace SMDF = CGAL::Surface_mesh_direction_fields;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Surface_mesh;
+typedef CGAL::Polyhedron_3<K> Polyhedron;
+typedef Surface_mesh::Vertex_index Vertex;
+
+namespace {
+
+// Every loop is a closed dual cycle that leaves and enters the base face.
+template <typename Mesh>
+bool loops_are_based(const Mesh& mesh, const SMDF::Homotopy_basis<Mesh>& b)
+{
+  for(const auto& l : b.loops) {
+    if(l.dual_cycle.empty()) return false;
+    if(face(opposite(l.dual_cycle.front(), mesh), mesh) != b.base_face || face(l.dual_cycle.back(), mesh) != b.base_face)
+      return false;
+    for(std::size_t i = 0; i + 1 < l.dual_cycle.size(); ++i)
+      if(face(l.dual_cycle[i], mesh) != face(opposite(l.dual_cycle[i + 1], mesh), mesh)) return false;
+  }
+  return true;
+}
+
+// The torus_soup(n, m) connectivity with the lengths of the planar lattice spanned by A (along
+// i) and B (along j): a flat torus with periods n A and m B.
+struct Flat_torus
+{
+  Surface_mesh mesh;
+  Surface_mesh::Property_map<Surface_mesh::Edge_index, double> length;
+};
+
+void make_flat_torus(Flat_torus& t, std::size_t n, std::size_t m, std::complex<double> A, std::complex<double> B)
+{
+  smdf_test::soup_to_mesh(smdf_test::torus_soup(n, m), t.mesh);
+  t.length = t.mesh.add_property_map<Surface_mesh::Edge_index, double>("e:flat", 0).first;
+  for(auto e : edges(t.mesh)) {
+    const std::size_t u = std::size_t(source(halfedge(e, t.mesh), t.mesh)), v = std::size_t(target(halfedge(e, t.mesh), t.mesh));
+    auto wrap = [](long d, long p) { d %= p; if(d > p / 2) d -= p; if(d < -p / 2) d += p; return d; };
+    const long di = wrap(long(v / m) - long(u / m), long(n)), dj = wrap(long(v % m) - long(u % m), long(m));
+    t.length[e] = std::abs(double(di) * A + double(dj) * B);
+  }
+}
+
+void flat_tori()
+{
+  typedef std::complex<double> C;
+  struct Case { const char* name; C A, B; bool square, triangular; double square_spacing, triangular_spacing; };
+  const Case cases[] = {{"rectangular 1 x 1.5", C(1, 0), C(0, 1.5), true, false, 30, 0},
+                        {"rectangular 1 x sqrt 2", C(1, 0), C(0, std::sqrt(2.)), false, false, 0, 0},
+                        {"hexagonal", C(1, 0), C(0.5, std::sqrt(3.) / 2), false, true, 0, 10}};
+  for(const Case& c : cases) {
+    Flat_torus t;
+    make_flat_torus(t, 30, 20, c.A, c.B);
+    const std::vector<Vertex> no_cones;
+    const auto basis = SMDF::homotopy_basis(t.mesh, no_cones);
+    SMDF_CHECK_MSG(basis.loops.size() == 2 && loops_are_based(t.mesh, basis), c.name << ": two handle loops through the base face");
+    const SMDF::Holonomy_group g = SMDF::holonomy_group(t.mesh, basis, SMDF::parameters::edge_length_map(t.length));
+    // rotations vanish; translations are periods p (30 A) + q (20 B) with integers p, q, not both 0
+    const C P = 30. * c.A, Q = 20. * c.B;
+    for(std::size_t i = 0; i < g.motions.size(); ++i) {
+      const double rot = std::min(g.rotations[i], 2 * M_PI - g.rotations[i]);
+      const C tr(g.motions[i].translation.x(), g.motions[i].translation.y());
+      // rotate the base frame so that its translations can be compared with the lattice's: the
+      // frame is that of the base face, whose first edge is one of A, B, A + B (in some order)
+      double best = 1e300;
+      for(C e : {c.A, c.B, c.A + c.B, -c.A, -c.B, -c.A - c.B}) {
+        const C z = tr * (e / std::abs(e));   // back to lattice coordinates, for each possible first edge
+        for(C zz : {z}) {
+          const double q = zz.imag() / Q.imag();
+          const double p = (zz.real() - q * Q.real()) / P.real();
+          best = std::min(best, std::abs(zz - (std::round(p) * P + std::round(q) * Q)) + (std::abs(std::round(p)) + std::abs(std::round(q)) == 0 ? 1e9 : 0));
+        }
+      }
+      SMDF_CHECK_MSG(rot < 1e-9 && best < 1e-8, c.name << ", loop " << i << ": rotation " << rot << ", distance of the translation to a period " << best);
+    }
+    SMDF_CHECK_MSG(SMDF::smallest_parallel_rosy_order(g) == 1, c.name << ": a parallel vector field exists");
+    const auto sq = SMDF::tessellation_compatibility(g, SMDF::SQUARE_GRID);
+    const auto tri = SMDF::tessellation_compatibility(g, SMDF::TRIANGULAR_GRID);
+    SMDF_CHECK_MSG(sq.compatible == c.square, c.name << ": square grid " << sq.compatible << ", deviation " << sq.max_translation_deviation);
+    SMDF_CHECK_MSG(tri.compatible == c.triangular, c.name << ": triangular grid " << tri.compatible << ", deviation " << tri.max_translation_deviation);
+    if(c.square) SMDF_CHECK_MSG(std::abs(sq.spacing - c.square_spacing) < 1e-9, c.name << ": square spacing " << sq.spacing);
+    if(c.triangular) SMDF_CHECK_MSG(std::abs(tri.spacing - c.triangular_spacing) < 1e-9, c.name << ": triangular spacing " << tri.spacing);
+    if(!c.square) SMDF_CHECK_MSG(!sq.failing_loops.empty() && sq.max_translation_deviation > 1e-3, c.name << ": the failing loops are named");
+  }
+}
+
+// The vertices extreme in the given directions (distinct).
+std::vector<Vertex> extreme_vertices(const Surface_mesh& mesh, const std::vector<K::Vector_3>& dirs)
+{
+  std::vector<Vertex> out;
+  for(const auto& d : dirs) {
+    Vertex best;
+    double bd = -1e300;
+    for(auto v : vertices(mesh)) {
+      const double x = (mesh.point(v) - CGAL::ORIGIN) * d;
+      if(x > bd && std::find(out.begin(), out.end(), v) == out.end()) { bd = x; best = v; }
+    }
+    out.push_back(best);
+  }
+  return out;
+}
+
+typedef Surface_mesh::Property_map<Surface_mesh::Edge_index, double> Lengths;
+
+// Flat cone metric with the given cone curvatures, on the input triangulation.
+bool flat_cone_metric(const Surface_mesh& mesh, const std::vector<std::pair<Vertex, double>>& cones, Lengths& out,
+                      const std::string& name)
+{
+  auto K_target = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+  for(auto v : vertices(mesh)) put(K_target, v, 0.);
+  for(const auto& c : cones) put(K_target, c.first, c.second);
+  const auto st = SMDF::compute_cone_metric(mesh, K_target, out, SMDF::parameters::intrinsic_edge_flips(false));
+  SMDF_CHECK_MSG(st.converged, name << ": flat cone metric on the input triangulation: " << st.message);
+  return st.converged;
+}
+
+// Invariants of every basis and group: loop count, based loops, rotations of the cone loops
+// equal to the cone curvatures mod 2 pi, cone loops fixing their cone, handle loops with the
+// rotation of their un-based generator (homotopic loops have the same holonomy).
+void check_group(const Surface_mesh& mesh, const SMDF::Homotopy_basis<Surface_mesh>& b, const SMDF::Holonomy_group& g,
+                 const std::map<Vertex, double>& curv, const Lengths& metric, const std::string& name)
+{
+  const auto topo = SMDF::mesh_topology(mesh);
+  const long genus = topo.components[0].genus, bl = long(topo.boundary_loops.size()), n = long(b.cones.size());
+  const long expected = 2 * genus + (bl > 0 ? bl - 1 + n : (n > 0 ? n - 1 : 0));
+  SMDF_CHECK_MSG(long(b.loops.size()) == expected, name << ": " << b.loops.size() << " loops, expected 2g + b - 1 + n (closed: 2g + n - 1) = " << expected);
+  SMDF_CHECK_MSG(loops_are_based(mesh, b), name << ": every loop leaves and enters the base face");
+  SMDF::Intrinsic_holonomy<Surface_mesh> hol(mesh, SMDF::parameters::edge_length_map(metric));
+  const auto gens = hol.tree_cotree_generators();
+  double scale = 0;
+  for(const auto& p : g.cone_positions) scale = std::max(scale, std::abs(p.x()) + std::abs(p.y()));
+  for(std::size_t i = 0; i < b.loops.size(); ++i) {
+    const auto& l = b.loops[i];
+    if(l.kind == SMDF::CONE_LOOP) {
+      const double k = curv.at(l.cone);
+      const double d = std::abs(std::remainder(g.rotations[i] - k, 2 * M_PI));
+      const std::size_t ci = std::size_t(std::find(b.cones.begin(), b.cones.end(), l.cone) - b.cones.begin());
+      const SMDF::Point_2 p = g.cone_positions[ci], q = g.motions[i](p);
+      SMDF_CHECK_MSG(d < 1e-8, name << ", cone loop " << i << ": rotation " << g.rotations[i] << " = curvature " << k << " mod 2 pi");
+      SMDF_CHECK_MSG(std::hypot(q.x() - p.x(), q.y() - p.y()) < 1e-8 * (1 + scale), name << ", cone loop " << i << ": its motion fixes the developed cone");
+    } else {
+      const double d = std::abs(std::remainder(g.rotations[i] - hol.levi_civita_holonomy(gens[l.generator].dual_cycle), 2 * M_PI));
+      SMDF_CHECK_MSG(d < 1e-8, name << ", loop " << i << ": the same rotation as its generator away from the base face");
+    }
+  }
+}
+
+void genus_zero(Surface_mesh& spot)
+{
+  // Corollary 3.3: cube-like (8 cones of pi/2) -> 4-RoSy; octahedron-like (6 of 2 pi/3) -> 3-RoSy
+  const std::vector<K::Vector_3> cube = {{1, 1, 1}, {1, 1, -1}, {1, -1, 1}, {1, -1, -1}, {-1, 1, 1}, {-1, 1, -1}, {-1, -1, 1}, {-1, -1, -1}};
+  const std::vector<K::Vector_3> octa = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  struct Case { const char* name; const std::vector<K::Vector_3>* dirs; double curvature; int order; };
+  for(const Case& c : {Case{"spot, 8 cones of pi/2", &cube, M_PI / 2, 4}, Case{"spot, 6 cones of 2 pi/3", &octa, 2 * M_PI / 3, 3}}) {
+    const std::vector<Vertex> cones = extreme_vertices(spot, *c.dirs);
+    std::vector<std::pair<Vertex, double>> target;
+    std::map<Vertex, double> curv;
+    for(Vertex v : cones) { target.emplace_back(v, c.curvature); curv[v] = c.curvature; }
+    Lengths flat = spot.add_property_map<Surface_mesh::Edge_index, double>("e:flat_test", 0).first;
+    if(flat_cone_metric(spot, target, flat, c.name)) {
+      const auto b = SMDF::homotopy_basis(spot, cones);
+      const SMDF::Holonomy_group g = SMDF::holonomy_group(spot, b, SMDF::parameters::edge_length_map(flat));
+      check_group(spot, b, g, curv, flat, c.name);
+      SMDF_CHECK_MSG(SMDF::smallest_parallel_rosy_order(g) == c.order, c.name << ": smallest parallel N-RoSy order " << SMDF::smallest_parallel_rosy_order(g));
+      const auto r = SMDF::parallel_rosy_compatibility(g, c.order + 1);
+      SMDF_CHECK_MSG(!r.compatible && !r.failing_loops.empty(), c.name << ": not " << c.order + 1 << "-RoSy, failing loops named");
+      // on the embedding, the cone loops turn by the angle defect
+      const SMDF::Holonomy_group ge = SMDF::holonomy_group(spot, b);
+      bool ok = true;
+      for(std::size_t i = 0; i < b.loops.size(); ++i)
+        ok = ok && std::abs(std::remainder(ge.rotations[i] - SMDF::angle_defect(b.loops[i].cone, spot), 2 * M_PI)) < 1e-9;
+      SMDF_CHECK_MSG(ok, c.name << ": on the embedding, each cone loop turns by its cone's angle defect");
+    }
+    spot.remove_property_map(flat);
+  }
+}
+
+void genus_three(const Surface_mesh& input, const std::string& name)
+{
+  // Figure 9 of Lai et al.: four cones of -pi, -3 pi, -2 pi, -2 pi (sum 2 pi chi = -8 pi). The
+  // flow may flip edges: the metric then lives on an intrinsic triangulation, copied into a
+  // Surface_mesh with its lengths (same vertices), on which the basis and the group are computed.
+  const std::vector<Vertex> cones = extreme_vertices(input, {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}});
+  const double Ks[4] = {-M_PI, -3 * M_PI, -2 * M_PI, -2 * M_PI};
+  auto K_target = get(CGAL::dynamic_vertex_property_t<double>(), input);
+  for(auto v : vertices(input)) put(K_target, v, 0.);
+  std::map<Vertex, double> curv;
+  for(int i = 0; i < 4; ++i) { put(K_target, cones[std::size_t(i)], Ks[i]); curv[cones[std::size_t(i)]] = Ks[i]; }
+  auto out = get(CGAL::dynamic_edge_property_t<double>(), input);
+  const auto st = SMDF::compute_cone_metric(input, K_target, out);
+  SMDF_CHECK_MSG(st.converged, name << ": flat cone metric: " << st.message);
+  if(!st.converged) return;
+  Surface_mesh mesh;
+  Lengths flat = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:flat_test", 0).first;
+  if(st.triangulation_changed) {
+    SMDF::copy_intrinsic_triangulation(st.intrinsic_triangulation, input, mesh, flat);
+  } else {
+    mesh = input;
+    flat = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:flat_test", 0).first;
+    for(auto e : edges(mesh)) flat[e] = get(out, e);
+  }
+  const auto b = SMDF::homotopy_basis(mesh, cones);   // same vertex indices as the input
+  const SMDF::Holonomy_group g = SMDF::holonomy_group(mesh, b, SMDF::parameters::edge_length_map(flat));
+  check_group(mesh, b, g, curv, flat, name + (st.triangulation_changed ? " (intrinsic triangulation)" : ""));
+  std::cout << name << ": holonomy group of the flat cone metric with cones -pi, -3pi, -2pi, -2pi"
+            << (st.triangulation_changed ? " (on its intrinsic triangulation)" : "") << "\n";
+  for(std::size_t i = 0; i < b.loops.size(); ++i)
+    std::cout << "  loop " << i << " (" << (b.loops[i].kind == SMDF::CONE_LOOP ? "cone" : "handle") << "): rotation "
+              << std::fixed << std::setprecision(4) << g.rotations[i] / M_PI << " pi, translation ("
+              << g.motions[i].translation.x() << ", " << g.motions[i].translation.y() << ")\n" << std::defaultfloat;
+  const auto sq = SMDF::tessellation_compatibility(g, SMDF::SQUARE_GRID);
+  std::cout << "  smallest parallel N-RoSy order: " << SMDF::smallest_parallel_rosy_order(g) << "; square grid: "
+            << (sq.compatible ? "compatible" : "not compatible") << " (" << sq.failing_loops.size() << " loops fail)\n";
+  SMDF_CHECK(!sq.compatible);   // the handle loops of an uncompensated metric turn by arbitrary angles
+}
+
+void bad_input()
+{
+  Surface_mesh cyl;
+  smdf_test::soup_to_mesh(smdf_test::cylinder_soup(20, 6), cyl);
+  const Vertex border(0), inner(2 * 1 + 3);
+  auto throws = [](auto f) { try { f(); } catch(const SMDF::Input_error& e) { return e.kind() == SMDF::Input_error::INVALID_ARGUMENT; } return false; };
+  SMDF_CHECK(throws([&] { SMDF::homotopy_basis(cyl, std::vector<Vertex>{border}); }));
+  SMDF_CHECK(throws([&] { SMDF::homotopy_basis(cyl, std::vector<Vertex>{Vertex(8), Vertex(8)}); }));
+  SMDF_CHECK(throws([&] { SMDF::homotopy_basis(cyl, std::vector<Vertex>{Vertex(100000)}); }));
+  Flat_torus t;
+  make_flat_torus(t, 30, 20, {1, 0}, {0, 1});
+  SMDF_CHECK(throws([&] { SMDF::parallel_rosy_compatibility(SMDF::Holonomy_group(), 0); }));
+  // an annulus with two cones: 2g + b - 1 + n = 0 + 1 + 2 loops
+  const auto b = SMDF::homotopy_basis(cyl, std::vector<Vertex>{Vertex(6 * 5 + 2), Vertex(6 * 12 + 3)});
+  SMDF_CHECK_MSG(b.loops.size() == 3 && loops_are_based(cyl, b), "annulus with two cones: " << b.loops.size() << " loops");
+  (void)inner;
+  // two components
+  smdf_test::Soup a = smdf_test::torus_soup(12, 8), c = smdf_test::torus_soup(12, 8);
+  const std::size_t off = a.points.size();
+  for(auto p : c.points) { p[0] += 10; a.points.push_back(p); }
+  for(auto f : c.faces) { for(auto& v : f) v += off; a.faces.push_back(f); }
+  Surface_mesh two;
+  smdf_test::soup_to_mesh(a, two);
+  SMDF_CHECK(throws([&] { SMDF::homotopy_basis(two, std::vector<Vertex>()); }));
+  // Polyhedron_3: a torus with two cones, 2 + 1 loops
+  Polyhedron p;
+  smdf_test::soup_to_mesh(smdf_test::torus_soup(30, 20), p);
+  std::vector<Polyhedron::Vertex_handle> pc = {std::next(p.vertices_begin(), 5), std::next(p.vertices_begin(), 300)};
+  const auto pb = SMDF::homotopy_basis(p, pc);
+  SMDF_CHECK_MSG(pb.loops.size() == 3 && loops_are_based(p, pb), "Polyhedron_3 torus with two cones: " << pb.loops.size() << " loops");
+  const SMDF::Holonomy_group pg = SMDF::holonomy_group(p, pb);
+  SMDF_CHECK(pg.motions.size() == 3 && pg.cone_positions.size() == 2);
+}
+
+} // namespace
+
+int main()
+{
+  flat_tori();
+  bad_input();
+  const std::string dir = smdf_test::shared_data_dir();
+  if(dir.empty()) {
+    std::cout << "../shared/data not found: shared-mesh checks skipped" << std::endl;
+    return smdf_test::finish();
+  }
+  Surface_mesh spot, g3;
+  SMDF::read_triangle_mesh(dir + "/meshes/spot_c3d.obj", spot);
+  genus_zero(spot);
+  SMDF::read_triangle_mesh(dir + "/meshes/genus3_vhacd.off", g3);
+  genus_three(g3, "genus3_vhacd.off");
+  return smdf_test::finish();
+}
