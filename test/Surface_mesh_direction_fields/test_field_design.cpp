@@ -238,6 +238,56 @@ void genus_three(const Surface_mesh& input, const std::string& name)
   SMDF_CHECK(!sq.compatible);   // the handle loops of an uncompensated metric turn by arbitrary angles
 }
 
+
+// The parallel N-RoSy field of a genus-0 flat cone metric (Corollary 3.3): read back on the
+// metric, its singularities are exactly the cones with index K / 2 pi; it is the field of the
+// trivial connection computed on the same metric with those indices (the adjustment angles
+// vanish, DESIGN.md section 5); on the order below the smallest one the status fails.
+void parallel_field(Surface_mesh& spot, const std::vector<std::pair<Vertex, double>>& cones, int N, const std::string& name)
+{
+  Lengths flat = spot.add_property_map<Surface_mesh::Edge_index, double>("e:flat_parallel", 0).first;
+  if(flat_cone_metric(spot, cones, flat, name)) {
+    auto angles = get(CGAL::dynamic_face_property_t<double>(), spot);
+    const SMDF::Parallel_rosy_status st = SMDF::parallel_rosy_field(spot, N, angles, SMDF::parameters::edge_length_map(flat));
+    SMDF_CHECK_MSG(st.success && st.max_deviation < 1e-8, name << ": parallel " << N << "-RoSy field, deviation " << st.max_deviation << " " << st.message);
+    const auto ft = SMDF::field_singularities(spot, angles, SMDF::parameters::symmetry_order(N).edge_length_map(flat));
+    std::map<Vertex, double> got(ft.singularities.begin(), ft.singularities.end()), want;
+    for(const auto& c : cones) want[c.first] = std::round(c.second / (2 * M_PI) * N) / N;
+    SMDF_CHECK_MSG(got == want, name << ": read back on the metric, the singularities are the " << want.size() << " cones (found " << got.size() << ")");
+    // the trivial connection on the same metric, with indices K / 2 pi: the same field
+    SMDF::Trivial_connection<Surface_mesh> tc(spot, SMDF::parameters::symmetry_order(N).edge_length_map(flat));
+    for(const auto& c : cones) tc.set_singularity(c.first, want[c.first]);
+    const auto tst = tc.solve();
+    auto tangles = get(CGAL::dynamic_face_property_t<double>(), spot);
+    tc.field_angles_from(*faces(spot).begin(), 0., tangles);
+    double diff = 0;
+    for(auto f : faces(spot)) diff = std::max(diff, std::abs(std::remainder(get(angles, f) - get(tangles, f), 2 * M_PI / N)));
+    SMDF_CHECK_MSG(tst.success && tst.max_rotation < 1e-9 && diff < 1e-8,
+                   name << ": equals the trivial connection's field on the metric (max |x| " << tst.max_rotation << ", angle difference " << diff << ")");
+    // the field in 3D, read back on the embedding by principal matching: the cones again
+    auto vectors = get(CGAL::dynamic_face_property_t<K::Vector_3>(), spot);
+    SMDF::field_angles_to_vectors(spot, angles, vectors, SMDF::parameters::edge_length_map(flat));
+    auto embedded = get(CGAL::dynamic_face_property_t<double>(), spot);
+    for(auto f : faces(spot)) {
+      const auto h = halfedge(f, spot);
+      const K::Vector_3 e1 = spot.point(target(h, spot)) - spot.point(source(h, spot));
+      const K::Vector_3 n = CGAL::cross_product(e1, spot.point(target(next(h, spot), spot)) - spot.point(source(h, spot)));
+      const K::Vector_3 e2 = CGAL::cross_product(n, e1);
+      const K::Vector_3 v = get(vectors, f);
+      put(embedded, f, std::atan2(v * e2 / std::sqrt(e2.squared_length()), v * e1 / std::sqrt(e1.squared_length())));
+    }
+    const auto fe = SMDF::field_singularities(spot, embedded, SMDF::parameters::symmetry_order(N));
+    std::map<Vertex, double> got_e(fe.singularities.begin(), fe.singularities.end());
+    std::cout << name << ": on the embedding, principal matching reads " << got_e.size() << " singularities ("
+              << (got_e == want ? "the cones" : "not only the cones") << ")" << std::endl;
+    if(N > 1) {
+      const SMDF::Parallel_rosy_status bad = SMDF::parallel_rosy_field(spot, N - 1, angles, SMDF::parameters::edge_length_map(flat));
+      SMDF_CHECK_MSG(!bad.success && bad.inconsistent_edges > 0 && !bad.message.empty(), name << ": no parallel " << N - 1 << "-RoSy field");
+    }
+  }
+  spot.remove_property_map(flat);
+}
+
 void bad_input()
 {
   Surface_mesh cyl;
@@ -286,6 +336,20 @@ int main()
   Surface_mesh spot, g3;
   SMDF::read_triangle_mesh(dir + "/meshes/spot_c3d.obj", spot);
   genus_zero(spot);
+  {
+    const std::vector<Vertex> corners = extreme_vertices(spot, {{1, 1, 1}, {1, 1, -1}, {1, -1, 1}, {1, -1, -1}, {-1, 1, 1}, {-1, 1, -1}, {-1, -1, 1}, {-1, -1, -1}});
+    std::vector<std::pair<Vertex, double>> cube, octa, obelisk;
+    for(Vertex v : corners) cube.emplace_back(v, M_PI / 2);
+    parallel_field(spot, cube, 4, "spot, cube-like metric");
+    for(Vertex v : extreme_vertices(spot, {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}})) octa.emplace_back(v, 2 * M_PI / 3);
+    parallel_field(spot, octa, 3, "spot, octahedron-like metric");
+    // the obelisk of Lai et al. (Figure 1c): a box part (four cones of pi/2 at its base), a
+    // pyramid (four of pi/3 and its apex of 2 pi/3): a 12-RoSy field
+    const std::vector<Vertex> ob = extreme_vertices(spot, {{1, -1, 1}, {1, -1, -1}, {-1, -1, 1}, {-1, -1, -1},
+                                                           {1, 0.5, 1}, {1, 0.5, -1}, {-1, 0.5, 1}, {-1, 0.5, -1}, {0, 1, 0}});
+    for(int i = 0; i < 9; ++i) obelisk.emplace_back(ob[std::size_t(i)], i < 4 ? M_PI / 2 : i < 8 ? M_PI / 3 : 2 * M_PI / 3);
+    parallel_field(spot, obelisk, 12, "spot, obelisk metric");
+  }
   SMDF::read_triangle_mesh(dir + "/meshes/genus3_vhacd.off", g3);
   genus_three(g3, "genus3_vhacd.off");
   return smdf_test::finish();

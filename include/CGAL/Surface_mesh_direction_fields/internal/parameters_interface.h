@@ -9,6 +9,7 @@ CGAL_SMDF_add_named_parameter(generator_turning_numbers_t, generator_turning_num
 CGAL_SMDF_add_named_parameter(solver_t, solver, solver)
 CGAL_SMDF_add_named_parameter(cotangent_clamp_t, cotangent_clamp, cotangent_clamp)
 CGAL_SMDF_add_named_parameter(cotangent_cap_t, cotangent_cap, cotangent_cap)
+CGAL_SMDF_add_named_parameter(holonomy_tolerance_t, holonomy_tolerance, holonomy_tolerance)
 CGAL_SMDF_add_named_parameter(conformal_factor_t, conformal_factor, conformal_factor_map)
 CGAL_SMDF_add_named_parameter(curvature_tolerance_t, curvature_tolerance, curvature_tolerance)
 CGAL_SMDF_add_named_parameter(singularity_index_t, singularity_index, singularity_index_map)
