@@ -393,6 +393,39 @@ def test_torus(smdf, c, torus, tmp):
     test_connection(smdf, c, torus, tmp, verts, faces)
     test_svg(smdf, c, torus, tmp, faces)
     test_cone_metric(smdf, c, torus, tmp, verts, faces)
+    test_rosy(smdf, c, torus, tmp)
+
+
+# ---- rosy ---------------------------------------------------------------------------------------
+
+def test_rosy(smdf, c, torus, tmp):
+    """smdf rosy on the shipped Spot (cube-like metric: a parallel cross field whose read-back
+    is the eight cones), on the torus (flat: a parallel vector field), and its failures."""
+    spot = os.path.join(os.path.dirname(torus), "spot.off")
+    corners = [2202, 1077, 2587, 1488, 2221, 1090, 533, 248]
+    cones = ",".join("%d:pi/2" % v for v in corners)
+    svg = os.path.join(tmp, "spot_rosy.svg")
+    r = smdf.json(["rosy", spot, "--cones", cones, "--svg", svg], "smdf rosy spot, 8 cones of pi/2")
+    if r:
+        c.check(r.get("smallest_parallel_order") == 4 and r.get("N") == 4, "rosy: smallest order 4 (%r)" % r.get("smallest_parallel_order"))
+        c.check(len(r.get("holonomy", [])) == 7 and all(l["kind"] == "cone" for l in r["holonomy"]),
+                "rosy: 7 cone loops on the sphere (2g + n - 1)")
+        c.check(all(abs(l["rotation_over_pi"] - 0.5) < 1e-8 for l in r["holonomy"]), "rosy: every cone loop turns by pi/2")
+        c.check(sorted(f["vertex"] for f in r.get("found", [])) == sorted(corners)
+                and all(f["index"] == 0.25 for f in r["found"]), "rosy: found == the cones with index 1/4")
+        c.check(r.get("success") is True and r["parallel_rosy"]["compatible"], "rosy: success")
+        c.check(os.path.getsize(svg) > 1000, "rosy: --svg written")
+    r = smdf.json(["rosy", torus], "smdf rosy torus (flat metric)")
+    c.check(r is not None and r.get("N") == 1 and r.get("found") == [] and len(r.get("holonomy", [])) == 2
+            and r["square_grid"]["max_rotation_deviation"] < 1e-8, "rosy torus: two handle loops, parallel vector field")
+    rc, out, err = smdf.run(["rosy", spot, "--cones", cones, "--N", "3"])
+    lines = err.decode("utf-8", "replace").splitlines()
+    c.check(rc == 3 and json.loads(out.decode()).get("success") is False and len(lines) == 1 and "3-RoSy" in lines[0],
+            "rosy --N 3 on a cube-like metric: exit 3, the failing loops named (%r)" % lines)
+    smdf.error(["rosy", spot, "--cones", "99999:pi/2"], "rosy: cone out of range", 1, "does not exist")
+    smdf.error(["rosy", spot, "--cones", "0:2pi,1:0"], "rosy: cone of index 1", 1, "index 1 or more")
+    smdf.error(["rosy", spot, "--cones", "0:pi/2"], "rosy: Gauss-Bonnet", 1, "[inconsistent_indices]")
+    smdf.error(["rosy", spot, "--cones", "0:pi/2,0:pi/2"], "rosy: cone given twice", 1, "twice")
 
 
 # ---- connection / singularities ---------------------------------------------------------------
@@ -691,6 +724,7 @@ def test_shared_robustness(smdf, c, meshes, tmp):
                 ["connection", path, "--N", "4", "--field-out", field], ["connection", path, "--weights", "cotan"]]
         if small:
             runs.append(["cone-metric", path])
+            runs.append(["rosy", path])
         for args in runs:
             rc, out, err = smdf.run(args)
             if not outcome_ok(rc, out, err):
@@ -703,7 +737,7 @@ def test_shared_robustness(smdf, c, meshes, tmp):
                     bad += 1
                     c.check(False, "smdf singularities %s on its own field: exit 0 (rc=%s, stderr=%r)" % (name, rc, err[:200]))
     c.check(bad == 0, "every subcommand (info, generators, holonomy, connection N = 1 and 4, singularities on "
-            "the field written, cone-metric) on all %d shared meshes ends cleanly" % len(names))
+            "the field written, cone-metric, rosy) on all %d shared meshes ends cleanly" % len(names))
     # truncated copies of real files and random bytes, in every format
     sources = [n for n in ("spot_c3d.obj", "double-torus_jnd.off", "mushroom_cgal.off", "bob_small_gc.off",
                            "soup_trimesh.off") if n in names]

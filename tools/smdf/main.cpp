@@ -63,6 +63,7 @@ const std::vector<Command>& commands()
     connection_command(),
     singularities_command(),
     cone_metric_command(),
+    rosy_command(),
   };
   return table;
 }
