@@ -288,6 +288,80 @@ void parallel_field(Surface_mesh& spot, const std::vector<std::pair<Vertex, doub
   spot.remove_property_map(flat);
 }
 
+
+// Editing (Lai et al. 4.2) of a cross field of Spot with eight +1/4 singularities: hard direction
+// constraints met to 1e-12, new values without refactoring, soft ones approached monotonically
+// as the weight grows, lengths within the range of their constraints (maximum principle), and
+// the read-back with the field's matching identical to the prescription after every edit.
+void editing(const Surface_mesh& spot)
+{
+  typedef Surface_mesh::Face_index Face;
+  const std::vector<Vertex> corners = extreme_vertices(spot, {{1, 1, 1}, {1, 1, -1}, {1, -1, 1}, {1, -1, -1}, {-1, 1, 1}, {-1, 1, -1}, {-1, -1, 1}, {-1, -1, -1}});
+  SMDF::Trivial_connection<Surface_mesh> tc(spot, SMDF::parameters::symmetry_order(4));
+  std::map<Vertex, double> want;
+  for(Vertex v : corners) { tc.set_singularity(v, 0.25); want[v] = 0.25; }
+  SMDF_CHECK(tc.solve().success);
+  auto field = get(CGAL::dynamic_face_property_t<double>(), spot);
+  tc.field_angles(field);
+  auto read_back = [&](const auto& angles, const std::string& what) {
+    auto matching = get(CGAL::dynamic_edge_property_t<int>(), spot);
+    tc.field_matching(angles, matching);
+    const auto ft = SMDF::field_singularities(spot, angles, SMDF::parameters::symmetry_order(4).matching(matching));
+    std::map<Vertex, double> got(ft.singularities.begin(), ft.singularities.end());
+    SMDF_CHECK_MSG(got == want, "editing, " << what << ": the read-back with the field's matching is the prescription (" << got.size() << " found)");
+  };
+  read_back(field, "before");
+  SMDF::Rosy_field_editor<Surface_mesh> editor(spot, 4, field);
+  const std::vector<Face> cf = {Face(100), Face(2500), Face(4700)};
+  std::vector<std::pair<Face, double>> c;
+  for(std::size_t i = 0; i < cf.size(); ++i) c.emplace_back(cf[i], 0.3 + 1.1 * double(i));
+  editor.set_direction_constraints(c);
+  auto edited = get(CGAL::dynamic_face_property_t<double>(), spot);
+  for(int round = 0; round < 2; ++round) {   // round 1: new values, same faces
+    const SMDF::Field_edit_status st = editor.edit();
+    SMDF_CHECK_MSG(st.success && st.max_direction_error <= 1e-12, "hard direction constraints: error " << st.max_direction_error);
+    if(round == 1) SMDF_CHECK_MSG(st.factor_seconds == 0, "new constraint values reuse the factorisation");
+    editor.field_angles(edited);
+    read_back(edited, round == 0 ? "after a hard edit" : "after new values");
+    for(auto& p : c) p.second += 0.7;
+    editor.set_direction_constraints(c);
+  }
+  double last = 1e300;
+  bool monotone = true;
+  for(double lambda : {0.01, 0.1, 1., 10., 100.}) {
+    editor.set_direction_constraints(c, lambda);
+    const SMDF::Field_edit_status st = editor.edit();
+    monotone = monotone && st.success && st.max_direction_error < last;
+    last = st.max_direction_error;
+    editor.field_angles(edited);
+    read_back(edited, "after a soft edit, weight " + std::to_string(lambda));
+  }
+  SMDF_CHECK_MSG(monotone && last < 0.05, "soft direction constraints approached monotonically (error " << last << " at weight 100)");
+  // lengths: hard, then soft
+  const std::vector<std::pair<Face, double>> lc = {{Face(10), 0.5}, {Face(3000), 2.0}};
+  editor.set_length_constraints(lc);
+  SMDF::Field_edit_status st = editor.edit();
+  auto lengths = get(CGAL::dynamic_face_property_t<double>(), spot);
+  editor.field_lengths(lengths);
+  double lo = 1e300, hi = 0;
+  for(auto f : faces(spot)) { lo = std::min(lo, get(lengths, f)); hi = std::max(hi, get(lengths, f)); }
+  SMDF_CHECK_MSG(st.success && st.max_length_error <= 1e-12 && lo >= 0.5 * (1 - 1e-12) && hi <= 2.0 * (1 + 1e-12),
+                 "hard length constraints: error " << st.max_length_error << ", lengths in [" << lo << ", " << hi << "]");
+  last = 1e300;
+  monotone = true;
+  for(double lambda : {0.01, 1., 100.}) {
+    editor.set_length_constraints(lc, lambda);
+    st = editor.edit();
+    monotone = monotone && st.success && st.max_length_error < last;
+    last = st.max_length_error;
+  }
+  SMDF_CHECK_MSG(monotone, "soft length constraints approached monotonically (error " << last << ")");
+  auto throws = [](auto f) { try { f(); } catch(const SMDF::Input_error&) { return true; } return false; };
+  SMDF_CHECK(throws([&] { editor.set_direction_constraints(std::vector<std::pair<Face, double>>{{Face(1), 0.}, {Face(1), 1.}}); }));
+  SMDF_CHECK(throws([&] { editor.set_direction_constraints(std::vector<std::pair<Face, double>>{{Face(1), 0.}}, -1.); }));
+  SMDF_CHECK(throws([&] { editor.set_length_constraints(std::vector<std::pair<Face, double>>{{Face(1), 0.}}); }));
+}
+
 void bad_input()
 {
   Surface_mesh cyl;
@@ -350,6 +424,7 @@ int main()
     for(int i = 0; i < 9; ++i) obelisk.emplace_back(ob[std::size_t(i)], i < 4 ? M_PI / 2 : i < 8 ? M_PI / 3 : 2 * M_PI / 3);
     parallel_field(spot, obelisk, 12, "spot, obelisk metric");
   }
+  editing(spot);
   SMDF::read_triangle_mesh(dir + "/meshes/genus3_vhacd.off", g3);
   genus_three(g3, "genus3_vhacd.off");
   return smdf_test::finish();
