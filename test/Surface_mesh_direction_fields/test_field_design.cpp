@@ -362,6 +362,79 @@ void editing(const Surface_mesh& spot)
   SMDF_CHECK(throws([&] { editor.set_length_constraints(std::vector<std::pair<Face, double>>{{Face(1), 0.}}); }));
 }
 
+
+// Rotation compensation (Lai et al. 4.1.3.1) on a flat cone metric of genus > 0 whose cone
+// curvatures are multiples of 2 pi / N: the field is an N-RoSy field across every edge, its
+// face version read back on the metric has exactly the cones as singularities, the 1-form is
+// harmonic, and the trivial connection computed on the same metric with cotan weights, the
+// cone indices and the turning numbers read from this field has the same read-back.
+template <typename LengthMap>
+void compensated(const Surface_mesh& mesh, const LengthMap& flat, const std::map<Vertex, double>& cones, int N, const std::string& name)
+{
+  auto va = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+  auto fa = get(CGAL::dynamic_face_property_t<double>(), mesh);
+  const auto np = SMDF::parameters::edge_length_map(flat);
+  const SMDF::Rotation_compensation_status st = SMDF::rotation_compensated_field(mesh, N, va, fa, np);
+  SMDF_CHECK_MSG(st.success && st.max_inconsistency < 1e-8 && st.max_harmonic_residual < 1e-8,
+                 name << ": compensated " << N << "-RoSy field, inconsistency " << st.max_inconsistency << ", harmonic residual "
+                      << st.max_harmonic_residual << " " << st.message);
+  bool periods_ok = !st.periods.empty();
+  for(std::size_t i = 0; i < st.periods.size(); ++i)
+    periods_ok = periods_ok && std::abs(std::remainder(st.holonomy[i] + st.periods[i], 2 * M_PI / N)) < 1e-12 && std::abs(st.periods[i]) <= M_PI / N + 1e-12;
+  SMDF_CHECK_MSG(periods_ok, name << ": every handle loop's holonomy plus its period is a multiple of 2 pi / N");
+  const auto ft = SMDF::field_singularities(mesh, fa, SMDF::parameters::symmetry_order(N).edge_length_map(flat));
+  std::map<Vertex, double> got(ft.singularities.begin(), ft.singularities.end()), want;
+  for(const auto& c : cones) want[c.first] = std::round(c.second / (2 * M_PI) * N) / N;
+  SMDF_CHECK_MSG(got == want, name << ": the face field read back on the metric has exactly the " << want.size() << " cones (found " << got.size() << ")");
+  // the trivial connection on the same metric, cotan weights (harmonic in the same sense)
+  SMDF::Trivial_connection<Surface_mesh> tc(mesh, SMDF::parameters::symmetry_order(N).edge_length_map(flat).connection_weights(SMDF::COTAN_WEIGHTS));
+  for(const auto& c : want) tc.set_singularity(c.first, c.second);
+  for(std::size_t g = 0; g < ft.generator_turning_numbers.size(); ++g) tc.set_generator_turning_number(g, ft.generator_turning_numbers[g]);
+  const auto ts = tc.solve();
+  auto ta = get(CGAL::dynamic_face_property_t<double>(), mesh);
+  tc.field_angles_from(*faces(mesh).begin(), get(fa, *faces(mesh).begin()), ta);
+  const auto tt = SMDF::field_singularities(mesh, ta, SMDF::parameters::symmetry_order(N).edge_length_map(flat));
+  std::map<Vertex, double> tgot(tt.singularities.begin(), tt.singularities.end());
+  double diff = 0;
+  for(auto f : faces(mesh)) diff = std::max(diff, std::abs(std::remainder(get(fa, f) - get(ta, f), 2 * M_PI / N)));
+  SMDF_CHECK_MSG(ts.success && tgot == want && tt.generator_turning_numbers == ft.generator_turning_numbers,
+                 name << ": the trivial connection with the same indices and turning numbers reads back the same");
+  std::cout << name << ": compensated field, " << st.periods.size() << " handle loops; largest angle difference to the trivial "
+            << "connection's field " << diff << " rad (primal and dual harmonic forms)" << std::endl;
+}
+
+void rotation_compensation(const Surface_mesh& g3)
+{
+  {   // a torus with cones of +pi/2 and -pi/2: a cross field
+    Surface_mesh torus;
+    smdf_test::soup_to_mesh(smdf_test::torus_soup(40, 24), torus);
+    std::map<Vertex, double> cones = {{Vertex(17), M_PI / 2}, {Vertex(500), -M_PI / 2}};
+    auto K_target = get(CGAL::dynamic_vertex_property_t<double>(), torus);
+    for(auto v : vertices(torus)) put(K_target, v, cones.count(v) ? cones[v] : 0.);
+    auto flat = get(CGAL::dynamic_edge_property_t<double>(), torus);
+    const auto cm = SMDF::compute_cone_metric(torus, K_target, flat, SMDF::parameters::intrinsic_edge_flips(false));
+    SMDF_CHECK_MSG(cm.converged, "torus with two cones: " << cm.message);
+    if(cm.converged) compensated(torus, flat, cones, 4, "torus with cones +-pi/2");
+  }
+  {   // the genus-3 metric of the holonomy table: cones multiples of pi, a line field
+    const std::vector<Vertex> cv = extreme_vertices(g3, {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}});
+    const double Ks[4] = {-M_PI, -3 * M_PI, -2 * M_PI, -2 * M_PI};
+    auto K_target = get(CGAL::dynamic_vertex_property_t<double>(), g3);
+    for(auto v : vertices(g3)) put(K_target, v, 0.);
+    std::map<Vertex, double> cones;
+    for(int i = 0; i < 4; ++i) { put(K_target, cv[std::size_t(i)], Ks[i]); cones[cv[std::size_t(i)]] = Ks[i]; }
+    auto out = get(CGAL::dynamic_edge_property_t<double>(), g3);
+    const auto cm = SMDF::compute_cone_metric(g3, K_target, out);
+    if(cm.converged) {
+      Surface_mesh mesh;
+      Lengths flat = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:flat_rc", 0).first;
+      if(cm.triangulation_changed) SMDF::copy_intrinsic_triangulation(cm.intrinsic_triangulation, g3, mesh, flat);
+      else { mesh = g3; flat = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:flat_rc", 0).first; for(auto e : edges(mesh)) flat[e] = get(out, e); }
+      compensated(mesh, flat, cones, 2, "genus3_vhacd.off, cones -pi, -3pi, -2pi, -2pi");
+    }
+  }
+}
+
 void bad_input()
 {
   Surface_mesh cyl;
@@ -427,5 +500,6 @@ int main()
   editing(spot);
   SMDF::read_triangle_mesh(dir + "/meshes/genus3_vhacd.off", g3);
   genus_three(g3, "genus3_vhacd.off");
+  rotation_compensation(g3);
   return smdf_test::finish();
 }

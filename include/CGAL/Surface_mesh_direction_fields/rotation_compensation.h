@@ -1,0 +1,293 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_ROTATION_COMPENSATION_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_ROTATION_COMPENSATION_H
+
+// Rotation compensation (Lai et al. 2010, section 4.1.3.1): on a flat cone metric of genus
+// g > 0 whose cone curvatures are multiples of 2 pi / N, a vertex-based N-RoSy field that is
+// parallel up to a harmonic 1-form whose periods cancel the holonomy of the handle loops.
+
+#include <CGAL/Surface_mesh_direction_fields/Cholmod_cholesky.h>
+#include <CGAL/Surface_mesh_direction_fields/Intrinsic_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/errors.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/development.h>
+
+#include <Eigen/Dense>
+#include <Eigen/SparseCore>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsFieldDesign
+/// Outcome of rotation_compensated_field().
+struct Rotation_compensation_status
+{
+  /// the field is an N-RoSy field across every edge (up to the tolerance), so that its only
+  /// singularities are the cones
+  bool success = false;
+  std::string message;                ///< empty on success
+  int N = 1;
+  /// per handle loop (the primal loops of the tree-cotree handle generators, in their order):
+  /// the Levi-Civita holonomy of the metric along it, in \f$(-\pi, \pi]\f$
+  std::vector<double> holonomy;
+  /// per handle loop: the period \f$\int_\gamma \omega\f$ of the compensating 1-form, the
+  /// multiple of \f$2\pi/N\f$ nearest to \f$-h(\gamma)\f$ minus \f$h(\gamma)\f$ (so the field turns
+  /// by a multiple of \f$2\pi/N\f$ relative to parallel transport)
+  std::vector<double> periods;
+  /// largest residual of the harmonic 1-form: its sum around a face (closedness) or its
+  /// cotan-weighted divergence at a vertex (co-closedness)
+  double max_harmonic_residual = 0;
+  /// largest distance, over all edges, of the field's rotation relative to transport plus
+  /// \f$\omega\f$ to a multiple of \f$2\pi/N\f$
+  double max_inconsistency = 0;
+};
+
+namespace internal {
+
+// Direction of outgoing halfedge h at its source v, measured counterclockwise from vertex_out[v]
+// in the metric, scaled by 2 pi / (angle sum) so that the directions at v span 2 pi.
+template <typename TM>
+struct Vertex_frames
+{
+  std::vector<double> direction;   // per halfedge (outgoing at its source)
+  template <typename M>
+  explicit Vertex_frames(const M& m) : direction(m.number_of_halfedges(), 0.)
+  {
+    for(std::size_t v = 0; v < m.number_of_vertices(); ++v) {
+      if(m.is_isolated(int(v)) || m.is_boundary_vertex(int(v))) continue;
+      const int h0 = m.vertex_out[v];
+      double total = 0;
+      int h = h0;
+      do { total += m.angle[std::size_t(h)]; h = m.ccw_out(h); } while(h != h0);
+      double a = 0;
+      h = h0;
+      do { direction[std::size_t(h)] = a * 2 * CGAL_PI / total; a += m.angle[std::size_t(h)]; h = m.ccw_out(h); } while(h != h0);
+    }
+  }
+  // carrying a direction at source(h) across h to target(h): added to its angle
+  double transport(int h) const { return direction[std::size_t(h ^ 1)] + CGAL_PI - direction[std::size_t(h)]; }
+};
+
+} // namespace internal
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsFieldDesign
+/// Rotation compensation (Lai et al. 2010, section 4.1.3.1) on a closed surface: builds the
+/// harmonic 1-forms \f$\omega_k\f$ dual to the handle loops \f$\gamma_k\f$ (a closed 1-form that
+/// jumps by 1 across \f$\gamma_k\f$, made harmonic by \f$\Delta(\tau_k + dh_k) = 0\f$ with the cotan
+/// Laplacian of the metric: the unique harmonic representative, which is the paper's
+/// \f$dg_k + dh_k\f$), solves the small system \f$\sum_k w_k \int_{\gamma_j}\omega_k = p_j\f$ for
+/// the periods \f$p_j\f$ that make the holonomy of every handle loop a multiple of \f$2\pi/N\f$,
+/// and propagates a direction from vertex 0 breadth-first: carried along each edge by the
+/// metric's transport and rotated counterclockwise by \f$\omega\f$ on it.
+///
+/// `vertex_angles` receives one angle per vertex, counterclockwise from a reference outgoing
+/// halfedge (that of the first edge at the vertex, in `edges(tm)` order: `halfedge(e)` or its
+/// opposite, whichever leaves the vertex) in the metric, scaled so that the directions around
+/// a vertex span \f$2\pi\f$; `face_angles` the same field in the face frames (each face takes
+/// it from a corner that is not a cone), for read-back with field_singularities() and the same
+/// `edge_length_map`: its singularities are then exactly the cones, of index \f$K/2\pi\f$.
+///
+/// Named parameters: `edge_length_map` (a flat cone metric: angle defect 0 except at the
+/// cones) or `intrinsic_mesh`, and the index maps. Throws `Input_error` for meshes with
+/// boundary or several components, \f$N < 1\f$, and the errors of `Intrinsic_mesh`; numerical
+/// failure is in the status.
+template <typename TriangleMesh, typename VertexAngleMap, typename FaceAngleMap,
+          typename NamedParameters = parameters::Default_named_parameters>
+Rotation_compensation_status rotation_compensated_field(const TriangleMesh& tm, int N, VertexAngleMap vertex_angles,
+                                                        FaceAngleMap face_angles,
+                                                        const NamedParameters& np = parameters::default_values())
+{
+  if(N < 1) throw Input_error(Input_error::INVALID_ARGUMENT, "symmetry order N must be at least 1, got " + std::to_string(N));
+  const Intrinsic_mesh<TriangleMesh> im = internal::get_intrinsic_mesh(tm, np);
+  const internal::Mesh_arrays<TriangleMesh>& m = im.arrays();
+  const internal::Topology_arrays& topo = im.topology_arrays();
+  if(topo.components.size() != 1 || !topo.loops.empty())
+    throw Input_error(Input_error::INVALID_ARGUMENT,
+                      "rotation_compensated_field() needs a closed mesh of one component (open meshes: not supported yet)");
+  const std::size_t nv = m.number_of_vertices(), ne = m.number_of_edges();
+  const std::vector<double>& K = im.curvatures();
+  Rotation_compensation_status st;
+  st.N = N;
+  const double period = 2 * CGAL_PI / N;
+  const internal::Vertex_frames<TriangleMesh> frames(m);
+
+  // cotan weights of the metric (raised to 1e-3 of their mean) and the Laplacian, factored once
+  std::vector<double> w(ne, 0.);
+  for(std::size_t f = 0; f < m.number_of_faces(); ++f) {
+    const int h0 = m.face_halfedge[f], h1 = m.next[std::size_t(h0)], h2 = m.next[std::size_t(h1)];
+    const int hs[3] = {h0, h1, h2};
+    const double l[3] = {m.edge_length(h0), m.edge_length(h1), m.edge_length(h2)};
+    const double inv8A = 1. / (8. * triangle_area(l[0], l[1], l[2]));
+    for(int i = 0; i < 3; ++i)
+      w[std::size_t(hs[i] >> 1)] += (l[(i + 1) % 3] * l[(i + 1) % 3] + l[(i + 2) % 3] * l[(i + 2) % 3] - l[i] * l[i]) * inv8A;
+  }
+  double sum = 0;
+  for(double x : w) sum += (x > 0 && std::isfinite(x)) ? x : 0.;
+  const double floor = 1e-3 * sum / double(ne);
+  for(double& x : w) x = (x >= floor && std::isfinite(x)) ? x : floor;
+  // vertex 0 is held at 0 (the Laplacian of a closed surface has the constants as kernel)
+  std::vector<Eigen::Triplet<double>> t;
+  for(std::size_t e = 0; e < ne; ++e) {
+    const int a = m.target[2 * e + 1], b = m.target[2 * e];
+    for(int v : {a, b}) if(v > 0) t.emplace_back(v - 1, v - 1, w[e]);
+    if(a > 0 && b > 0) t.emplace_back((std::max)(a, b) - 1, (std::min)(a, b) - 1, -w[e]);
+  }
+  Cholmod_cholesky::Matrix L(Eigen::Index(nv - 1), Eigen::Index(nv - 1));
+  L.setFromTriplets(t.begin(), t.end());
+  L.makeCompressed();
+  Cholmod_cholesky chol;
+  if(nv > 1 && !chol.factor(L, st.message)) return st;
+
+  // one harmonic form per handle loop; a 1-form is a value per edge for halfedge 2e (-value for 2e + 1)
+  std::vector<const internal::Generator_arrays*> loops;
+  for(const auto& g : im.generator_arrays()) if(g.handle) loops.push_back(&g);
+  const std::size_t k = loops.size();
+  std::vector<std::vector<double>> omega(k);
+  auto form_at = [](const std::vector<double>& f, int h) { return (h & 1) ? -f[std::size_t(h >> 1)] : f[std::size_t(h >> 1)]; };
+  std::vector<char> cone(nv, 0);
+  for(std::size_t v = 0; v < nv; ++v) cone[v] = std::abs(K[v]) > 1e-6;
+  // each handle loop as a primal loop of the punctured surface: the tree loop, with every pass
+  // through a cone replaced by the path around the cone's left side (through its link)
+  std::vector<std::vector<int>> primal(k);
+  for(std::size_t j = 0; j < k; ++j) {
+    const std::vector<int>& p = loops[j]->primal;   // prev --in--> u --out--> next
+    bool drop_last = false;
+    for(std::size_t i = 0; i < p.size(); ++i) {
+      const int out = p[i], in = p[(i + p.size() - 1) % p.size()];
+      if(!cone[std::size_t(m.source(out))]) { primal[j].push_back(out); continue; }
+      if(cone[std::size_t(m.source(in))]) {
+        st.message = "a handle loop passes through two adjacent cones; rotation compensation needs them apart";
+        return st;
+      }
+      if(i > 0) primal[j].pop_back(); else drop_last = true;   // `in` goes
+      std::vector<int> link;   // next -> ... -> prev, counterclockwise around the cone
+      for(int h = out; h != (in ^ 1); h = m.ccw_out(h)) link.push_back(m.next[std::size_t(h)]);
+      for(auto it = link.rbegin(); it != link.rend(); ++it) primal[j].push_back(*it ^ 1);   // prev -> ... -> next
+    }
+    if(drop_last) primal[j].pop_back();
+    for(int h : primal[j])
+      if(cone[std::size_t(m.source(h))]) {
+        st.message = "a handle loop passes next to adjacent cones; rotation compensation needs them apart";
+        return st;
+      }
+  }
+  for(std::size_t j = 0; j < k; ++j) {
+    // tau: the Poincare dual of the handle's dual cycle, +1 on each edge it crosses (closed:
+    // each face it passes through is entered once and left once)
+    std::vector<double> tau(ne, 0.);
+    for(int h : loops[j]->dual) tau[std::size_t(h >> 1)] += (h & 1) ? -1. : 1.;
+    // harmonic projection: L hk = -div(tau), omega = tau + d hk
+    Eigen::VectorXd div = Eigen::VectorXd::Zero(Eigen::Index(nv - 1));
+    for(std::size_t e = 0; e < ne; ++e) {
+      const int a = m.target[2 * e + 1], b = m.target[2 * e];   // halfedge 2e: a -> b
+      if(a > 0) div[a - 1] += w[e] * tau[e];
+      if(b > 0) div[b - 1] -= w[e] * tau[e];
+    }
+    const Eigen::VectorXd hk = nv > 1 ? Eigen::VectorXd(chol.solve(div)) : Eigen::VectorXd();
+    auto hv = [&](int v) { return v > 0 ? hk[v - 1] : 0.; };
+    omega[j].resize(ne);
+    for(std::size_t e = 0; e < ne; ++e) omega[j][e] = tau[e] + hv(m.target[2 * e]) - hv(m.target[2 * e + 1]);
+  }
+  // the period matrix and the targets
+  Eigen::MatrixXd P = Eigen::MatrixXd::Zero(Eigen::Index(k), Eigen::Index(k));
+  Eigen::VectorXd target = Eigen::VectorXd::Zero(Eigen::Index(k));
+  for(std::size_t i = 0; i < k; ++i) {
+    double hol = 0;
+    const std::vector<int>& p = primal[i];
+    for(std::size_t s = 0; s < p.size(); ++s) {
+      hol += frames.transport(p[s]);
+      // entering the next vertex along p[s], leaving along p[s + 1]: the change of frame is
+      // already in transport(); nothing else to add
+    }
+    // transport around the loop returns to the start vertex: holonomy = total mod 2 pi
+    hol = internal::wrap_angle(hol);
+    st.holonomy.push_back(hol);
+    target[Eigen::Index(i)] = period * std::round(hol / period) - hol;
+    st.periods.push_back(target[Eigen::Index(i)]);
+    for(std::size_t j = 0; j < k; ++j) {
+      double s = 0;
+      for(int h : p) s += form_at(omega[j], h);
+      P(Eigen::Index(i), Eigen::Index(j)) = s;
+    }
+  }
+  const Eigen::VectorXd weights = k ? Eigen::VectorXd(P.fullPivLu().solve(target)) : Eigen::VectorXd();
+  std::vector<double> om(ne, 0.);
+  for(std::size_t j = 0; j < k; ++j)
+    for(std::size_t e = 0; e < ne; ++e) om[e] += weights[Eigen::Index(j)] * omega[j][e];
+  // residuals: closed on faces, co-closed at vertices
+  for(std::size_t f = 0; f < m.number_of_faces(); ++f) {
+    const int h0 = m.face_halfedge[f];
+    const double r = form_at(om, h0) + form_at(om, m.next[std::size_t(h0)]) + form_at(om, m.next[std::size_t(m.next[std::size_t(h0)])]);
+    st.max_harmonic_residual = (std::max)(st.max_harmonic_residual, std::abs(r));
+  }
+  {
+    std::vector<double> d(nv, 0.);
+    for(std::size_t e = 0; e < ne; ++e) { d[std::size_t(m.target[2 * e + 1])] += w[e] * om[e]; d[std::size_t(m.target[2 * e])] -= w[e] * om[e]; }
+    double wmax = 0;
+    for(double x : w) wmax = (std::max)(wmax, x);
+    for(double x : d) st.max_harmonic_residual = (std::max)(st.max_harmonic_residual, std::abs(x) / (std::max)(wmax, 1e-300));
+  }
+  // breadth-first propagation over the vertices
+  std::vector<double> alpha(nv, 0.);
+  std::vector<char> seen(nv, 0);
+  int start = 0;
+  while(start + 1 < int(nv) && cone[std::size_t(start)]) ++start;
+  std::vector<int> queue(1, start);
+  seen[std::size_t(start)] = 1;
+  for(std::size_t q = 0; q < queue.size(); ++q) {
+    const int v = queue[q];
+    const int h0 = m.vertex_out[std::size_t(v)];
+    int h = h0;
+    do {
+      const int u = m.target[std::size_t(h)];
+      if(!seen[std::size_t(u)]) {   // cones get a value but pass nothing on (the field is singular there)
+        seen[std::size_t(u)] = 1;
+        alpha[std::size_t(u)] = alpha[std::size_t(v)] + frames.transport(h) + form_at(om, h);
+        if(!cone[std::size_t(u)]) queue.push_back(u);
+      }
+      h = m.ccw_out(h);
+    } while(h != h0);
+  }
+  for(std::size_t e = 0; e < ne; ++e) {
+    const int h = int(2 * e);
+    if(cone[std::size_t(m.target[std::size_t(h)])] || cone[std::size_t(m.source(h))]) continue;
+    const double r = alpha[std::size_t(m.target[std::size_t(h)])] - alpha[std::size_t(m.source(h))] - frames.transport(h) - form_at(om, h);
+    st.max_inconsistency = (std::max)(st.max_inconsistency, std::abs(std::remainder(r, period)));
+  }
+  // the face field: from a corner that is not a cone (angle defect 0), else the first corner
+  for(std::size_t f = 0; f < m.number_of_faces(); ++f) {
+    const int h0 = m.face_halfedge[f];
+    int h = h0, pick = h0;
+    for(int i = 0; i < 3; ++i, h = m.next[std::size_t(h)])
+      if(std::abs(K[std::size_t(m.source(h))]) < 1e-6) { pick = h; break; }
+    // a direction of vertex angle a at source(pick) makes angle (a - direction(pick)) with pick,
+    // which has direction halfedge_direction(pick) in the face frame
+    const double a = alpha[std::size_t(m.source(pick))] - frames.direction[std::size_t(pick)] + internal::halfedge_direction(m, pick);
+    put(face_angles, m.faces[f], a - 2 * CGAL_PI * std::floor(a / (2 * CGAL_PI)));
+  }
+  for(std::size_t v = 0; v < nv; ++v) {
+    const double a = alpha[v] - 2 * CGAL_PI * std::floor(alpha[v] / (2 * CGAL_PI));
+    put(vertex_angles, m.vertices[v], a);
+  }
+  st.success = st.max_inconsistency <= 1e-6;
+  if(!st.success) {
+    std::ostringstream os;
+    os.precision(3);
+    os << "the compensated field is not an N-RoSy field: inconsistency " << st.max_inconsistency
+       << " rad (are the cone curvatures multiples of 2 pi / " << N << "?)";
+    st.message = os.str();
+  }
+  return st;
+}
+
+} // namespace Surface_mesh_direction_fields
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_ROTATION_COMPENSATION_H
