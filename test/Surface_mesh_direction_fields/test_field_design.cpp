@@ -386,6 +386,22 @@ void compensated(const Surface_mesh& mesh, const LengthMap& flat, const std::map
   std::map<Vertex, double> got(ft.singularities.begin(), ft.singularities.end()), want;
   for(const auto& c : cones) want[c.first] = std::round(c.second / (2 * M_PI) * N) / N;
   SMDF_CHECK_MSG(got == want, name << ": the face field read back on the metric has exactly the " << want.size() << " cones (found " << got.size() << ")");
+  // the vertex field pulled back to the embedding: unit vectors in the averaged tangent planes
+  auto vv = get(CGAL::dynamic_vertex_property_t<K::Vector_3>(), mesh);
+  SMDF::vertex_field_to_vectors(mesh, va, vv);
+  double off_plane = 0, off_unit = 0;
+  for(auto v : vertices(mesh)) {
+    K::Vector_3 n(0, 0, 0);
+    for(auto f : faces_around_target(halfedge(v, mesh), mesh)) {
+      const auto h = halfedge(f, mesh);
+      n = n + CGAL::cross_product(mesh.point(target(h, mesh)) - mesh.point(source(h, mesh)),
+                                  mesh.point(target(next(h, mesh), mesh)) - mesh.point(source(h, mesh)));
+    }
+    const K::Vector_3 x = get(vv, v);
+    off_plane = std::max(off_plane, std::abs(x * n) / std::sqrt(n.squared_length()));
+    off_unit = std::max(off_unit, std::abs(x.squared_length() - 1));
+  }
+  SMDF_CHECK_MSG(off_plane < 1e-9 && off_unit < 1e-9, name << ": vertex vectors are unit and tangent (" << off_plane << ", " << off_unit << ")");
   // the trivial connection on the same metric, cotan weights (harmonic in the same sense)
   SMDF::Trivial_connection<Surface_mesh> tc(mesh, SMDF::parameters::symmetry_order(N).edge_length_map(flat).connection_weights(SMDF::COTAN_WEIGHTS));
   for(const auto& c : want) tc.set_singularity(c.first, c.second);
@@ -435,6 +451,82 @@ void rotation_compensation(const Surface_mesh& g3)
   }
 }
 
+
+// Fields parallel and orthogonal to the boundary (Lai et al. 4.3, double cover): a cross field
+// on a disk with four corners of pi/2 (a rectangle), and a vector field on an annulus (flat,
+// no corner); every boundary edge is checked against the field, here and in the status.
+void boundary_aligned()
+{
+  typedef Surface_mesh::Face_index Face;
+  auto check = [](const Surface_mesh& mesh, const std::map<Vertex, double>& kappa, int N, bool orthogonal, const std::string& name) {
+    auto target = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+    for(auto v : vertices(mesh)) put(target, v, kappa.count(v) ? kappa.at(v) : 0.);
+    auto lengths = get(CGAL::dynamic_edge_property_t<double>(), mesh);
+    auto angles = get(CGAL::dynamic_face_property_t<double>(), mesh);
+    const SMDF::Boundary_aligned_field_status st =
+        SMDF::boundary_aligned_rosy_field(mesh, N, target, lengths, angles, SMDF::parameters::orthogonal_to_boundary(orthogonal));
+    // independent check: the angle of each boundary edge in its face frame, from the output lengths
+    double worst = 0;
+    for(auto h : halfedges(mesh)) {
+      if(!is_border(opposite(h, mesh), mesh)) continue;
+      const Face f = face(h, mesh);
+      double dir = 0;   // direction of h in the frame of f (x axis along halfedge(f))
+      for(auto g = halfedge(f, mesh); g != h; g = next(g, mesh))
+        dir += M_PI - SMDF::corner_angle(g, mesh, SMDF::parameters::edge_length_map(lengths));
+      const double d = get(angles, f) - dir - (orthogonal ? M_PI / 2 : 0.);
+      worst = std::max(worst, std::abs(std::remainder(d, N % 2 == 0 ? 2 * M_PI / N : M_PI / N)));   // either orientation
+    }
+    SMDF_CHECK_MSG(st.success && st.metric.converged && worst < 1e-6,
+                   name << ": " << (orthogonal ? "orthogonal" : "parallel") << " to the boundary, deviation " << worst << " (status "
+                        << st.max_boundary_deviation << ") " << st.message);
+    if(!st.success) return;
+    // the field read back on its metric: no singularity (no interior cone)
+    const auto ft = SMDF::field_singularities(mesh, angles, SMDF::parameters::symmetry_order(N).edge_length_map(lengths));
+    SMDF_CHECK_MSG(ft.singularities.empty(), name << ": no singularity inside (" << ft.singularities.size() << " found)");
+  };
+  {   // a disk: a grid of 16 x 12 quads, split; corners of pi/2 at the four grid corners
+    smdf_test::Soup s;
+    const int nx = 16, ny = 12;
+    for(int i = 0; i <= nx; ++i)
+      for(int j = 0; j <= ny; ++j) s.points.push_back({double(i) + 0.2 * std::sin(double(j)), double(j), 0.3 * std::sin(0.5 * i + 0.3 * j)});
+    auto id = [&](int i, int j) { return std::size_t(i * (ny + 1) + j); };
+    for(int i = 0; i < nx; ++i)
+      for(int j = 0; j < ny; ++j) {
+        if((i == nx - 1 && j == 0) || (i == 0 && j == ny - 1)) {   // the other diagonal: no ear at these corners
+          s.faces.push_back({id(i, j), id(i + 1, j), id(i, j + 1)}); s.faces.push_back({id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+        } else {
+          s.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)}); s.faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+        }
+      }
+    Surface_mesh disk;
+    smdf_test::soup_to_mesh(s, disk);
+    // not at the grid corners: the rectangle's corners sit at other boundary vertices
+    const std::map<Vertex, double> kappa = {{Vertex(std::uint32_t(id(0, 3))), M_PI / 2}, {Vertex(std::uint32_t(id(10, 0))), M_PI / 2},
+                                            {Vertex(std::uint32_t(id(nx, 8))), M_PI / 2}, {Vertex(std::uint32_t(id(5, ny))), M_PI / 2}};
+    check(disk, kappa, 4, false, "disk with four corners, N = 4");
+    check(disk, kappa, 4, true, "disk with four corners, N = 4");
+    {   // an ear (interior edge between two boundary vertices): a clear failure
+      smdf_test::Soup e;
+      e.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+      e.faces = {{0, 1, 2}, {0, 2, 3}};
+      Surface_mesh square;
+      smdf_test::soup_to_mesh(e, square);
+      auto target = get(CGAL::dynamic_vertex_property_t<double>(), square);
+      for(auto v : vertices(square)) put(target, v, M_PI / 2);
+      auto lengths = get(CGAL::dynamic_edge_property_t<double>(), square);
+      auto angles = get(CGAL::dynamic_face_property_t<double>(), square);
+      const auto st = SMDF::boundary_aligned_rosy_field(square, 4, target, lengths, angles);
+      SMDF_CHECK_MSG(!st.success && st.message.find("joins two boundary vertices") != std::string::npos, "an ear is reported: " << st.message);
+    }
+  }
+  {
+    Surface_mesh annulus;
+    smdf_test::soup_to_mesh(smdf_test::cylinder_soup(40, 10), annulus);
+    check(annulus, {}, 1, false, "annulus, N = 1");
+    check(annulus, {}, 1, true, "annulus, N = 1");
+  }
+}
+
 void bad_input()
 {
   Surface_mesh cyl;
@@ -475,6 +567,7 @@ int main()
 {
   flat_tori();
   bad_input();
+  boundary_aligned();
   const std::string dir = smdf_test::shared_data_dir();
   if(dir.empty()) {
     std::cout << "../shared/data not found: shared-mesh checks skipped" << std::endl;

@@ -422,6 +422,13 @@ def test_rosy(smdf, c, torus, tmp):
     lines = err.decode("utf-8", "replace").splitlines()
     c.check(rc == 3 and json.loads(out.decode()).get("success") is False and len(lines) == 1 and "3-RoSy" in lines[0],
             "rosy --N 3 on a cube-like metric: exit 3, the failing loops named (%r)" % lines)
+    r = smdf.json(["rosy", torus, "--cones", "0:pi/2,100:-pi/2"], "smdf rosy torus, cones +-pi/2")
+    if r:
+        c.check(r.get("N") == 4 and r.get("method") == "rotation compensation" and r.get("success") is True
+                and len(r["rotation_compensation"]["periods"]) == 2
+                and sorted((f["vertex"], f["index"]) for f in r.get("found", [])) == [(0, 0.25), (100, -0.25)],
+                "rosy torus with two cones: a cross field by rotation compensation, found == the cones (%r)"
+                % {k: r.get(k) for k in ("N", "method", "found", "smallest_parallel_order")})
     smdf.error(["rosy", spot, "--cones", "99999:pi/2"], "rosy: cone out of range", 1, "does not exist")
     smdf.error(["rosy", spot, "--cones", "0:2pi,1:0"], "rosy: cone of index 1", 1, "index 1 or more")
     smdf.error(["rosy", spot, "--cones", "0:pi/2"], "rosy: Gauss-Bonnet", 1, "[inconsistent_indices]")

@@ -13,6 +13,8 @@
 #include <CGAL/Surface_mesh_direction_fields/holonomy_group.h>
 #include <CGAL/Surface_mesh_direction_fields/homotopy_basis.h>
 #include <CGAL/Surface_mesh_direction_fields/parallel_rosy_field.h>
+#include <CGAL/Surface_mesh_direction_fields/rotation_compensation.h>
+#include <CGAL/Surface_mesh_direction_fields/topology.h>
 #include <CGAL/Surface_mesh_direction_fields/parameters.h>
 
 #include <cmath>
@@ -127,11 +129,21 @@ Json run_rosy(const Args& args)
   out["smallest_parallel_order"] = smallest;
   out["square_grid"] = tessellation_json(SMDF::tessellation_compatibility(group, SMDF::SQUARE_GRID));
   out["triangular_grid"] = tessellation_json(SMDF::tessellation_compatibility(group, SMDF::TRIANGULAR_GRID));
-  const int N = requested_N > 0 ? int(requested_N) : smallest;
+  // without --N: the smallest order of the group (a parallel field), else the smallest order
+  // the cone curvatures allow (rotation compensation, closed surfaces)
+  auto cones_allow = [&](int n) {
+    for(const auto& c : cones) {
+      const double k = c.second / (2 * CGAL_PI) * n;
+      if(std::abs(k - std::round(k)) > 1e-6) return false;
+    }
+    return true;
+  };
+  int N = requested_N > 0 ? int(requested_N) : smallest;
+  if(N == 0)
+    for(int n = 1; n <= 24 && N == 0; ++n) if(cones_allow(n)) N = n;
   out["N"] = N;
   if(N == 0)
-    throw Failed_result{out, file + ": no parallel N-RoSy field for N <= 24: the holonomy group has rotations that are "
-                                    "no multiple of 2 pi / N (rotation compensation is not built yet)", 3};
+    throw Failed_result{out, file + ": no N <= 24 for which the cone curvatures are multiples of 2 pi / N", 3};
   const SMDF::Rosy_compatibility rc = SMDF::parallel_rosy_compatibility(group, N);
   Json compat = Json::object();
   compat["compatible"] = rc.compatible;
@@ -139,9 +151,31 @@ Json run_rosy(const Args& args)
   compat["failing_loops"] = index_list(rc.failing_loops);
   out["parallel_rosy"] = std::move(compat);
 
-  // 4. the parallel field, read back on the metric
+  // 4. the parallel field, or the rotation-compensated one, read back on the metric
   const auto angles = carrier->add_property_map<face_descriptor, double>("f:smdf_rosy_angle", 0.).first;
-  const SMDF::Parallel_rosy_status ps = SMDF::parallel_rosy_field(*carrier, N, angles, SMDF::parameters::edge_length_map(flat));
+  std::string field_failure;
+  const bool compensate = !rc.compatible && cones_allow(N) && SMDF::mesh_topology(*carrier).is_closed();
+  out["method"] = compensate ? "rotation compensation" : "parallel";
+  if(compensate) {
+    const auto va = carrier->add_property_map<vertex_descriptor, double>("v:smdf_rosy_angle", 0.).first;
+    const SMDF::Rotation_compensation_status cs =
+        on_file(file, [&] { return SMDF::rotation_compensated_field(*carrier, N, va, angles, SMDF::parameters::edge_length_map(flat)); });
+    Json c = Json::object();
+    Json periods = Json::array();
+    for(double p : cs.periods) periods.push_back(p);
+    c["periods"] = std::move(periods);
+    c["max_harmonic_residual"] = cs.max_harmonic_residual;
+    c["max_inconsistency"] = cs.max_inconsistency;
+    out["rotation_compensation"] = std::move(c);
+    if(!cs.success) field_failure = cs.message;
+  } else {
+    const SMDF::Parallel_rosy_status ps = SMDF::parallel_rosy_field(*carrier, N, angles, SMDF::parameters::edge_length_map(flat));
+    if(!rc.compatible)
+      field_failure = "no parallel " + std::to_string(N) + "-RoSy field: " + std::to_string(rc.failing_loops.size()) +
+                      " loops of the holonomy group turn by angles that are no multiple of 2 pi / " + std::to_string(N) +
+                      (cones_allow(N) ? "" : " (nor are the cone curvatures multiples of 2 pi / " + std::to_string(N) + ")");
+    else if(!ps.success) field_failure = ps.message;
+  }
   const SMDF::Field_topology<Mesh> found =
       SMDF::field_singularities(*carrier, angles, SMDF::parameters::symmetry_order(N).edge_length_map(flat));
   out["found"] = found_list(found);
@@ -152,11 +186,9 @@ Json run_rosy(const Args& args)
     cones_on_lattice = cones_on_lattice && std::abs(k - std::round(k)) < 1e-6;
     if(std::round(k) != 0) want[c.first] = std::round(k) / N;
   }
-  std::string failure;
-  if(!rc.compatible) failure = "no parallel " + std::to_string(N) + "-RoSy field: " + std::to_string(rc.failing_loops.size()) +
-                               " loops of the holonomy group turn by angles that are no multiple of 2 pi / " + std::to_string(N);
-  else if(!ps.success) failure = ps.message;
-  else if(!cones_on_lattice || got != want) failure = "the parallel field read back on the metric has other singularities than the cones";
+  std::string failure = field_failure;
+  if(failure.empty() && (!cones_on_lattice || got != want))
+    failure = "the field read back on the metric has other singularities than the cones";
   out["success"] = failure.empty();
   if(!failure.empty()) throw Failed_result{out, file + ": " + failure, 3};
 
@@ -190,12 +222,18 @@ Command rosy_command()
           "tests: the smallest N for which a parallel N-RoSy field exists (Theorem 3.2; on a sphere\n"
           "the cone curvatures must be multiples of 2 pi / N), and whether a square or triangular\n"
           "grid fits (Theorem 3.5). Then it builds the parallel N-RoSy field and reads it back on the\n"
-          "metric: its singularities must be exactly the cones, with index K / 2 pi.\n"
+          "metric: its singularities must be exactly the cones, with index K / 2 pi. When the group\n"
+          "allows no parallel field but the cone curvatures are multiples of 2 pi / N (closed\n"
+          "surfaces of any genus), the field is made by rotation compensation (Lai et al. 4.1.3.1:\n"
+          "a harmonic 1-form cancels the holonomy of the handle loops); without --N, N is the\n"
+          "smallest order of the group, else the smallest the cone curvatures allow.\n"
           "Prints {metric: {converged, iterations, max_curvature_error, triangulation_changed},\n"
           "holonomy: [{kind, cone, rotation_over_pi, translation}], smallest_parallel_order (0: none\n"
           "up to 24), square_grid and triangular_grid: {compatible, spacing, orientation,\n"
           "max_rotation_deviation, max_translation_deviation, failing_loops}, N, parallel_rosy:\n"
-          "{compatible, max_deviation, failing_loops}, found: [{vertex, index}], success}.\n"
+          "{compatible, max_deviation, failing_loops}, method (parallel | rotation compensation),\n"
+          "rotation_compensation: {periods, max_harmonic_residual, max_inconsistency},\n"
+          "found: [{vertex, index}], success}.\n"
           "Exit code 3 (JSON printed) when the metric does not converge, no parallel field exists for\n"
           "N, or the read-back differs from the cones. Field vectors are mapped to 3D by the linear\n"
           "map from each metric triangle to the embedded one.\n",
