@@ -136,7 +136,7 @@ void fail(benchmark::State& state, const std::string& what)
   state.SkipWithError(what.c_str());
 }
 
-void BM_cone_metric(benchmark::State& state)
+void BM_cone_metric(benchmark::State& state, SMDF::Ricci_flow_scheme scheme)
 {
   const smdf_bench::Bench_mesh* b = nullptr;
   try {
@@ -165,7 +165,7 @@ void BM_cone_metric(benchmark::State& state)
     int iterations = 0;
     smdf_bench::Memory_probe mem;
     for(auto _ : state) {
-      st = SMDF::compute_cone_metric(work, target, lengths);
+      st = SMDF::compute_cone_metric(work, target, lengths, SMDF::parameters::ricci_flow_scheme(scheme));
       benchmark::DoNotOptimize(st);
       seconds += st.seconds;
       iterations = (std::max)(iterations, st.iterations);
@@ -183,10 +183,11 @@ void BM_cone_metric(benchmark::State& state)
   }
 }
 
-void register_sizes(const char* name, const std::vector<std::int64_t>& sizes)
+void register_sizes(const char* name, const std::vector<std::int64_t>& sizes,
+                    SMDF::Ricci_flow_scheme scheme = SMDF::VERTEX_SCALING)
 {
   for(std::int64_t size : sizes)
-    smdf_bench::sized(benchmark::RegisterBenchmark(name, BM_cone_metric), size);
+    smdf_bench::sized(benchmark::RegisterBenchmark(name, BM_cone_metric, scheme), size);
 }
 
 const bool registered = [] {
@@ -196,6 +197,8 @@ const bool registered = [] {
     register_sizes("BM_cone_metric", smdf_bench::target_sizes());
   } else {
     register_sizes("BM_cone_metric", {10000, 20000, 100000, 433000, 1000000});
+    // the paper's flow (inversive distance circle packing, input triangulation only)
+    register_sizes("BM_cone_metric_circle_packing", {10000, 20000, 100000, 433000}, SMDF::INVERSIVE_DISTANCE_CIRCLE_PACKING);
     // the base mesh and its Loop subdivisions, not decimated (armadillo: 52k, 208k, 832k faces)
     const std::int64_t f0 = std::int64_t(num_faces(cone_base_mesh_or_empty()));
     // (Loop^2, 16 f0 = 832k faces, is left out: it ran for over 9 minutes in the line search

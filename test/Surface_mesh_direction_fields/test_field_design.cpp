@@ -239,6 +239,64 @@ void genus_three(const Surface_mesh& input, const std::string& name)
 }
 
 
+
+// The obelisk field (Lai et al. Figure 1c) by regions: on the faces below the middle cones (the
+// box part: its cones are the four of pi/2) the metric carries a parallel 4-RoSy field, above
+// them (the pyramid: the apex of 2 pi/3) a parallel 3-RoSy field. Each region is copied into a
+// mesh of its own with the flat lengths; the middle cones are left out of both.
+void obelisk_regions(const Surface_mesh& spot, const Lengths& flat, const std::vector<std::pair<Vertex, double>>& cones)
+{
+  double box_top = -1e300, middle_low = 1e300, middle_high = -1e300;
+  for(int i = 0; i < 8; ++i) {
+    const double y = spot.point(cones[std::size_t(i)].first).y();
+    if(i < 4) box_top = std::max(box_top, y);
+    else { middle_low = std::min(middle_low, y); middle_high = std::max(middle_high, y); }
+  }
+  const double apex = spot.point(cones[8].first).y();
+  if(!(box_top < middle_low && middle_high < apex)) {
+    std::cout << "obelisk regions: cones not separated by height, skipped" << std::endl;
+    return;
+  }
+  const double margin = 0.02;
+  struct Region { const char* name; double lo, hi; int N; };
+  for(const Region& r : {Region{"box part", -1e300, middle_low - margin, 4}, Region{"pyramid", middle_high + margin, 1e300, 3}}) {
+    smdf_test::Soup soup;
+    std::map<Vertex, std::size_t> index;
+    std::vector<Surface_mesh::Face_index> kept;
+    for(auto f : faces(spot)) {
+      double y = 0;
+      for(auto v : vertices_around_face(halfedge(f, spot), spot)) y += spot.point(v).y() / 3;
+      if(y <= r.lo || y >= r.hi) continue;
+      std::vector<std::size_t> poly;
+      for(auto v : vertices_around_face(halfedge(f, spot), spot)) {
+        auto it = index.find(v);
+        if(it == index.end()) {
+          it = index.emplace(v, soup.points.size()).first;
+          const auto& p = spot.point(v);
+          soup.points.push_back({p.x(), p.y(), p.z()});
+        }
+        poly.push_back(it->second);
+      }
+      soup.faces.push_back(poly);
+    }
+    Surface_mesh part;
+    smdf_test::soup_to_mesh(soup, part);
+    auto len = get(CGAL::dynamic_edge_property_t<double>(), part);
+    std::map<std::size_t, Vertex> back;
+    for(const auto& p : index) back[p.second] = p.first;
+    for(auto e : edges(part)) {
+      const Vertex a = back[std::size_t(source(halfedge(e, part), part))], b = back[std::size_t(target(halfedge(e, part), part))];
+      put(len, e, flat[edge(halfedge(a, b, spot).first, spot)]);
+    }
+    const auto topo = SMDF::mesh_topology(part);
+    auto angles = get(CGAL::dynamic_face_property_t<double>(), part);
+    const auto st = SMDF::parallel_rosy_field(part, r.N, angles, SMDF::parameters::edge_length_map(len));
+    const auto bad = SMDF::parallel_rosy_field(part, r.N == 4 ? 3 : 4, angles, SMDF::parameters::edge_length_map(len));
+    SMDF_CHECK_MSG(st.success && !bad.success, "obelisk " << r.name << " (" << num_faces(part) << " faces, " << topo.components.size()
+                   << " component(s)): a parallel " << r.N << "-RoSy field and not the other one " << st.message);
+  }
+}
+
 // The parallel N-RoSy field of a genus-0 flat cone metric (Corollary 3.3): read back on the
 // metric, its singularities are exactly the cones with index K / 2 pi; it is the field of the
 // trivial connection computed on the same metric with those indices (the adjustment angles
@@ -280,6 +338,7 @@ void parallel_field(Surface_mesh& spot, const std::vector<std::pair<Vertex, doub
     std::map<Vertex, double> got_e(fe.singularities.begin(), fe.singularities.end());
     std::cout << name << ": on the embedding, principal matching reads " << got_e.size() << " singularities ("
               << (got_e == want ? "the cones" : "not only the cones") << ")" << std::endl;
+    if(N == 12) obelisk_regions(spot, flat, cones);
     if(N > 1) {
       const SMDF::Parallel_rosy_status bad = SMDF::parallel_rosy_field(spot, N - 1, angles, SMDF::parameters::edge_length_map(flat));
       SMDF_CHECK_MSG(!bad.success && bad.inconsistent_edges > 0 && !bad.message.empty(), name << ": no parallel " << N - 1 << "-RoSy field");
@@ -519,12 +578,92 @@ void boundary_aligned()
       SMDF_CHECK_MSG(!st.success && st.message.find("joins two boundary vertices") != std::string::npos, "an ear is reported: " << st.message);
     }
   }
+  {   // free boundary: the disk made flat with its curvature spread over the boundary (a round
+      // disk); the parallel field of any N exists and has no singularity
+    smdf_test::Soup s;
+    for(int i = 0; i <= 12; ++i) for(int j = 0; j <= 12; ++j) s.points.push_back({double(i), double(j), 0.1 * std::sin(double(i * j))});
+    for(int i = 0; i < 12; ++i) for(int j = 0; j < 12; ++j) { const std::size_t a = std::size_t(i * 13 + j); s.faces.push_back({a, a + 13, a + 14}); s.faces.push_back({a, a + 14, a + 1}); }
+    Surface_mesh grid;
+    smdf_test::soup_to_mesh(s, grid);
+    auto target = get(CGAL::dynamic_vertex_property_t<double>(), grid);
+    std::size_t nb = 0;
+    for(auto v : vertices(grid)) nb += is_border(v, grid) ? 1 : 0;
+    for(auto v : vertices(grid)) put(target, v, is_border(v, grid) ? 2 * M_PI / double(nb) : 0.);
+    auto len = get(CGAL::dynamic_edge_property_t<double>(), grid);
+    const auto cm = SMDF::compute_cone_metric(grid, target, len);
+    SMDF_CHECK_MSG(cm.converged && !cm.triangulation_changed, "free boundary: round flat disk " << cm.message);
+    for(int N : {1, 4, 5}) {
+      auto angles = get(CGAL::dynamic_face_property_t<double>(), grid);
+      const auto st = SMDF::parallel_rosy_field(grid, N, angles, SMDF::parameters::edge_length_map(len));
+      const auto ft = SMDF::field_singularities(grid, angles, SMDF::parameters::symmetry_order(N).edge_length_map(len));
+      SMDF_CHECK_MSG(st.success && ft.singularities.empty(), "free boundary, N = " << N << ": a parallel field without singularity");
+    }
+  }
   {
     Surface_mesh annulus;
     smdf_test::soup_to_mesh(smdf_test::cylinder_soup(40, 10), annulus);
     check(annulus, {}, 1, false, "annulus, N = 1");
     check(annulus, {}, 1, true, "annulus, N = 1");
   }
+}
+
+
+// The paper's Ricci flow (inversive distance circle packing) against vertex scaling, both on the
+// input triangulation: the input metric is reproduced at u = 0, and every converged metric is
+// checked by recomputing its curvature from the output lengths. Prints the comparison.
+void circle_packing(const std::string& dir)
+{
+  auto run = [](const Surface_mesh& mesh, const std::map<Vertex, double>& cones, SMDF::Ricci_flow_scheme scheme, const std::string& name) {
+    auto target = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+    for(auto v : vertices(mesh)) put(target, v, cones.count(v) ? cones.at(v) : 0.);
+    auto out = get(CGAL::dynamic_edge_property_t<double>(), mesh);
+    const auto st = SMDF::compute_cone_metric(mesh, target, out, SMDF::parameters::intrinsic_edge_flips(false).ricci_flow_scheme(scheme));
+    if(st.converged) {
+      double err = 0;
+      for(auto v : vertices(mesh))
+        err = std::max(err, std::abs(SMDF::angle_defect(v, mesh, SMDF::parameters::edge_length_map(out)) - get(target, v)));
+      SMDF_CHECK_MSG(err < 1e-9, name << ": recomputed curvature error " << err);
+    }
+    return st;
+  };
+  struct Case { const char* file; int kind; };   // kind: 0 eight cones of pi/2, 1 flat, 2 one cone of 2 pi chi
+  const Case cases[] = {{"spot_c3d.obj", 0}, {"bunny_bff.obj", 0}, {"armadillo_cgal.off", 0}, {"torus_ddg.obj", 1},
+                        {"knot1_cgal.off", 1}, {"double-torus_jnd.off", 2}, {"genus3_vhacd.off", 2}};
+  std::cout << "| mesh | targets | vertex scaling: converged, iterations, time | circle packing: converged, iterations, time |\n";
+  int both = 0, packing = 0;
+  for(const Case& c : cases) {
+    Surface_mesh mesh;
+    try { SMDF::read_triangle_mesh(dir + "/meshes/" + c.file, mesh); } catch(const SMDF::Input_error&) { continue; }
+    std::map<Vertex, double> cones;
+    const long chi = long(num_vertices(mesh)) - long(num_edges(mesh)) + long(num_faces(mesh));
+    if(c.kind == 0)
+      for(Vertex v : extreme_vertices(mesh, {{1, 1, 1}, {1, 1, -1}, {1, -1, 1}, {1, -1, -1}, {-1, 1, 1}, {-1, 1, -1}, {-1, -1, 1}, {-1, -1, -1}}))
+        cones[v] = M_PI / 2;
+    if(c.kind == 2) {
+      Vertex best = *vertices(mesh).begin();
+      for(auto v : vertices(mesh)) if(degree(v, mesh) > degree(best, mesh)) best = v;
+      cones[best] = 2 * M_PI * double(chi);
+    }
+    const auto vs = run(mesh, cones, SMDF::VERTEX_SCALING, std::string(c.file) + ", vertex scaling");
+    const auto cp = run(mesh, cones, SMDF::INVERSIVE_DISTANCE_CIRCLE_PACKING, std::string(c.file) + ", circle packing");
+    both += vs.converged && cp.converged;
+    packing += cp.converged;
+    std::cout << "| `" << c.file << "` | " << (c.kind == 0 ? "8 x pi/2" : c.kind == 1 ? "flat" : "one cone") << " | "
+              << (vs.converged ? "yes" : "no") << ", " << vs.iterations << ", " << std::setprecision(3) << vs.seconds << " s | "
+              << (cp.converged ? "yes" : "no") << ", " << cp.iterations << ", " << cp.seconds << " s |" << std::setprecision(6)
+              << (cp.converged ? "" : " (" + cp.message + ")") << "\n";
+  }
+  SMDF_CHECK_MSG(packing >= 4, "circle packing converged on " << packing << " of the meshes");
+  // u = 0 reproduces the input: targets equal to the input curvatures, no iteration, same lengths
+  Surface_mesh spot;
+  SMDF::read_triangle_mesh(dir + "/meshes/spot_c3d.obj", spot);
+  auto defects = get(CGAL::dynamic_vertex_property_t<double>(), spot);
+  for(auto v : vertices(spot)) put(defects, v, SMDF::angle_defect(v, spot));
+  auto out = get(CGAL::dynamic_edge_property_t<double>(), spot);
+  const auto st = SMDF::compute_cone_metric(spot, defects, out, SMDF::parameters::ricci_flow_scheme(SMDF::INVERSIVE_DISTANCE_CIRCLE_PACKING));
+  double d = 0;
+  for(auto e : edges(spot)) d = std::max(d, std::abs(get(out, e) - std::sqrt(CGAL::squared_distance(spot.point(source(e, spot)), spot.point(target(e, spot))))));
+  SMDF_CHECK_MSG(st.converged && st.iterations == 0 && d < 1e-12, "circle packing reproduces the input metric at u = 0 (" << d << ")");
 }
 
 void bad_input()
@@ -594,5 +733,6 @@ int main()
   SMDF::read_triangle_mesh(dir + "/meshes/genus3_vhacd.off", g3);
   genus_three(g3, "genus3_vhacd.off");
   rotation_compensation(g3);
+  circle_packing(dir);
   return smdf_test::finish();
 }

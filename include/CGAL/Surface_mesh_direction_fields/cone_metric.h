@@ -16,6 +16,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/ricci_flow.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/cone_metric_phases.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/cone_holes.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/circle_packing_flow.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 
@@ -37,6 +38,20 @@ namespace Surface_mesh_direction_fields {
 
 /// \ingroup PkgSurfaceMeshDirectionFieldsConeMetrics
 /// Outcome of compute_cone_metric().
+/// \ingroup PkgSurfaceMeshDirectionFieldsConeMetrics
+/// The discrete Ricci flows of compute_cone_metric().
+enum Ricci_flow_scheme {
+  /// discrete conformal vertex scaling \f$l_{ab} = l^0_{ab} e^{(u_a + u_b)/2}\f$ (Springborn,
+  /// Schroeder, Pinkall 2008), with intrinsic Delaunay flips when needed: the default
+  VERTEX_SCALING,
+  /// inversive distance circle packing \f$l_{ab}^2 = r_a^2 + r_b^2 + 2 r_a r_b I_{ab}\f$,
+  /// \f$r_v = r^0_v e^{u_v}\f$, the scheme of Lai et al. 2010 (after Jin, Kim, Luo, Gu 2008); the
+  /// inversive distances are chosen so that \f$u = 0\f$ reproduces the input metric
+  /// (\f$r^0_v\f$ a third of the shortest edge at \f$v\f$); on the input triangulation only
+  /// (no flips)
+  INVERSIVE_DISTANCE_CIRCLE_PACKING
+};
+
 struct Cone_metric_status
 {
   bool converged = false;          ///< `true` if the maximum curvature error is at most the tolerance
@@ -178,6 +193,13 @@ struct No_cone_metric_visitor { void operator()(int, double) const {} };
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{ricci_flow_scheme}
+///     \cgalParamDescription{the discrete Ricci flow; with `INVERSIVE_DISTANCE_CIRCLE_PACKING` the
+///       triangulation is never flipped, the conformal factors are \f$u_v = \log(r_v / r^0_v)\f$ and
+///       the area is not normalised (see \ref SMDFSecCirclePacking)}
+///     \cgalParamType{`Ricci_flow_scheme`}
+///     \cgalParamDefault{`VERTEX_SCALING`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{sparse_linear_solver}
 ///     \cgalParamDescription{the solver of the Newton systems (copied)}
 ///     \cgalParamType{a model of `SparseCholeskySolver`, or CGAL's `Eigen_solver_traits` of a direct symmetric solver}
@@ -216,6 +238,7 @@ Cone_metric_status compute_cone_metric(const TriangleMesh& tm,
   auto visitor = choose_parameter(get_parameter(np, CGAL::internal_np::visitor),
                                   internal::No_cone_metric_visitor());
   const bool allow_flips = choose_parameter(get_parameter(np, internal_np::intrinsic_edge_flips), true);
+  const Ricci_flow_scheme scheme = choose_parameter(get_parameter(np, internal_np::ricci_flow_scheme), VERTEX_SCALING);
 
   const Intrinsic_mesh<TriangleMesh> im = internal::get_intrinsic_mesh(tm, np);
   const internal::Mesh_arrays<TriangleMesh>& m = im.arrays();
@@ -238,9 +261,22 @@ Cone_metric_status compute_cone_metric(const TriangleMesh& tm,
         holed.mesh, holed.target, holed.output_length,
         parameters::edge_length_map(holed.input_length).conformal_factor_map(holed.u)
             .number_of_iterations(max_iterations).curvature_tolerance(tol).visitor(visitor)
-            .intrinsic_edge_flips(allow_flips).sparse_linear_solver(solver));
+            .intrinsic_edge_flips(allow_flips).sparse_linear_solver(solver).ricci_flow_scheme(scheme));
     holed.map_back(m, output_lengths, np);
     st.punched_vertices.assign(punched.begin(), punched.end());
+    st.seconds = internal::seconds_since(t0);
+    return st;
+  }
+
+  // --- 3'. the circle packing flow of Lai et al., on the input triangulation
+  if(scheme == INVERSIVE_DISTANCE_CIRCLE_PACKING) {
+    internal::Circle_packing_flow<TriangleMesh, Solver> flow(m, topo, solver);
+    std::vector<double> u(nv, 0.), len;
+    internal::Vertex_scaling_result r = flow.run(target, u, len, max_iterations, tol, visitor);
+    Cone_metric_status st;
+    internal::put_input_edge_lengths(m, len, output_lengths);
+    internal::put_conformal_factors(m, np, [&u](std::size_t v) { return u[v]; });
+    internal::put_flow_outcome(r, st);
     st.seconds = internal::seconds_since(t0);
     return st;
   }
