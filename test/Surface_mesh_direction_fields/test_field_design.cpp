@@ -441,6 +441,18 @@ void compensated(const Surface_mesh& mesh, const LengthMap& flat, const std::map
   for(std::size_t i = 0; i < st.periods.size(); ++i)
     periods_ok = periods_ok && std::abs(std::remainder(st.holonomy[i] + st.periods[i], 2 * M_PI / N)) < 1e-12 && std::abs(st.periods[i]) <= M_PI / N + 1e-12;
   SMDF_CHECK_MSG(periods_ok, name << ": every handle loop's holonomy plus its period is a multiple of 2 pi / N");
+  {   // chosen turning numbers: one more quarter turn on the first loop, the others as before
+    std::vector<double> turning;
+    for(std::size_t i = 0; i < st.periods.size(); ++i) turning.push_back(std::round((st.holonomy[i] + st.periods[i]) / (2 * M_PI) * N) / N + (i == 0 ? 1. / N : 0.));
+    auto va2 = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+    auto fa2 = get(CGAL::dynamic_face_property_t<double>(), mesh);
+    const auto st2 = SMDF::rotation_compensated_field(mesh, N, va2, fa2, np.generator_turning_numbers(turning));
+    const auto ft2 = SMDF::field_singularities(mesh, fa2, SMDF::parameters::symmetry_order(N).edge_length_map(flat));
+    std::map<Vertex, double> got2(ft2.singularities.begin(), ft2.singularities.end()), want2;
+    for(const auto& c : cones) want2[c.first] = std::round(c.second / (2 * M_PI) * N) / N;
+    SMDF_CHECK_MSG(st2.success && std::abs(st2.periods[0] - st.periods[0] - 2 * M_PI / N) < 1e-9 && got2 == want2,
+                   name << ": chosen turning numbers change the periods by 2 pi / N and keep the singularities");
+  }
   const auto ft = SMDF::field_singularities(mesh, fa, SMDF::parameters::symmetry_order(N).edge_length_map(flat));
   std::map<Vertex, double> got(ft.singularities.begin(), ft.singularities.end()), want;
   for(const auto& c : cones) want[c.first] = std::round(c.second / (2 * M_PI) * N) / N;

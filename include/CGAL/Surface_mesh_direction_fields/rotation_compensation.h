@@ -38,9 +38,9 @@ struct Rotation_compensation_status
   /// per handle loop (the primal loops of the tree-cotree handle generators, in their order):
   /// the Levi-Civita holonomy of the metric along it, in \f$(-\pi, \pi]\f$
   std::vector<double> holonomy;
-  /// per handle loop: the period \f$\int_\gamma \omega\f$ of the compensating 1-form, the
-  /// multiple of \f$2\pi/N\f$ nearest to \f$-h(\gamma)\f$ minus \f$h(\gamma)\f$ (so the field turns
-  /// by a multiple of \f$2\pi/N\f$ relative to parallel transport)
+  /// per handle loop: the period \f$\int_\gamma \omega\f$ of the compensating 1-form,
+  /// \f$2\pi t - h(\gamma)\f$ for the loop's turning number \f$t\f$ (the field's total rotation
+  /// along the loop over \f$2\pi\f$, a multiple of \f$1/N\f$)
   std::vector<double> periods;
   /// largest residual of the harmonic 1-form: its sum around a face (closedness) or its
   /// cotan-weighted divergence at a vertex (co-closedness)
@@ -96,7 +96,10 @@ struct Vertex_frames
 /// `edge_length_map`: its singularities are then exactly the cones, of index \f$K/2\pi\f$.
 ///
 /// Named parameters: `edge_length_map` (a flat cone metric: angle defect 0 except at the
-/// cones) or `intrinsic_mesh`, and the index maps. Throws `Input_error` for meshes with
+/// cones) or `intrinsic_mesh`, the index maps, and `generator_turning_numbers` (a
+/// `std::vector<double>`, one multiple of \f$1/N\f$ per handle loop: the field's total rotation
+/// along it over \f$2\pi\f$; default: the multiple nearest to the loop's holonomy, the least
+/// compensation). Throws `Input_error` for meshes with
 /// boundary or several components, \f$N < 1\f$, and the errors of `Intrinsic_mesh`; numerical
 /// failure is in the status.
 template <typename TriangleMesh, typename VertexAngleMap, typename FaceAngleMap,
@@ -105,7 +108,14 @@ Rotation_compensation_status rotation_compensated_field(const TriangleMesh& tm, 
                                                         FaceAngleMap face_angles,
                                                         const NamedParameters& np = parameters::default_values())
 {
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
   if(N < 1) throw Input_error(Input_error::INVALID_ARGUMENT, "symmetry order N must be at least 1, got " + std::to_string(N));
+  const std::vector<double> turning =
+      choose_parameter(get_parameter(np, internal_np::generator_turning_numbers), std::vector<double>());
+  for(double t : turning)
+    if(!std::isfinite(t) || std::abs(t * N - std::round(t * N)) > 1e-9)
+      throw Input_error(Input_error::INVALID_ARGUMENT, "generator turning numbers must be multiples of 1/N, got " + std::to_string(t));
   const Intrinsic_mesh<TriangleMesh> im = internal::get_intrinsic_mesh(tm, np);
   const internal::Mesh_arrays<TriangleMesh>& m = im.arrays();
   const internal::Topology_arrays& topo = im.topology_arrays();
@@ -150,6 +160,9 @@ Rotation_compensation_status rotation_compensated_field(const TriangleMesh& tm, 
   std::vector<const internal::Generator_arrays*> loops;
   for(const auto& g : im.generator_arrays()) if(g.handle) loops.push_back(&g);
   const std::size_t k = loops.size();
+  if(!turning.empty() && turning.size() != k)
+    throw Input_error(Input_error::INVALID_ARGUMENT, "generator_turning_numbers: " + std::to_string(turning.size()) +
+                                                     " values for " + std::to_string(k) + " handle loops");
   std::vector<std::vector<double>> omega(k);
   auto form_at = [](const std::vector<double>& f, int h) { return (h & 1) ? -f[std::size_t(h >> 1)] : f[std::size_t(h >> 1)]; };
   std::vector<char> cone(nv, 0);
@@ -210,7 +223,10 @@ Rotation_compensation_status rotation_compensated_field(const TriangleMesh& tm, 
     // transport around the loop returns to the start vertex: holonomy = total mod 2 pi
     hol = internal::wrap_angle(hol);
     st.holonomy.push_back(hol);
-    target[Eigen::Index(i)] = period * std::round(hol / period) - hol;
+    // the field's total rotation along the loop, 2 pi t: the chosen turning number, else the
+    // multiple of 2 pi / N nearest to the holonomy (the least compensation)
+    const double turn = i < turning.size() ? 2 * CGAL_PI * turning[i] : period * std::round(hol / period);
+    target[Eigen::Index(i)] = turn - hol;
     st.periods.push_back(target[Eigen::Index(i)]);
     for(std::size_t j = 0; j < k; ++j) {
       double s = 0;
