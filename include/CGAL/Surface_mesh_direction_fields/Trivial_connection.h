@@ -452,7 +452,7 @@ public:
     st.scaled_residual = st.residual / (std::max)(1., sys_.rows_ ? b.cwiseAbs().maxCoeff() : 0.);
     measure_rotations(xc, st);
     if(!(st.max_holonomy_error <= 1e-12) && solver_kind_ == CHOLMOD_NORMAL_EQUATIONS && sys_.rows_ > 0) {
-      if(condition_ == 0) condition_ = estimate_condition();
+      if(condition_ == 0) condition_ = sys_.condition_estimate(chol_);
       st.condition_estimate = condition_;
     }
     st.success = false;
@@ -669,33 +669,6 @@ private:
     }
   }
 
-  // lambda_max / lambda_min of A W A^T: 20 power iterations with the matrix, 20 with its
-  // factored inverse (each an underestimate of its eigenvalue, so the ratio is a lower bound,
-  // usually within a factor of a few). Only for the diagnosis of inaccurate solves.
-  double estimate_condition() const
-  {
-    const Eigen::Index n = Eigen::Index(sys_.rows_);
-    auto apply = [this](const Eigen::VectorXd& v) -> Eigen::VectorXd {
-      return sys_.A_ * (sys_.W_.asDiagonal() * (sys_.A_.transpose() * v));
-    };
-    auto largest = [n](auto op) {
-      Eigen::VectorXd v(n);
-      for(Eigen::Index i = 0; i < n; ++i) v[i] = 1. + 0.5 * std::sin(1.7 * double(i));
-      double lambda = 0;
-      for(int it = 0; it < 20; ++it) {
-        v.normalize();
-        const Eigen::VectorXd w = op(v);
-        lambda = v.dot(w);
-        if(!std::isfinite(lambda) || w.norm() == 0) return 0.;
-        v = w;
-      }
-      return lambda;
-    };
-    const double big = largest(apply);
-    const double inverse_small = largest([this](const Eigen::VectorXd& v) { return Eigen::VectorXd(chol_.solve(v)); });
-    return big > 0 && inverse_small > 0 ? big * inverse_small : std::numeric_limits<double>::infinity();
-  }
-
   // The adjustment angles for the right-hand side b, one per column of A.
   bool solve_columns(const Eigen::VectorXd& b, Eigen::VectorXd& xc, Trivial_connection_status& st) const
   {
@@ -740,7 +713,7 @@ private:
   int N_ = 1;
   Connection_weights weights_ = UNIT_WEIGHTS;
   double clamp_ = 1e-3, cap_ = 10;
-  mutable double condition_ = 0;   // estimate_condition() of the current factorisation (0: not yet)
+  double condition_ = 0;   // sys_.condition_estimate() of the current factorisation (0: not yet)
   Connection_solver solver_kind_ = CHOLMOD_NORMAL_EQUATIONS;
 
   internal::Connection_system sys_;

@@ -13,6 +13,7 @@
 #include <CGAL/Surface_mesh_direction_fields/Intrinsic_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/errors.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/cholesky_solver_traits.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/cotan_weights.h>
 #include <CGAL/Surface_mesh_direction_fields/intrinsic_triangle.h>
 
 #include <Eigen/Dense>
@@ -209,17 +210,7 @@ public:
     base_.resize(m.number_of_faces());
     for(std::size_t f = 0; f < base_.size(); ++f) base_[f] = double(get(field, m.faces[f]));
     // dual Laplacian weights 1 / w_e, w_e the cotan weight (raised to 1e-3 of the mean)
-    std::vector<double> w(m.number_of_edges(), 0.);
-    for(std::size_t f = 0; f < m.number_of_faces(); ++f) {
-      const int h0 = m.face_halfedge[f], h1 = m.next[std::size_t(h0)], h2 = m.next[std::size_t(h1)];
-      const double l[3] = {m.edge_length(h0), m.edge_length(h1), m.edge_length(h2)};
-      const double inv8A = 1. / (8. * triangle_area(l[0], l[1], l[2]));
-      const int hs[3] = {h0, h1, h2};
-      for(int i = 0; i < 3; ++i) {
-        const double a = l[i], b = l[(i + 1) % 3], c = l[(i + 2) % 3];
-        w[std::size_t(hs[i] >> 1)] += (b * b + c * c - a * a) * inv8A;
-      }
-    }
+    std::vector<double> w = internal::cotan_edge_weights(m);
     double sum = 0;
     std::size_t count = 0;
     for(double x : w) if(x > 0 && std::isfinite(x)) { sum += x; ++count; }

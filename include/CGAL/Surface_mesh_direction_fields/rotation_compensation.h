@@ -11,6 +11,7 @@
 #include <CGAL/Surface_mesh_direction_fields/Cholmod_cholesky.h>
 #include <CGAL/Surface_mesh_direction_fields/Intrinsic_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/errors.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/cotan_weights.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/development.h>
 
 #include <Eigen/Dense>
@@ -130,15 +131,7 @@ Rotation_compensation_status rotation_compensated_field(const TriangleMesh& tm, 
   const internal::Vertex_frames<TriangleMesh> frames(m);
 
   // cotan weights of the metric (raised to 1e-3 of their mean) and the Laplacian, factored once
-  std::vector<double> w(ne, 0.);
-  for(std::size_t f = 0; f < m.number_of_faces(); ++f) {
-    const int h0 = m.face_halfedge[f], h1 = m.next[std::size_t(h0)], h2 = m.next[std::size_t(h1)];
-    const int hs[3] = {h0, h1, h2};
-    const double l[3] = {m.edge_length(h0), m.edge_length(h1), m.edge_length(h2)};
-    const double inv8A = 1. / (8. * triangle_area(l[0], l[1], l[2]));
-    for(int i = 0; i < 3; ++i)
-      w[std::size_t(hs[i] >> 1)] += (l[(i + 1) % 3] * l[(i + 1) % 3] + l[(i + 2) % 3] * l[(i + 2) % 3] - l[i] * l[i]) * inv8A;
-  }
+  std::vector<double> w = internal::cotan_edge_weights(m);
   double sum = 0;
   for(double x : w) sum += (x > 0 && std::isfinite(x)) ? x : 0.;
   const double floor = 1e-3 * sum / double(ne);
@@ -215,12 +208,7 @@ Rotation_compensation_status rotation_compensated_field(const TriangleMesh& tm, 
   for(std::size_t i = 0; i < k; ++i) {
     double hol = 0;
     const std::vector<int>& p = primal[i];
-    for(std::size_t s = 0; s < p.size(); ++s) {
-      hol += frames.transport(p[s]);
-      // entering the next vertex along p[s], leaving along p[s + 1]: the change of frame is
-      // already in transport(); nothing else to add
-    }
-    // transport around the loop returns to the start vertex: holonomy = total mod 2 pi
+    for(int h : p) hol += frames.transport(h);   // each step maps source frame to target frame
     hol = internal::wrap_angle(hol);
     st.holonomy.push_back(hol);
     // the field's total rotation along the loop, 2 pi t: the chosen turning number, else the

@@ -8,6 +8,7 @@
 // per interior edge (the adjustment angles x), one row per interior vertex (minus one per
 // closed component), per generator and per directional-constraint path; A x = -b. The
 // minimum-norm solution is x = W A^T y with (A W A^T) y = -b, W the diagonal weights.
+#include <CGAL/Surface_mesh_direction_fields/internal/cotan_weights.h>
 #include <CGAL/Surface_mesh_direction_fields/Cholmod_cholesky.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh_arrays.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/development.h>
@@ -112,18 +113,8 @@ struct Connection_system
     }
     W_.setOnes(Eigen::Index(edge_of_col_.size()));
     if(rule.unit) return;
-    // per face: cot of the corner opposite each halfedge, (a^2 + b^2 - c^2) / 4A, added to w_e / 2
-    std::vector<double> w(m_.number_of_edges(), 0.);
-    const double lowest_cot = rule.nonnegative_cotangents ? 0. : -std::numeric_limits<double>::infinity();
-    for(std::size_t f = 0; f < m_.number_of_faces(); ++f) {
-      const int h0 = m_.face_halfedge[f], h1 = m_.next[h0], h2 = m_.next[h1];
-      const double l0 = m_.edge_length(h0), l1 = m_.edge_length(h1), l2 = m_.edge_length(h2);
-      const double q0 = l0 * l0, q1 = l1 * l1, q2 = l2 * l2;
-      const double inv4A = 1. / (4. * triangle_area(l0, l1, l2));
-      w[h0 >> 1] += 0.5 * (std::max)((q1 + q2 - q0) * inv4A, lowest_cot);
-      w[h1 >> 1] += 0.5 * (std::max)((q2 + q0 - q1) * inv4A, lowest_cot);
-      w[h2 >> 1] += 0.5 * (std::max)((q0 + q1 - q2) * inv4A, lowest_cot);
-    }
+    const std::vector<double> w =
+        cotan_edge_weights(m_, rule.nonnegative_cotangents ? 0. : -std::numeric_limits<double>::infinity());
     double sum = 0;
     std::size_t count = 0;
     for(int e : edge_of_col_) if(w[e] > 0 && std::isfinite(w[e])) { sum += w[e]; ++count; }
@@ -135,6 +126,34 @@ struct Connection_system
     }
   }
 
+
+  // lambda_max / lambda_min of A W A^T: 20 power iterations with the matrix, 20 with its
+  // factored inverse (each an underestimate of its eigenvalue, so the ratio is a lower bound,
+  // usually within a factor of a few). Only for the diagnosis of inaccurate solves.
+  template <typename Solver>
+  double condition_estimate(const Solver& chol) const
+  {
+    const Eigen::Index n = Eigen::Index(rows_);
+    auto apply = [this](const Eigen::VectorXd& v) -> Eigen::VectorXd {
+      return A_ * (W_.asDiagonal() * (A_.transpose() * v));
+    };
+    auto largest = [n](auto op) {
+      Eigen::VectorXd v(n);
+      for(Eigen::Index i = 0; i < n; ++i) v[i] = 1. + 0.5 * std::sin(1.7 * double(i));
+      double lambda = 0;
+      for(int it = 0; it < 20; ++it) {
+        v.normalize();
+        const Eigen::VectorXd w = op(v);
+        lambda = v.dot(w);
+        if(!std::isfinite(lambda) || w.norm() == 0) return 0.;
+        v = w;
+      }
+      return lambda;
+    };
+    const double big = largest(apply);
+    const double inverse_small = largest([&chol](const Eigen::VectorXd& v) { return Eigen::VectorXd(chol.solve(v)); });
+    return big > 0 && inverse_small > 0 ? big * inverse_small : std::numeric_limits<double>::infinity();
+  }
 
   // Rows: interior vertices (minus one per closed component), generators, constraint paths.
   // A is assembled column by column (one column per interior edge): the vertex rows of an edge
