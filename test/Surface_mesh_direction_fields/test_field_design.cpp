@@ -422,6 +422,65 @@ void editing(const Surface_mesh& spot)
 }
 
 
+// Editing the vertex field of rotation compensation (Lai et al. 4.2, at vertices, cotan
+// Laplacian): hard constraints met to 1e-12 with the factorisation reused for new values, soft
+// ones approached monotonically, lengths within the range of their constraints, and the face
+// version read back on the metric has exactly the cones after every edit.
+template <typename LengthMap, typename VertexAngles>
+void vertex_editing(const Surface_mesh& mesh, const LengthMap& flat, const VertexAngles& field, const std::map<Vertex, double>& want,
+                    int N, const std::string& name)
+{
+  const auto np = SMDF::parameters::edge_length_map(flat);
+  SMDF::Rosy_vertex_field_editor<Surface_mesh> editor(mesh, N, field, np);
+  auto fa = get(CGAL::dynamic_face_property_t<double>(), mesh);
+  auto read_back = [&](const std::string& what) {
+    editor.face_angles(fa);
+    const auto ft = SMDF::field_singularities(mesh, fa, SMDF::parameters::symmetry_order(N).edge_length_map(flat));
+    std::map<Vertex, double> got(ft.singularities.begin(), ft.singularities.end());
+    SMDF_CHECK_MSG(got == want, name << ", vertex editing " << what << ": the read-back is the cones (" << got.size() << " found)");
+  };
+  read_back("before");
+  std::vector<Vertex> picks;   // three vertices away from the cones, spread over the index range
+  const std::size_t nv = num_vertices(mesh);
+  for(std::size_t i = 1; picks.size() < 3 && i < nv; i += nv / 4)
+    if(!want.count(Vertex(Surface_mesh::size_type(i)))) picks.push_back(Vertex(Surface_mesh::size_type(i)));
+  std::vector<std::pair<Vertex, double>> c;
+  for(std::size_t i = 0; i < picks.size(); ++i) c.emplace_back(picks[i], get(field, picks[i]) + 0.2 * double(i + 1) / N);
+  editor.set_direction_constraints(c);
+  for(int round = 0; round < 2; ++round) {
+    const SMDF::Field_edit_status st = editor.edit();
+    SMDF_CHECK_MSG(st.success && st.max_direction_error <= 1e-12, name << ", vertex editing: hard direction error " << st.max_direction_error);
+    if(round == 1) SMDF_CHECK_MSG(st.factor_seconds == 0, name << ", vertex editing: new values reuse the factorisation");
+    read_back(round == 0 ? "after a hard edit" : "after new values");
+    for(auto& p : c) p.second -= 0.3 / N;
+    editor.set_direction_constraints(c);
+  }
+  double last = 1e300;
+  bool monotone = true;
+  for(double lambda : {0.01, 1., 100.}) {
+    editor.set_direction_constraints(c, lambda);
+    const SMDF::Field_edit_status st = editor.edit();
+    monotone = monotone && st.success && st.max_direction_error < last;
+    last = st.max_direction_error;
+    read_back("after a soft edit");
+  }
+  SMDF_CHECK_MSG(monotone, name << ", vertex editing: soft constraints approached monotonically (" << last << " at weight 100)");
+  const std::vector<std::pair<Vertex, double>> lc = {{picks[0], 0.5}, {picks[1], 2.0}};
+  editor.set_length_constraints(lc);
+  const SMDF::Field_edit_status ls = editor.edit();
+  auto lengths = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+  editor.vertex_lengths(lengths);
+  double lo = 1e300, hi = 0;
+  for(auto v : vertices(mesh)) { lo = std::min(lo, get(lengths, v)); hi = std::max(hi, get(lengths, v)); }
+  SMDF_CHECK_MSG(ls.success && ls.max_length_error <= 1e-12 && lo >= 0.5 * (1 - 1e-12) && hi <= 2.0 * (1 + 1e-12),
+                 name << ", vertex editing: hard lengths, error " << ls.max_length_error << ", in [" << lo << ", " << hi << "]");
+  bool cone_refused = false;
+  try { editor.set_direction_constraints(std::vector<std::pair<Vertex, double>>{{want.begin()->first, 0.}}); }
+  catch(const SMDF::Input_error& e) { cone_refused = std::string(e.what()).find("cone") != std::string::npos; }
+  SMDF_CHECK_MSG(cone_refused, name << ", vertex editing: a constraint at a cone is refused");
+}
+
+
 // Rotation compensation (Lai et al. 4.1.3.1) on a flat cone metric of genus > 0 whose cone
 // curvatures are multiples of 2 pi / N: the field is an N-RoSy field across every edge, its
 // face version read back on the metric has exactly the cones as singularities, the 1-form is
@@ -457,6 +516,19 @@ void compensated(const Surface_mesh& mesh, const LengthMap& flat, const std::map
   std::map<Vertex, double> got(ft.singularities.begin(), ft.singularities.end()), want;
   for(const auto& c : cones) want[c.first] = std::round(c.second / (2 * M_PI) * N) / N;
   SMDF_CHECK_MSG(got == want, name << ": the face field read back on the metric has exactly the " << want.size() << " cones (found " << got.size() << ")");
+  {   // the paper's construction of the harmonic forms (cut, Dirichlet jump, projection): the same field
+    auto va2 = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+    auto fa2 = get(CGAL::dynamic_face_property_t<double>(), mesh);
+    const auto st2 = SMDF::rotation_compensated_field(mesh, N, va2, fa2, np.harmonic_form_construction(SMDF::CUT_AND_DIRICHLET));
+    double d = 0, dp = 0;
+    for(auto v : vertices(mesh))
+      if(!cones.count(v)) d = std::max(d, std::abs(std::remainder(get(va, v) - get(va2, v), 2 * M_PI)));
+    for(std::size_t i = 0; i < st.periods.size() && i < st2.periods.size(); ++i) dp = std::max(dp, std::abs(st.periods[i] - st2.periods[i]));
+    SMDF_CHECK_MSG(st2.success && st2.max_harmonic_residual < 1e-8 && d < 1e-8 && dp < 1e-12,
+                   name << ": the cut-and-Dirichlet harmonic forms give the same field (largest angle difference " << d << " rad) "
+                        << st2.message);
+  }
+  vertex_editing(mesh, flat, va, want, N, name);
   // the vertex field pulled back to the embedding: unit vectors in the averaged tangent planes
   auto vv = get(CGAL::dynamic_vertex_property_t<K::Vector_3>(), mesh);
   SMDF::vertex_field_to_vectors(mesh, va, vv);

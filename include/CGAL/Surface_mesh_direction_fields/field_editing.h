@@ -4,9 +4,9 @@
 #ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_FIELD_EDITING_H
 #define CGAL_SURFACE_MESH_DIRECTION_FIELDS_FIELD_EDITING_H
 
-// Editing an N-RoSy field with direction and length constraints (Lai et al. 2010, section 4.2):
-// a rotation angle psi and a log-length rho, harmonic away from the constraints, added to the
-// field. Neither creates nor moves a singularity: psi is a function, so the rotation it adds
+// Editing an N-RoSy field with direction and length constraints (Lai et al. 2010, section 4.2),
+// face-based or vertex-based: a rotation angle psi and a log-length rho, harmonic away from the
+// constraints, added to the field. Neither creates nor moves a singularity: psi is a function, so the rotation it adds
 // around any loop telescopes to zero.
 
 #include <CGAL/Surface_mesh_direction_fields/Cholmod_cholesky.h>
@@ -14,6 +14,7 @@
 #include <CGAL/Surface_mesh_direction_fields/errors.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/cholesky_solver_traits.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/cotan_weights.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/vertex_frames.h>
 #include <CGAL/Surface_mesh_direction_fields/intrinsic_triangle.h>
 
 #include <Eigen/Dense>
@@ -44,34 +45,32 @@ struct Field_edit_status
 
 namespace internal {
 
-// One scalar on the faces, harmonic for the dual Laplacian except at the constrained faces:
-// hard constraints are Dirichlet values, soft ones add weight * (s_f - value)^2 to the energy
-// s^T L s. Faces of components without a constraint keep 0. Factored once per set of
-// constrained faces and weight; new values cost one solve.
-class Face_harmonic_interpolation
+// One scalar per node of a weighted graph (the faces with the dual Laplacian, or the vertices
+// with the cotan Laplacian), harmonic except at the constrained nodes: hard constraints are
+// Dirichlet values, soft ones add weight * (s_i - value)^2 to the energy s^T L s. Nodes of
+// components without a constraint keep 0. Factored once per set of constrained nodes and
+// weight; new values cost one solve.
+class Harmonic_interpolation
 {
 public:
-  template <typename TM>
-  void set_up(const Mesh_arrays<TM>& m, const std::vector<double>& edge_weight)
+  struct Link { int a, b; double w; };
+
+  void set_up(std::size_t n, std::vector<Link> links)
   {
-    nf_ = m.number_of_faces();
-    adj_.clear();
-    for(std::size_t e = 0; e < m.number_of_edges(); ++e) {
-      const int f = m.face[2 * e], g = m.face[2 * e + 1];
-      if(f >= 0 && g >= 0 && f != g) adj_.push_back({f, g, edge_weight[e]});
-    }
-    component_.assign(nf_, -1);   // components of the dual graph
-    std::vector<std::vector<int>> nbr(nf_);
-    for(const Link& l : adj_) { nbr[std::size_t(l.f)].push_back(l.g); nbr[std::size_t(l.g)].push_back(l.f); }
+    n_ = n;
+    links_.swap(links);
+    component_.assign(n_, -1);   // components of the graph
+    std::vector<std::vector<int>> nbr(n_);
+    for(const Link& l : links_) { nbr[std::size_t(l.a)].push_back(l.b); nbr[std::size_t(l.b)].push_back(l.a); }
     int c = 0;
-    for(std::size_t s = 0; s < nf_; ++s) {
+    for(std::size_t s = 0; s < n_; ++s) {
       if(component_[s] >= 0) continue;
       std::vector<int> stack(1, int(s));
       component_[s] = c;
       while(!stack.empty()) {
-        const int f = stack.back();
+        const int i = stack.back();
         stack.pop_back();
-        for(int g : nbr[std::size_t(f)]) if(component_[std::size_t(g)] < 0) { component_[std::size_t(g)] = c; stack.push_back(g); }
+        for(int j : nbr[std::size_t(i)]) if(component_[std::size_t(j)] < 0) { component_[std::size_t(j)] = c; stack.push_back(j); }
       }
       ++c;
     }
@@ -79,35 +78,35 @@ public:
     factored_ = false;
   }
 
-  // The constrained faces (distinct) and the soft weight (0: hard); refactors on change.
-  void set_constraints(const std::vector<int>& faces, double soft_weight)
+  // The constrained nodes (distinct) and the soft weight (0: hard); refactors on change.
+  void set_constraints(const std::vector<int>& nodes, double soft_weight)
   {
-    if(faces != faces_ || soft_weight != weight_) factored_ = false;
-    faces_ = faces;
+    if(nodes != nodes_ || soft_weight != weight_) factored_ = false;
+    nodes_ = nodes;
     weight_ = soft_weight;
   }
 
-  // s for the values of the constrained faces (in set_constraints() order)
+  // s for the values of the constrained nodes (in set_constraints() order)
   bool solve(const std::vector<double>& values, std::vector<double>& s, std::string& message, double& factor_seconds)
   {
-    s.assign(nf_, 0.);
-    if(faces_.empty()) return true;
+    s.assign(n_, 0.);
+    if(nodes_.empty()) return true;
     if(!factored_) {
       const auto t0 = std::chrono::steady_clock::now();
       if(!factor(message)) return false;
       factor_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     }
     Eigen::VectorXd b = Eigen::VectorXd::Zero(Eigen::Index(unknowns_.size()));
-    for(std::size_t k = 0; k < faces_.size(); ++k) {
-      const int f = faces_[k];
-      if(weight_ > 0) b[column_[std::size_t(f)]] += weight_ * values[k];
-      else s[std::size_t(f)] = values[k];
+    for(std::size_t k = 0; k < nodes_.size(); ++k) {
+      const int i = nodes_[k];
+      if(weight_ > 0) b[column_[std::size_t(i)]] += weight_ * values[k];
+      else s[std::size_t(i)] = values[k];
     }
     if(weight_ <= 0)   // move the Dirichlet values to the right-hand side
-      for(const Link& l : adj_) {
-        const int cf = column_[std::size_t(l.f)], cg = column_[std::size_t(l.g)];
-        if(cf >= 0 && cg < 0 && is_fixed_[std::size_t(l.g)]) b[cf] += l.w * s[std::size_t(l.g)];
-        if(cg >= 0 && cf < 0 && is_fixed_[std::size_t(l.f)]) b[cg] += l.w * s[std::size_t(l.f)];
+      for(const Link& l : links_) {
+        const int ca = column_[std::size_t(l.a)], cb = column_[std::size_t(l.b)];
+        if(ca >= 0 && cb < 0 && is_fixed_[std::size_t(l.b)]) b[ca] += l.w * s[std::size_t(l.b)];
+        if(cb >= 0 && ca < 0 && is_fixed_[std::size_t(l.a)]) b[cb] += l.w * s[std::size_t(l.a)];
       }
     if(unknowns_.empty()) return true;
     const Eigen::VectorXd x = chol_.solve(b);
@@ -118,33 +117,31 @@ public:
   }
 
 private:
-  struct Link { int f, g; double w; };
-
   bool factor(std::string& message)
   {
     std::vector<char> constrained_component(std::size_t(components_), 0);
-    is_fixed_.assign(nf_, 0);
-    for(int f : faces_) {
-      constrained_component[std::size_t(component_[std::size_t(f)])] = 1;
-      if(weight_ <= 0) is_fixed_[std::size_t(f)] = 1;
+    is_fixed_.assign(n_, 0);
+    for(int i : nodes_) {
+      constrained_component[std::size_t(component_[std::size_t(i)])] = 1;
+      if(weight_ <= 0) is_fixed_[std::size_t(i)] = 1;
     }
-    // unknowns: faces of constrained components, minus the Dirichlet faces
-    column_.assign(nf_, -1);
+    // unknowns: nodes of constrained components, minus the Dirichlet nodes
+    column_.assign(n_, -1);
     unknowns_.clear();
-    for(std::size_t f = 0; f < nf_; ++f)
-      if(constrained_component[std::size_t(component_[f])] && !is_fixed_[f]) {
-        column_[f] = int(unknowns_.size());
-        unknowns_.push_back(int(f));
+    for(std::size_t i = 0; i < n_; ++i)
+      if(constrained_component[std::size_t(component_[i])] && !is_fixed_[i]) {
+        column_[i] = int(unknowns_.size());
+        unknowns_.push_back(int(i));
       }
     std::vector<Eigen::Triplet<double>> t;
-    for(const Link& l : adj_) {
-      const int cf = column_[std::size_t(l.f)], cg = column_[std::size_t(l.g)];
-      if(cf >= 0) t.emplace_back(cf, cf, l.w);
-      if(cg >= 0) t.emplace_back(cg, cg, l.w);
-      if(cf >= 0 && cg >= 0) t.emplace_back((std::max)(cf, cg), (std::min)(cf, cg), -l.w);
+    for(const Link& l : links_) {
+      const int ca = column_[std::size_t(l.a)], cb = column_[std::size_t(l.b)];
+      if(ca >= 0) t.emplace_back(ca, ca, l.w);
+      if(cb >= 0) t.emplace_back(cb, cb, l.w);
+      if(ca >= 0 && cb >= 0) t.emplace_back((std::max)(ca, cb), (std::min)(ca, cb), -l.w);
     }
     if(weight_ > 0)
-      for(int f : faces_) t.emplace_back(column_[std::size_t(f)], column_[std::size_t(f)], weight_);
+      for(int i : nodes_) t.emplace_back(column_[std::size_t(i)], column_[std::size_t(i)], weight_);
     Cholmod_cholesky::Matrix L(Eigen::Index(unknowns_.size()), Eigen::Index(unknowns_.size()));
     L.setFromTriplets(t.begin(), t.end());
     L.makeCompressed();
@@ -153,11 +150,11 @@ private:
     return true;
   }
 
-  std::size_t nf_ = 0;
-  std::vector<Link> adj_;
+  std::size_t n_ = 0;
+  std::vector<Link> links_;
   std::vector<int> component_;
   int components_ = 0;
-  std::vector<int> faces_;
+  std::vector<int> nodes_;
   double weight_ = 0;
   bool factored_ = false;
   std::vector<char> is_fixed_;
@@ -165,11 +162,111 @@ private:
   Cholmod_cholesky chol_;
 };
 
+// What both editors share: an N-RoSy field as one angle per node, the constraints, and the two
+// interpolations psi (rotation) and rho (log-length) on the same graph.
+class Rosy_edit_core
+{
+public:
+  void set_up(int N, std::vector<double> base, const std::vector<Harmonic_interpolation::Link>& links)
+  {
+    if(N < 1) throw Input_error(Input_error::INVALID_ARGUMENT, "symmetry order N must be at least 1, got " + std::to_string(N));
+    N_ = N;
+    base_.swap(base);
+    rotation_.set_up(base_.size(), links);
+    length_.set_up(base_.size(), links);
+  }
+
+  // (node, value) pairs checked; `node_of` maps the user's descriptor to a node (-1: not in the
+  // mesh), `forbidden` names a node that cannot carry a constraint (or returns empty)
+  template <typename Range, typename NodeOf, typename Forbidden>
+  static void read(const Range& r, double weight, const char* what, const char* element, std::size_t n, NodeOf node_of,
+                   Forbidden forbidden, std::vector<int>& nodes, std::vector<double>& values)
+  {
+    if(!(weight >= 0) || !std::isfinite(weight))
+      throw Input_error(Input_error::INVALID_ARGUMENT, std::string(what) + " constraint weight must be a non-negative number");
+    std::vector<int> idx;
+    std::vector<double> v;
+    std::vector<char> seen(n, 0);
+    for(const auto& c : r) {
+      const int i = node_of(c.first);
+      if(i < 0 || std::size_t(i) >= n)
+        throw Input_error(Input_error::INVALID_ARGUMENT, std::string(what) + " constraint on a " + element + " that is not in the mesh");
+      const std::string name = std::string(element) + " " + std::to_string(i);
+      if(seen[std::size_t(i)]++)
+        throw Input_error(Input_error::INVALID_ARGUMENT, std::string(what) + " constraint: " + name + " is given twice");
+      if(!std::isfinite(double(c.second)))
+        throw Input_error(Input_error::INVALID_ARGUMENT, std::string(what) + " constraint on " + name + " is not finite");
+      const std::string why = forbidden(i);
+      if(!why.empty()) throw Input_error(Input_error::INVALID_ARGUMENT, std::string(what) + " constraint on " + name + ": " + why);
+      idx.push_back(i);
+      v.push_back(double(c.second));
+    }
+    nodes.swap(idx);
+    values.swap(v);
+  }
+
+  void set_directions(std::vector<int> nodes, std::vector<double> values, double weight)
+  {
+    direction_nodes_.swap(nodes);
+    direction_values_.swap(values);
+    rotation_.set_constraints(direction_nodes_, weight);
+  }
+
+  void set_lengths(std::vector<int> nodes, std::vector<double> values, double weight)
+  {
+    for(double v : values)
+      if(!(v > 0)) throw Input_error(Input_error::INVALID_ARGUMENT, "length constraints must be positive, got " + std::to_string(v));
+    length_nodes_.swap(nodes);
+    length_values_.swap(values);
+    length_.set_constraints(length_nodes_, weight);
+  }
+
+  Field_edit_status edit()
+  {
+    Field_edit_status st;
+    const auto t0 = std::chrono::steady_clock::now();
+    const double period = 2 * CGAL_PI / N_;
+    std::vector<double> delta(direction_nodes_.size());
+    for(std::size_t k = 0; k < delta.size(); ++k)
+      delta[k] = -std::remainder(base_[std::size_t(direction_nodes_[k])] - direction_values_[k], period);
+    std::vector<double> logs(length_values_.size());
+    for(std::size_t k = 0; k < logs.size(); ++k) logs[k] = std::log(length_values_[k]);
+    double f1 = 0, f2 = 0;
+    if(!rotation_.solve(delta, psi_, st.message, f1) || !length_.solve(logs, rho_, st.message, f2)) return st;
+    st.factor_seconds = f1 + f2;
+    st.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() - st.factor_seconds;
+    for(std::size_t k = 0; k < direction_nodes_.size(); ++k)
+      st.max_direction_error = (std::max)(st.max_direction_error, std::abs(std::remainder(angle(std::size_t(direction_nodes_[k])) - direction_values_[k], period)));
+    for(std::size_t k = 0; k < length_nodes_.size(); ++k)
+      st.max_length_error = (std::max)(st.max_length_error, std::abs(length(std::size_t(length_nodes_[k])) - length_values_[k]) / length_values_[k]);
+    st.success = true;
+    return st;
+  }
+
+  std::size_t size() const { return base_.size(); }
+  double rotation(std::size_t i) const { return psi_.empty() ? 0. : psi_[i]; }
+  double angle(std::size_t i) const { return base_[i] + rotation(i); }
+  double wrapped_angle(std::size_t i) const
+  {
+    const double a = angle(i);
+    return a - 2 * CGAL_PI * std::floor(a / (2 * CGAL_PI));
+  }
+  double length(std::size_t i) const { return rho_.empty() ? 1. : std::exp(rho_[i]); }
+
+private:
+  int N_ = 1;
+  std::vector<double> base_, psi_, rho_;
+  std::vector<int> direction_nodes_, length_nodes_;
+  std::vector<double> direction_values_, length_values_;
+  Harmonic_interpolation rotation_, length_;
+};
+
 } // namespace internal
 
 /// \ingroup PkgSurfaceMeshDirectionFieldsFieldDesign
-/// Edits a face-based N-RoSy field with direction and length constraints (Lai et al. 2010,
-/// section 4.2). The edit is a rotation angle \f$\psi\f$ and a log-length \f$\rho\f$ per face,
+/// Edits a face-based N-RoSy field with direction and length constraints on faces (Lai et al.
+/// 2010, section 4.2, on the faces; `Rosy_vertex_field_editor` is the paper's vertex version).
+/// The edit is a rotation angle \f$\psi\f$ and a log-length \f$\rho\f$ per face,
 /// each harmonic for the dual Laplacian of the metric (weights \f$1/w_e\f$ between the faces of
 /// edge \f$e\f$, \f$w_e\f$ the cotan weight, kept at least \f$10^{-3}\f$ times its mean) away from
 /// its constraints; the edited field is the input field rotated by \f$\psi\f$ with lengths
@@ -203,21 +300,19 @@ public:
   template <typename FaceAngleMap, typename NamedParameters = parameters::Default_named_parameters>
   Rosy_field_editor(const TriangleMesh& tm, int N, const FaceAngleMap& field,
                     const NamedParameters& np = parameters::default_values())
-    : im_(internal::get_intrinsic_mesh(tm, np)), N_(N)
+    : im_(internal::get_intrinsic_mesh(tm, np))
   {
-    if(N < 1) throw Input_error(Input_error::INVALID_ARGUMENT, "symmetry order N must be at least 1, got " + std::to_string(N));
     const internal::Mesh_arrays<TriangleMesh>& m = im_.arrays();
-    base_.resize(m.number_of_faces());
-    for(std::size_t f = 0; f < base_.size(); ++f) base_[f] = double(get(field, m.faces[f]));
-    // dual Laplacian weights 1 / w_e, w_e the cotan weight (raised to 1e-3 of the mean)
-    std::vector<double> w = internal::cotan_edge_weights(m);
-    double sum = 0;
-    std::size_t count = 0;
-    for(double x : w) if(x > 0 && std::isfinite(x)) { sum += x; ++count; }
-    const double floor = 1e-3 * (count ? sum / double(count) : 1.);
-    for(double& x : w) x = 1. / (x >= floor && std::isfinite(x) ? x : floor);
-    rotation_.set_up(m, w);
-    length_.set_up(m, w);
+    std::vector<double> base(m.number_of_faces());
+    for(std::size_t f = 0; f < base.size(); ++f) base[f] = double(get(field, m.faces[f]));
+    // dual Laplacian weights 1 / w_e between the faces of each interior edge
+    const std::vector<double> w = internal::floored_cotan_edge_weights(m);
+    std::vector<internal::Harmonic_interpolation::Link> links;
+    for(std::size_t e = 0; e < m.number_of_edges(); ++e) {
+      const int f = m.face[2 * e], g = m.face[2 * e + 1];
+      if(f >= 0 && g >= 0 && f != g) links.push_back({f, g, 1. / w[e]});
+    }
+    core_.set_up(N, std::move(base), links);
   }
 
   /// Replaces the direction constraints: pairs (face, angle in the face frame), each face once;
@@ -226,8 +321,10 @@ public:
   template <typename FaceAngleRange>
   void set_direction_constraints(const FaceAngleRange& constraints, double soft_weight = 0)
   {
-    read_constraints(constraints, soft_weight, direction_faces_, direction_values_, "direction");
-    rotation_.set_constraints(direction_faces_, soft_weight);
+    std::vector<int> nodes;
+    std::vector<double> values;
+    read(constraints, soft_weight, "direction", nodes, values);
+    core_.set_directions(std::move(nodes), std::move(values), soft_weight);
   }
 
   /// Replaces the length constraints: pairs (face, length > 0); `soft_weight` as for the
@@ -235,49 +332,22 @@ public:
   template <typename FaceLengthRange>
   void set_length_constraints(const FaceLengthRange& constraints, double soft_weight = 0)
   {
-    read_constraints(constraints, soft_weight, length_faces_, length_values_, "length");
-    for(double v : length_values_)
-      if(!(v > 0)) throw Input_error(Input_error::INVALID_ARGUMENT, "length constraints must be positive, got " + std::to_string(v));
-    length_.set_constraints(length_faces_, soft_weight);
+    std::vector<int> nodes;
+    std::vector<double> values;
+    read(constraints, soft_weight, "length", nodes, values);
+    core_.set_lengths(std::move(nodes), std::move(values), soft_weight);
   }
 
   /// Solves for \f$\psi\f$ and \f$\rho\f$ with the current constraints (factoring only when the
   /// constrained faces or the weights changed) and measures how far the edited field is from them.
-  Field_edit_status edit()
-  {
-    Field_edit_status st;
-    const auto t0 = std::chrono::steady_clock::now();
-    const double period = 2 * CGAL_PI / N_;
-    std::vector<double> delta(direction_faces_.size());
-    for(std::size_t k = 0; k < delta.size(); ++k)
-      delta[k] = -std::remainder(base_[std::size_t(direction_faces_[k])] - direction_values_[k], period);
-    std::vector<double> logs(length_values_.size());
-    for(std::size_t k = 0; k < logs.size(); ++k) logs[k] = std::log(length_values_[k]);
-    double f1 = 0, f2 = 0;
-    if(!rotation_.solve(delta, psi_, st.message, f1) || !length_.solve(logs, rho_, st.message, f2)) return st;
-    st.factor_seconds = f1 + f2;
-    st.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() - st.factor_seconds;
-    for(std::size_t k = 0; k < direction_faces_.size(); ++k) {
-      const double a = base_[std::size_t(direction_faces_[k])] + psi_[std::size_t(direction_faces_[k])];
-      st.max_direction_error = (std::max)(st.max_direction_error, std::abs(std::remainder(a - direction_values_[k], period)));
-    }
-    for(std::size_t k = 0; k < length_faces_.size(); ++k)
-      st.max_length_error = (std::max)(st.max_length_error,
-                                       std::abs(std::exp(rho_[std::size_t(length_faces_[k])]) - length_values_[k]) / length_values_[k]);
-    st.success = true;
-    return st;
-  }
+  Field_edit_status edit() { return core_.edit(); }
 
   /// The edited field: input angle plus \f$\psi\f$, in \f$[0, 2\pi)\f$.
   template <typename FaceAngleMap>
   void field_angles(FaceAngleMap angles) const
   {
     const internal::Mesh_arrays<TriangleMesh>& m = im_.arrays();
-    for(std::size_t f = 0; f < base_.size(); ++f) {
-      double a = base_[f] + (psi_.empty() ? 0. : psi_[f]);
-      a -= 2 * CGAL_PI * std::floor(a / (2 * CGAL_PI));
-      put(angles, m.faces[f], a);
-    }
+    for(std::size_t f = 0; f < core_.size(); ++f) put(angles, m.faces[f], core_.wrapped_angle(f));
   }
 
   /// The lengths of the edited field, \f$e^\rho\f$ (1 before any length constraint).
@@ -285,46 +355,140 @@ public:
   void field_lengths(FaceLengthMap lengths) const
   {
     const internal::Mesh_arrays<TriangleMesh>& m = im_.arrays();
-    for(std::size_t f = 0; f < base_.size(); ++f) put(lengths, m.faces[f], rho_.empty() ? 1. : std::exp(rho_[f]));
+    for(std::size_t f = 0; f < core_.size(); ++f) put(lengths, m.faces[f], core_.length(f));
   }
 
   /// The rotation \f$\psi\f$ of face `f` in the last edit.
-  double rotation(face_descriptor f) const
-  {
-    return psi_.empty() ? 0. : psi_[std::size_t(im_.arrays().face_index(f))];
-  }
+  double rotation(face_descriptor f) const { return core_.rotation(std::size_t(im_.arrays().face_index(f))); }
 
 private:
   template <typename Range>
-  void read_constraints(const Range& r, double weight, std::vector<int>& faces, std::vector<double>& values, const char* what)
+  void read(const Range& r, double weight, const char* what, std::vector<int>& nodes, std::vector<double>& values) const
   {
-    if(!(weight >= 0) || !std::isfinite(weight))
-      throw Input_error(Input_error::INVALID_ARGUMENT, std::string(what) + " constraint weight must be a non-negative number");
     const internal::Mesh_arrays<TriangleMesh>& m = im_.arrays();
-    std::vector<int> f;
-    std::vector<double> v;
-    std::vector<char> seen(m.number_of_faces(), 0);
-    for(const auto& c : r) {
-      const int fi = m.face_index(c.first);
-      if(fi < 0 || std::size_t(fi) >= seen.size())
-        throw Input_error(Input_error::INVALID_ARGUMENT, std::string(what) + " constraint on a face that is not in the mesh");
-      if(seen[std::size_t(fi)]++)
-        throw Input_error(Input_error::INVALID_ARGUMENT, std::string(what) + " constraint: face " + std::to_string(fi) + " is given twice");
-      if(!std::isfinite(double(c.second)))
-        throw Input_error(Input_error::INVALID_ARGUMENT, std::string(what) + " constraint on face " + std::to_string(fi) + " is not finite");
-      f.push_back(fi);
-      v.push_back(double(c.second));
-    }
-    faces.swap(f);
-    values.swap(v);
+    internal::Rosy_edit_core::read(r, weight, what, "face", m.number_of_faces(), [&](face_descriptor f) { return m.face_index(f); },
+                                   [](int) { return std::string(); }, nodes, values);
   }
 
   Intrinsic_mesh<TriangleMesh> im_;
-  int N_;
-  std::vector<double> base_, psi_, rho_;
-  std::vector<int> direction_faces_, length_faces_;
-  std::vector<double> direction_values_, length_values_;
-  internal::Face_harmonic_interpolation rotation_, length_;
+  internal::Rosy_edit_core core_;
+};
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsFieldDesign
+/// Edits a vertex-based N-RoSy field with direction and length constraints at vertices, as in
+/// Lai et al. 2010, section 4.2: the rotation \f$\psi\f$ and log-length \f$\rho\f$ per vertex are
+/// harmonic for the cotan Laplacian of the metric (\f$\sum_r w_{qr}(\psi_r - \psi_q) = 0\f$, the
+/// weights kept at least \f$10^{-3}\f$ times their mean) except at the constrained vertices,
+/// hard (Dirichlet: \f$\psi_p = \bar\psi_p\f$) or soft (the rows \f$\lambda \psi_p = \lambda
+/// \bar\psi_p\f$ added in the least-squares sense). \f$\bar\psi_p\f$ turns the nearest of the
+/// \f$N\f$ directions at \f$p\f$ onto the constraint. The field is the one of
+/// rotation_compensated_field(): angles in its vertex frames, on the same metric; cones carry
+/// no direction and take no constraint. Editing neither creates nor moves a singularity (the
+/// tests read the face version back before and after every edit).
+/// \tparam TriangleMesh a model of `FaceListGraph`
+template <typename TriangleMesh>
+class Rosy_vertex_field_editor
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+
+public:
+  typedef typename GT::vertex_descriptor vertex_descriptor;
+
+  /// Takes a copy of the field (one angle per vertex in the vertex frames of
+  /// rotation_compensated_field()). Named parameters: `edge_length_map` (the metric, default:
+  /// Euclidean lengths) or `intrinsic_mesh`, and the index maps. Throws `Input_error` for
+  /// \f$N < 1\f$ and the errors of `Intrinsic_mesh`.
+  template <typename VertexAngleMap, typename NamedParameters = parameters::Default_named_parameters>
+  Rosy_vertex_field_editor(const TriangleMesh& tm, int N, const VertexAngleMap& field,
+                           const NamedParameters& np = parameters::default_values())
+    : im_(internal::get_intrinsic_mesh(tm, np)), frames_(im_.arrays())
+  {
+    const internal::Mesh_arrays<TriangleMesh>& m = im_.arrays();
+    std::vector<double> base(m.number_of_vertices());
+    for(std::size_t v = 0; v < base.size(); ++v) base[v] = double(get(field, m.vertices[v]));
+    const std::vector<double> w = internal::floored_cotan_edge_weights(m);
+    std::vector<internal::Harmonic_interpolation::Link> links;
+    for(std::size_t e = 0; e < m.number_of_edges(); ++e) {
+      const int a = m.target[2 * e + 1], b = m.target[2 * e];
+      if(a != b) links.push_back({a, b, w[e]});
+    }
+    core_.set_up(N, std::move(base), links);
+  }
+
+  /// Replaces the direction constraints: pairs (vertex, angle in the vertex frame), each vertex
+  /// once, none at a cone; `soft_weight` \f$\lambda > 0\f$ makes them soft, 0 hard. Throws
+  /// `Input_error` for a vertex given twice, a cone, a non-finite angle or a negative weight.
+  template <typename VertexAngleRange>
+  void set_direction_constraints(const VertexAngleRange& constraints, double soft_weight = 0)
+  {
+    std::vector<int> nodes;
+    std::vector<double> values;
+    read(constraints, soft_weight, "direction", nodes, values);
+    core_.set_directions(std::move(nodes), std::move(values), soft_weight);
+  }
+
+  /// Replaces the length constraints: pairs (vertex, length > 0); `soft_weight` as for the
+  /// directions (on \f$\rho = \log\f$ length).
+  template <typename VertexLengthRange>
+  void set_length_constraints(const VertexLengthRange& constraints, double soft_weight = 0)
+  {
+    std::vector<int> nodes;
+    std::vector<double> values;
+    read(constraints, soft_weight, "length", nodes, values);
+    core_.set_lengths(std::move(nodes), std::move(values), soft_weight);
+  }
+
+  /// Solves for \f$\psi\f$ and \f$\rho\f$ (factoring only when the constrained vertices or the
+  /// weights changed) and measures how far the edited field is from the constraints.
+  Field_edit_status edit() { return core_.edit(); }
+
+  /// The edited vertex field: input angle plus \f$\psi\f$, in \f$[0, 2\pi)\f$.
+  template <typename VertexAngleMap>
+  void vertex_angles(VertexAngleMap angles) const
+  {
+    const internal::Mesh_arrays<TriangleMesh>& m = im_.arrays();
+    for(std::size_t v = 0; v < core_.size(); ++v) put(angles, m.vertices[v], core_.wrapped_angle(v));
+  }
+
+  /// The edited field in the face frames of the metric, as rotation_compensated_field() makes it
+  /// (each face from a corner that is not a cone): for field_singularities() on the same metric.
+  template <typename FaceAngleMap>
+  void face_angles(FaceAngleMap angles) const
+  {
+    std::vector<double> alpha(core_.size());
+    for(std::size_t v = 0; v < alpha.size(); ++v) alpha[v] = core_.angle(v);
+    internal::vertex_field_to_face_angles(im_.arrays(), frames_, im_.curvatures(), alpha, angles);
+  }
+
+  /// The lengths of the edited field, \f$e^\rho\f$ (1 before any length constraint).
+  template <typename VertexLengthMap>
+  void vertex_lengths(VertexLengthMap lengths) const
+  {
+    const internal::Mesh_arrays<TriangleMesh>& m = im_.arrays();
+    for(std::size_t v = 0; v < core_.size(); ++v) put(lengths, m.vertices[v], core_.length(v));
+  }
+
+  /// The rotation \f$\psi\f$ of vertex `v` in the last edit.
+  double rotation(vertex_descriptor v) const { return core_.rotation(std::size_t(im_.arrays().vertex_index(v))); }
+
+private:
+  template <typename Range>
+  void read(const Range& r, double weight, const char* what, std::vector<int>& nodes, std::vector<double>& values) const
+  {
+    const internal::Mesh_arrays<TriangleMesh>& m = im_.arrays();
+    const std::vector<double>& K = im_.curvatures();
+    internal::Rosy_edit_core::read(r, weight, what, "vertex", m.number_of_vertices(), [&](vertex_descriptor v) { return m.vertex_index(v); },
+                                   [&](int i) {
+                                     return std::abs(K[std::size_t(i)]) > 1e-6 ? std::string("it is a cone (curvature ") + std::to_string(K[std::size_t(i)]) +
+                                                                                      "), where the field has no direction"
+                                                                                : std::string();
+                                   },
+                                   nodes, values);
+  }
+
+  Intrinsic_mesh<TriangleMesh> im_;
+  internal::Vertex_frames<TriangleMesh> frames_;
+  internal::Rosy_edit_core core_;
 };
 
 } // namespace Surface_mesh_direction_fields

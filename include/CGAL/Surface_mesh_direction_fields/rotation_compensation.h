@@ -13,6 +13,7 @@
 #include <CGAL/Surface_mesh_direction_fields/errors.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/cotan_weights.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/development.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/vertex_frames.h>
 
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
@@ -51,31 +52,83 @@ struct Rotation_compensation_status
   double max_inconsistency = 0;
 };
 
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsFieldDesign
+/// How rotation_compensated_field() builds its basis of harmonic 1-forms; both give the same
+/// field (the harmonic 1-form with prescribed periods is unique; the tests compare them).
+enum Harmonic_form_construction {
+  /// the closed 1-form that counts crossings of the handle's dual cycle, made co-closed by one
+  /// solve with the Laplacian factored once for all loops: the default
+  HARMONIC_PROJECTION,
+  /// the paper's construction (after Gu and Yau): cut the surface open along the loop
+  /// \f$\gamma_k\f$, solve \f$\Delta g_k = 0\f$ on the cut surface with \f$g_k = 1\f$ on one side of
+  /// the cut and 0 on the other (one factorisation per loop), then make \f$dg_k\f$ co-closed on
+  /// the whole surface, \f$\Delta(dg_k + dh_k) = 0\f$; needs simple loops
+  CUT_AND_DIRICHLET
+};
+
 namespace internal {
 
-// Direction of outgoing halfedge h at its source v, measured counterclockwise from vertex_out[v]
-// in the metric, scaled by 2 pi / (angle sum) so that the directions at v span 2 pi.
+// The paper's jump form for one simple primal loop (halfedges in order, backtracks removed):
+// dg of the function g harmonic on the surface cut open along the loop, 1 on the loop's left
+// side and 0 on its right, as a value per edge for halfedge 2e. False (and a message) when the
+// loop is not simple or the factorisation fails.
 template <typename TM>
-struct Vertex_frames
+bool cut_jump_form(const Mesh_arrays<TM>& m, const std::vector<double>& w, std::vector<int> loop,
+                   std::vector<double>& dg, std::string& message)
 {
-  std::vector<double> direction;   // per halfedge (outgoing at its source)
-  template <typename M>
-  explicit Vertex_frames(const M& m) : direction(m.number_of_halfedges(), 0.)
-  {
-    for(std::size_t v = 0; v < m.number_of_vertices(); ++v) {
-      if(m.is_isolated(int(v)) || m.is_boundary_vertex(int(v))) continue;
-      const int h0 = m.vertex_out[v];
-      double total = 0;
-      int h = h0;
-      do { total += m.angle[std::size_t(h)]; h = m.ccw_out(h); } while(h != h0);
-      double a = 0;
-      h = h0;
-      do { direction[std::size_t(h)] = a * 2 * CGAL_PI / total; a += m.angle[std::size_t(h)]; h = m.ccw_out(h); } while(h != h0);
-    }
+  // remove backtracks h, h^1 (cyclically): a tree-cotree loop then becomes simple
+  std::vector<int> st;
+  for(int h : loop) {
+    if(!st.empty() && st.back() == (h ^ 1)) st.pop_back(); else st.push_back(h);
   }
-  // carrying a direction at source(h) across h to target(h): added to its angle
-  double transport(int h) const { return direction[std::size_t(h ^ 1)] + CGAL_PI - direction[std::size_t(h)]; }
-};
+  while(st.size() > 1 && st.front() == (st.back() ^ 1)) { st.pop_back(); st.erase(st.begin()); }
+  loop.swap(st);
+  const std::size_t nv = m.number_of_vertices(), ne = m.number_of_edges();
+  std::vector<int> in_of(nv, -1);   // per loop vertex, the loop halfedge that arrives there
+  for(int h : loop) {
+    if(in_of[std::size_t(m.target[std::size_t(h)])] >= 0) { message = "the cut construction of harmonic forms needs simple handle loops"; return false; }
+    in_of[std::size_t(m.target[std::size_t(h)])] = h;
+  }
+  // per halfedge leaving a loop vertex: 1 if it lies on the loop's left (counterclockwise from
+  // the outgoing loop halfedge to the incoming one), 0 on its right or along the loop
+  std::vector<double> side(m.number_of_halfedges(), 0.);
+  for(int out : loop) {
+    const int v = m.source(out), in = in_of[std::size_t(v)];
+    for(int h = m.ccw_out(out); h != (in ^ 1); h = m.ccw_out(h)) side[std::size_t(h)] = 1.;
+  }
+  std::vector<int> column(nv, -1);
+  int n = 0;
+  for(std::size_t v = 0; v < nv; ++v) if(in_of[v] < 0 && !m.is_isolated(int(v))) column[v] = n++;
+  std::vector<Eigen::Triplet<double>> t;
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(n);
+  for(std::size_t e = 0; e < ne; ++e) {
+    const int h = int(2 * e), a = m.source(h), c = m.target[std::size_t(h)];
+    const int ca = column[std::size_t(a)], cc = column[std::size_t(c)];
+    if(ca >= 0) t.emplace_back(ca, ca, w[e]);
+    if(cc >= 0) t.emplace_back(cc, cc, w[e]);
+    if(ca >= 0 && cc >= 0) t.emplace_back((std::max)(ca, cc), (std::min)(ca, cc), -w[e]);
+    if(ca >= 0 && cc < 0) b[ca] += w[e] * side[std::size_t(h ^ 1)];   // the Dirichlet value seen along the edge
+    if(cc >= 0 && ca < 0) b[cc] += w[e] * side[std::size_t(h)];
+  }
+  Eigen::VectorXd g;
+  if(n > 0) {
+    Cholmod_cholesky::Matrix L(n, n);
+    L.setFromTriplets(t.begin(), t.end());
+    L.makeCompressed();
+    Cholmod_cholesky chol;
+    if(!chol.factor(L, message)) return false;
+    g = chol.solve(b);
+  }
+  // the value of g at the end of halfedge h's edge at vertex v (v on the loop: its side's value)
+  auto value = [&](int v, int leaving) { return column[std::size_t(v)] >= 0 ? g[column[std::size_t(v)]] : side[std::size_t(leaving)]; };
+  dg.assign(ne, 0.);
+  for(std::size_t e = 0; e < ne; ++e) {
+    const int h = int(2 * e);
+    dg[e] = value(m.target[std::size_t(h)], h ^ 1) - value(m.source(h), h);
+  }
+  return true;
+}
 
 } // namespace internal
 
@@ -100,7 +153,8 @@ struct Vertex_frames
 /// cones) or `intrinsic_mesh`, the index maps, and `generator_turning_numbers` (a
 /// `std::vector<double>`, one multiple of \f$1/N\f$ per handle loop: the field's total rotation
 /// along it over \f$2\pi\f$; default: the multiple nearest to the loop's holonomy, the least
-/// compensation). Throws `Input_error` for meshes with
+/// compensation), `harmonic_form_construction` (default `HARMONIC_PROJECTION`; see
+/// `Harmonic_form_construction`). Throws `Input_error` for meshes with
 /// boundary or several components, \f$N < 1\f$, and the errors of `Intrinsic_mesh`; numerical
 /// failure is in the status.
 template <typename TriangleMesh, typename VertexAngleMap, typename FaceAngleMap,
@@ -114,6 +168,8 @@ Rotation_compensation_status rotation_compensated_field(const TriangleMesh& tm, 
   if(N < 1) throw Input_error(Input_error::INVALID_ARGUMENT, "symmetry order N must be at least 1, got " + std::to_string(N));
   const std::vector<double> turning =
       choose_parameter(get_parameter(np, internal_np::generator_turning_numbers), std::vector<double>());
+  const Harmonic_form_construction construction =
+      choose_parameter(get_parameter(np, internal_np::harmonic_form_construction), HARMONIC_PROJECTION);
   for(double t : turning)
     if(!std::isfinite(t) || std::abs(t * N - std::round(t * N)) > 1e-9)
       throw Input_error(Input_error::INVALID_ARGUMENT, "generator turning numbers must be multiples of 1/N, got " + std::to_string(t));
@@ -131,11 +187,7 @@ Rotation_compensation_status rotation_compensated_field(const TriangleMesh& tm, 
   const internal::Vertex_frames<TriangleMesh> frames(m);
 
   // cotan weights of the metric (raised to 1e-3 of their mean) and the Laplacian, factored once
-  std::vector<double> w = internal::cotan_edge_weights(m);
-  double sum = 0;
-  for(double x : w) sum += (x > 0 && std::isfinite(x)) ? x : 0.;
-  const double floor = 1e-3 * sum / double(ne);
-  for(double& x : w) x = (x >= floor && std::isfinite(x)) ? x : floor;
+  const std::vector<double> w = internal::floored_cotan_edge_weights(m);
   // vertex 0 is held at 0 (the Laplacian of a closed surface has the constants as kernel)
   std::vector<Eigen::Triplet<double>> t;
   for(std::size_t e = 0; e < ne; ++e) {
@@ -186,10 +238,14 @@ Rotation_compensation_status rotation_compensated_field(const TriangleMesh& tm, 
       }
   }
   for(std::size_t j = 0; j < k; ++j) {
-    // tau: the Poincare dual of the handle's dual cycle, +1 on each edge it crosses (closed:
-    // each face it passes through is entered once and left once)
     std::vector<double> tau(ne, 0.);
-    for(int h : loops[j]->dual) tau[std::size_t(h >> 1)] += (h & 1) ? -1. : 1.;
+    if(construction == CUT_AND_DIRICHLET) {
+      if(!internal::cut_jump_form(m, w, primal[j], tau, st.message)) return st;
+    } else {
+      // the Poincare dual of the handle's dual cycle, +1 on each edge it crosses (closed: each
+      // face it passes through is entered once and left once)
+      for(int h : loops[j]->dual) tau[std::size_t(h >> 1)] += (h & 1) ? -1. : 1.;
+    }
     // harmonic projection: L hk = -div(tau), omega = tau + d hk
     Eigen::VectorXd div = Eigen::VectorXd::Zero(Eigen::Index(nv - 1));
     for(std::size_t e = 0; e < ne; ++e) {
@@ -266,17 +322,7 @@ Rotation_compensation_status rotation_compensated_field(const TriangleMesh& tm, 
     const double r = alpha[std::size_t(m.target[std::size_t(h)])] - alpha[std::size_t(m.source(h))] - frames.transport(h) - form_at(om, h);
     st.max_inconsistency = (std::max)(st.max_inconsistency, std::abs(std::remainder(r, period)));
   }
-  // the face field: from a corner that is not a cone (angle defect 0), else the first corner
-  for(std::size_t f = 0; f < m.number_of_faces(); ++f) {
-    const int h0 = m.face_halfedge[f];
-    int h = h0, pick = h0;
-    for(int i = 0; i < 3; ++i, h = m.next[std::size_t(h)])
-      if(std::abs(K[std::size_t(m.source(h))]) < 1e-6) { pick = h; break; }
-    // a direction of vertex angle a at source(pick) makes angle (a - direction(pick)) with pick,
-    // which has direction halfedge_direction(pick) in the face frame
-    const double a = alpha[std::size_t(m.source(pick))] - frames.direction[std::size_t(pick)] + internal::halfedge_direction(m, pick);
-    put(face_angles, m.faces[f], a - 2 * CGAL_PI * std::floor(a / (2 * CGAL_PI)));
-  }
+  internal::vertex_field_to_face_angles(m, frames, K, alpha, face_angles);
   for(std::size_t v = 0; v < nv; ++v) {
     const double a = alpha[v] - 2 * CGAL_PI * std::floor(alpha[v] / (2 * CGAL_PI));
     put(vertex_angles, m.vertices[v], a);

@@ -8,6 +8,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh_arrays.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -32,6 +33,21 @@ std::vector<double> cotan_edge_weights(const Mesh_arrays<TM>& m,
     w[std::size_t(h1 >> 1)] += 0.5 * (std::max)((q2 + q0 - q1) * inv4A, lowest_cot);
     w[std::size_t(h2 >> 1)] += 0.5 * (std::max)((q0 + q1 - q2) * inv4A, lowest_cot);
   }
+  return w;
+}
+
+// The cotan weights with every weight below 1e-3 times the mean of the positive ones (or not
+// finite) raised to that floor: positive weights for a Laplacian that is positive definite
+// once one value per component is fixed.
+template <typename TM>
+std::vector<double> floored_cotan_edge_weights(const Mesh_arrays<TM>& m)
+{
+  std::vector<double> w = cotan_edge_weights(m);
+  double sum = 0;
+  std::size_t count = 0;
+  for(double x : w) if(x > 0 && std::isfinite(x)) { sum += x; ++count; }
+  const double floor = 1e-3 * (count ? sum / double(count) : 1.);
+  for(double& x : w) x = (x >= floor && std::isfinite(x)) ? x : floor;
   return w;
 }
 
