@@ -24,6 +24,8 @@
 #include <CGAL/Surface_mesh_direction_fields/field_editing.h>
 #include <CGAL/Surface_mesh_direction_fields/rotation_compensation.h>
 #include <CGAL/Surface_mesh_direction_fields/boundary_aligned_field.h>
+#include <CGAL/Surface_mesh_direction_fields/flat_development.h>
+#include <CGAL/Surface_mesh_direction_fields/grid_tessellation.h>
 #include <CGAL/Surface_mesh_direction_fields/huge_pages.h>
 #include <CGAL/Surface_mesh_direction_fields/Trivial_connection.h>
 #include <CGAL/Surface_mesh_direction_fields/compute_trivial_connection.h>

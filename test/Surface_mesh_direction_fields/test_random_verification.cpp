@@ -203,7 +203,7 @@ private:
     if(!compare_spqr) return;
     // the SPQR minimum-norm reference (default weights) against the same problem on CHOLMOD
     ++counts_.spqr_compared;
-    const auto np = SMDF::parameters::symmetry_order(N).intrinsic_mesh(tc.intrinsic_mesh());
+    const auto np = SMDF::parameters::symmetry_order(N).intrinsic_mesh(tc.intrinsic_mesh()).rotation_limit(0);   // minimum norm
     SMDF::Trivial_connection<Mesh> ref(mesh_, np.solver(SMDF::SPQR_MINIMUM_NORM)), same(mesh_, np);
     for(SMDF::Trivial_connection<Mesh>* t : {&ref, &same}) {
       for(const auto& p : k) t->set_singularity(p.first, double(p.second) / N);

@@ -31,6 +31,7 @@ struct Connection_options
   SMDF::Svg_options svg;
   Indexed_values singularities, turning;
   bool smoothest = false;   // --generator-turning smoothest
+  double rotation_limit = 0.8 * M_PI;
 };
 
 Connection_options connection_options(const Args& args)
@@ -45,6 +46,12 @@ Connection_options connection_options(const Args& args)
   else
     throw Usage_error("option --weights expects 'unit', 'cotan', 'nonnegative-cotan' or 'bounded-cotan', got '" +
                       shorten(o.weights_name) + "'");
+  if(args.has("rotation-limit")) {
+    const std::string v = args.value("rotation-limit");
+    if(v == "off") o.rotation_limit = 0;
+    else if(!parse_angle(v, o.rotation_limit) || !(o.rotation_limit > 0))
+      throw Usage_error("option --rotation-limit expects a positive angle (radians, or e.g. 0.8pi) or 'off', got '" + shorten(v) + "'");
+  }
   o.edits = args.integer("edit-benchmark", 0);
   if(o.edits < 0) throw Usage_error("option --edit-benchmark expects a non-negative integer");
   o.svg = svg_options(args);
@@ -238,7 +245,7 @@ Json run_connection(const Args& args)
   // --lengths-out); the field is drawn on the embedding through each face's linear map
   const bool own_metric = args.has("lengths");
   const std::string metric_file = own_metric ? args.value("lengths") : file;
-  const auto np = SMDF::parameters::symmetry_order(int(N)).connection_weights(opt.weights);
+  const auto np = SMDF::parameters::symmetry_order(int(N)).connection_weights(opt.weights).rotation_limit(opt.rotation_limit);
   auto connect = [&](const auto& params) {
     return on_file(metric_file, [&] { return SMDF::Trivial_connection<Mesh>(mesh, params); });
   };
@@ -304,6 +311,8 @@ Json run_connection(const Args& args)
   out["max_rotation"] = st.max_rotation;
   out["edges_beyond_half_period"] = st.edges_beyond_half_period;
   out["edges_beyond_pi"] = st.edges_beyond_pi;
+  out["rotation_limit"] = opt.rotation_limit;
+  out["rotation_limit_rounds"] = st.rotation_limit_rounds;
   if(st.condition_estimate > 0) out["condition_estimate"] = st.condition_estimate;
   out["max_matching_rounding"] = off_lattice;
 
@@ -329,6 +338,7 @@ Command connection_command()
            {"singularities-file", "FILE", "prescribed indices, one line 'v k' per vertex"},
            {"N", "n", "symmetry order (1 vectors, 2 lines, 4 crosses; default 1)"},
            {"weights", "W", "unit (default), cotan, nonnegative-cotan or bounded-cotan (manual: choice of weights)"},
+           {"rotation-limit", "A", "bound on |x_e| enforced by reweighting when the minimum-norm solution exceeds it (default 0.8pi; 'off': the minimum-norm connection)"},
            {"generator-turning", "LIST", "turning numbers 'g:t,...' of the generators (default 0), or 'smoothest'"},
            {"constraints", "FILE", "directional constraints: lines 'face angle' or 'face x y z'"},
            {"field-out", "FILE", "write one unit direction 'x y z' per face"},
@@ -348,7 +358,8 @@ Command connection_command()
           "principal_matching: {found, generator_turning_numbers, extra, missing,\n"
           "edges_turning_at_least_pi_over_N} (what a reader without the matching sees), energy,\n"
           "residual, scaled_residual, max_holonomy_error, max_rotation (largest |x_e|),\n"
-          "edges_beyond_half_period (|x_e| > pi/N), edges_beyond_pi, condition_estimate (only when\n"
+          "edges_beyond_half_period (|x_e| > pi/N), edges_beyond_pi, rotation_limit,\n"
+          "rotation_limit_rounds (refactorisations spent bounding |x_e|), condition_estimate (only when\n"
           "the holonomy error exceeds 1e-12), max_matching_rounding, success, timings:\n"
           "{setup_s, solve_s, field_s, edit_median_s}}; with --generator-turning smoothest also\n"
           "smoothest_generator_turning: {turning_numbers, energy, energy_with_zero_turning, exact}\n"

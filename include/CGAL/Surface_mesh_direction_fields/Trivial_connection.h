@@ -99,6 +99,9 @@ struct Trivial_connection_status
   /// by a few power and inverse iterations, computed once per factorisation), reported when
   /// `max_holonomy_error` exceeds \f$10^{-12}\f$; 0 otherwise
   double condition_estimate = 0;
+  /// rounds of rotation limiting in this solve (see the `rotation_limit` parameter): 0 when the
+  /// minimum-norm connection was within the limit
+  int rotation_limit_rounds = 0;
 };
 
 /// \ingroup PkgSurfaceMeshDirectionFieldsTrivialConnections
@@ -127,7 +130,9 @@ struct Smoothest_turning_numbers
 /// \f$2\pi t_g\f$ around every generator \f$g\f$ of `tree_cotree_generators()`, where
 /// \f$\mathrm{hol}_{LC}\f$ is taken in \f$(-\pi, \pi]\f$ and \f$t_g\f$ is the prescribed turning
 /// number (default 0). Among all solutions the one closest to Levi-Civita,
-/// \f$\min \|Dx\|^2\f$, is returned: \f$x = W A^\top y\f$ with \f$(A W A^\top)\,y = -b\f$.
+/// \f$\min \|Dx\|^2\f$, is returned: \f$x = W A^\top y\f$ with \f$(A W A^\top)\,y = -b\f$;
+/// by default, when that solution turns some edge by more than \f$0.8\pi\f$, rotation limiting
+/// reweights it until no edge does (the `rotation_limit` parameter; 0 gives the minimum norm).
 ///
 /// Indices and turning numbers must be multiples of \f$1/N\f$ for the symmetry order \f$N\f$
 /// (N-RoSy fields). On every closed component the indices must sum to the Euler
@@ -182,6 +187,19 @@ public:
   ///     \cgalParamType{`double`, at least 1}
   ///     \cgalParamDefault{`10`}
   ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{rotation_limit}
+  ///     \cgalParamDescription{when the minimum-norm connection turns some edge by more than this
+  ///       (radians), rotation limiting: the weight of every edge beyond it is multiplied by
+  ///       \f$(\text{limit}/|x_e|)^2\f$ and the system refactored, for up to 8 rounds, until every
+  ///       \f$|x_e|\f$ is within 5% of the limit; with smoothest turning numbers
+  ///       (choose_smoothest_generator_turning_numbers()) they are chosen again on every round.
+  ///       The result is then no longer the minimum-norm connection but one whose rotations stay
+  ///       bounded (the status reports the rounds); the kept factorisation is that of the
+  ///       plain weights, so a solve within the limit still costs one solve. 0 turns it off (the
+  ///       paper's minimum-norm solution). Not with guide directions or `SPQR_MINIMUM_NORM`}
+  ///     \cgalParamType{`double`, non-negative}
+  ///     \cgalParamDefault{\f$0.8\pi\f$ (chosen on the shared test meshes: see the manual's section on the choice of weights)}
+  ///   \cgalParamNEnd
   ///   \cgalParamNBegin{solver}
   ///     \cgalParamDescription{the linear solver: normal equations factored by `SparseCholeskySolver`, or the SPQR reference}
   ///     \cgalParamType{`Connection_solver`}
@@ -215,6 +233,9 @@ public:
     if(!(clamp_ > 0 && clamp_ <= 1))
       throw Input_error(Input_error::INVALID_ARGUMENT, "cotangent_clamp must be in (0, 1], got " + std::to_string(clamp_));
     cap_ = choose_parameter(get_parameter(np, internal_np::cotangent_cap), 10.);
+    rotation_limit_ = choose_parameter(get_parameter(np, internal_np::rotation_limit), 0.8 * CGAL_PI);
+    if(!(rotation_limit_ >= 0) || !std::isfinite(rotation_limit_))
+      throw Input_error(Input_error::INVALID_ARGUMENT, "rotation_limit must be a non-negative number, got " + std::to_string(rotation_limit_));
     if(!(cap_ >= 1) || !std::isfinite(cap_))
       throw Input_error(Input_error::INVALID_ARGUMENT, "cotangent_cap must be a number of at least 1, got " + std::to_string(cap_));
     solver_kind_ = choose_parameter(get_parameter(np, internal_np::solver), CHOLMOD_NORMAL_EQUATIONS);
@@ -290,6 +311,7 @@ public:
                         "generator " + std::to_string(i) + " does not exist (there are " +
                         std::to_string(gens_.size()) + ")");
     turning_[i] = check_fraction(t, "turning number of generator " + std::to_string(i));
+    smoothest_ = false;
   }
 
   /// The prescribed turning number of generator `i`.
@@ -318,39 +340,9 @@ public:
       if(!build_and_factor(st)) throw Input_error(Input_error::INVALID_ARGUMENT, "cannot factor the system: " + st.message);
       factored_ = true;
     }
-    std::vector<double> t(gens_.size(), 0.);
-    turning_.swap(t);   // b0: all turning numbers 0
-    const Eigen::VectorXd b0 = sys_.rhs(m_, K_, index_, z_, turning_, constraint_angles_, N_);
-    turning_.swap(t);
-    const Eigen::Index k = Eigen::Index(gens_.size());
-    if(sys_.rows_ == 0 || k == 0) { r.exact = true; return r; }
-    // E(t) = b(t)^T M^-1 b(t), b(t) = b0 - 2 pi P t, P the generator rows: with Z = M^-1 P,
-    // E = b0^T M^-1 b0 - 4 pi (Z^T b0) . t + 4 pi^2 t^T (P^T Z) t
-    Eigen::MatrixXd G(k, k);
-    Eigen::VectorXd h(k);
-    for(Eigen::Index g = 0; g < k; ++g) {
-      Eigen::VectorXd e = Eigen::VectorXd::Zero(sys_.rows_);
-      e[sys_.first_generator_row_ + g] = 1;
-      const Eigen::VectorXd z = chol_.solve(e);
-      h[g] = z.dot(b0);
-      for(Eigen::Index j = 0; j < k; ++j) G(j, g) = z[sys_.first_generator_row_ + j];
-    }
-    G = 0.5 * (G + G.transpose());
-    const double c0 = b0.dot(chol_.solve(b0));
-    auto energy = [&](const Eigen::VectorXd& tt) {
-      return c0 - 4 * CGAL_PI * h.dot(tt) + 4 * CGAL_PI * CGAL_PI * tt.dot(G * tt);
-    };
-    // in s = N t: minimise (s - c)^T G (s - c) with c = N G^-1 h / (2 pi)
-    Eigen::LDLT<Eigen::MatrixXd> ldlt(G);
-    const Eigen::VectorXd c = ldlt.solve(h) * (N_ / (2 * CGAL_PI));
-    const internal::Lattice_minimum lm = internal::lattice_minimum(G, c);
-    Eigen::VectorXd best = lm.s / double(N_);
-    const Eigen::VectorXd zero = Eigen::VectorXd::Zero(k);
-    r.energy_with_zero_turning = energy(zero);
-    if(!lm.positive_definite || energy(best) > r.energy_with_zero_turning) best = zero;
-    r.energy = energy(best);
-    r.exact = lm.exact && lm.positive_definite;
-    for(Eigen::Index g = 0; g < k; ++g) turning_[std::size_t(g)] = std::round(best[g] * N_) / N_;
+    smoothest_turning(chol_, r);
+    smoothest_ = true;
+    smoothest_turning_ = turning_;
     r.turning_numbers = turning_;
     return r;
   }
@@ -436,9 +428,11 @@ public:
       st.factor_seconds = seconds_since(t0);
     }
     const auto t1 = std::chrono::steady_clock::now();
-    const Eigen::VectorXd b = sys_.rhs(m_, K_, index_, z_, turning_, constraint_angles_, N_);
+    if(smoothest_) turning_ = smoothest_turning_;
+    Eigen::VectorXd b = sys_.rhs(m_, K_, index_, z_, turning_, constraint_angles_, N_);
     Eigen::VectorXd xc;
     if(!solve_columns(b, xc, st)) return st;
+    limit_rotations(b, xc, st);
     std::fill(x_.begin(), x_.end(), 0.);
     for(std::size_t c = 0; c < sys_.edge_of_col_.size(); ++c) x_[sys_.edge_of_col_[c]] = xc[Eigen::Index(c)];
     st.solve_seconds = seconds_since(t1);
@@ -646,6 +640,87 @@ private:
     // constraint rows would fill in as a dense block there, so the solver orders those systems.
     // The same holds for the two-domain split (the vertex graph's domains, then its
     // separator and the extra rows), factored on two threads.
+    if(!internal::factor_with_hints(chol_, L, factor_hints(), st.message)) return false;
+    guides_.prepare(m_, tree_, sys_, chol_, guide_faces_, constrained_faces_, guide_weight_);
+    return true;
+  }
+
+  // The lattice search of choose_smoothest_generator_turning_numbers() with the factorisation
+  // `chol` of the current weights; sets turning_.
+  template <typename Chol>
+  void smoothest_turning(const Chol& chol, Smoothest_turning_numbers& r)
+  {
+    std::vector<double> t(gens_.size(), 0.);
+    turning_.swap(t);   // b0: all turning numbers 0
+    const Eigen::VectorXd b0 = sys_.rhs(m_, K_, index_, z_, turning_, constraint_angles_, N_);
+    turning_.swap(t);
+    const Eigen::Index k = Eigen::Index(gens_.size());
+    if(sys_.rows_ == 0 || k == 0) { r.exact = true; return; }
+    // E(t) = b(t)^T M^-1 b(t), b(t) = b0 - 2 pi P t, P the generator rows: with Z = M^-1 P,
+    // E = b0^T M^-1 b0 - 4 pi (Z^T b0) . t + 4 pi^2 t^T (P^T Z) t
+    Eigen::MatrixXd G(k, k);
+    Eigen::VectorXd h(k);
+    for(Eigen::Index g = 0; g < k; ++g) {
+      Eigen::VectorXd e = Eigen::VectorXd::Zero(sys_.rows_);
+      e[sys_.first_generator_row_ + g] = 1;
+      const Eigen::VectorXd z = chol.solve(e);
+      h[g] = z.dot(b0);
+      for(Eigen::Index j = 0; j < k; ++j) G(j, g) = z[sys_.first_generator_row_ + j];
+    }
+    G = 0.5 * (G + G.transpose());
+    const double c0 = b0.dot(chol.solve(b0));
+    auto energy = [&](const Eigen::VectorXd& tt) {
+      return c0 - 4 * CGAL_PI * h.dot(tt) + 4 * CGAL_PI * CGAL_PI * tt.dot(G * tt);
+    };
+    // in s = N t: minimise (s - c)^T G (s - c) with c = N G^-1 h / (2 pi)
+    Eigen::LDLT<Eigen::MatrixXd> ldlt(G);
+    const Eigen::VectorXd c = ldlt.solve(h) * (N_ / (2 * CGAL_PI));
+    const internal::Lattice_minimum lm = internal::lattice_minimum(G, c);
+    Eigen::VectorXd best = lm.s / double(N_);
+    const Eigen::VectorXd zero = Eigen::VectorXd::Zero(k);
+    r.energy_with_zero_turning = energy(zero);
+    if(!lm.positive_definite || energy(best) > r.energy_with_zero_turning) best = zero;
+    r.energy = energy(best);
+    r.exact = lm.exact && lm.positive_definite;
+    for(Eigen::Index g = 0; g < k; ++g) turning_[std::size_t(g)] = std::round(best[g] * N_) / N_;
+  }
+
+  // Rotation limiting (the rotation_limit parameter) on the solution xc for b: edges beyond the
+  // limit are penalised and the system refactored; the base weights are restored at the end,
+  // so chol_ stays valid. With smoothest turning numbers b changes with them.
+  void limit_rotations(Eigen::VectorXd& b, Eigen::VectorXd& xc, Trivial_connection_status& st)
+  {
+    if(!(rotation_limit_ > 0) || solver_kind_ != CHOLMOD_NORMAL_EQUATIONS || !guides_.empty() || sys_.rows_ == 0) return;
+    const Eigen::VectorXd W0 = sys_.W_;
+    Solver chol;
+    for(int round = 1; round <= 8 && xc.cwiseAbs().maxCoeff() > 1.05 * rotation_limit_; ++round) {
+      for(Eigen::Index c = 0; c < xc.size(); ++c) {
+        const double a = std::abs(xc[c]);
+        if(a > rotation_limit_)   // floor: 1e-4 of the base weight keeps the system well conditioned
+          sys_.W_[c] = (std::max)(sys_.W_[c] * (rotation_limit_ / a) * (rotation_limit_ / a), 1e-4 * W0[c]);
+      }
+      std::string message;
+      if(!internal::factor_with_hints(chol, sys_.normal_matrix(), factor_hints(), message)) break;   // keep the last solution
+      if(smoothest_) {
+        Smoothest_turning_numbers r;
+        smoothest_turning(chol, r);
+        b = sys_.rhs(m_, K_, index_, z_, turning_, constraint_angles_, N_);
+      }
+      xc = sys_.W_.asDiagonal() * (sys_.A_.transpose() * Eigen::VectorXd(chol.solve(-b)));
+      // iterative refinement: the reweighted system is less well conditioned than the base one
+      const double scale = (std::max)(1., b.cwiseAbs().maxCoeff());
+      for(int k = 0; k < 3; ++k) {
+        const Eigen::VectorXd r = sys_.A_ * xc + b;
+        if(r.cwiseAbs().maxCoeff() <= 1e-13 * scale) break;
+        xc -= sys_.W_.asDiagonal() * (sys_.A_.transpose() * Eigen::VectorXd(chol.solve(r)));
+      }
+      st.rotation_limit_rounds = round;
+    }
+    sys_.W_ = W0;
+  }
+
+  Cholesky_hints factor_hints() const
+  {
     Cholesky_hints hints;
     hints.many_solves = true;
     hints.preordered = sys_.vertex_order_is_amd_ && sys_.rows_ - sys_.first_generator_row_ <= 32;
@@ -653,9 +728,7 @@ private:
       hints.domain_rows[0] = sys_.domain_rows_[0];
       hints.domain_rows[1] = sys_.domain_rows_[1];
     }
-    if(!internal::factor_with_hints(chol_, L, hints, st.message)) return false;
-    guides_.prepare(m_, tree_, sys_, chol_, guide_faces_, constrained_faces_, guide_weight_);
-    return true;
+    return hints;
   }
 
   void measure_rotations(const Eigen::VectorXd& xc, Trivial_connection_status& st) const
@@ -712,7 +785,9 @@ private:
   std::vector<internal::Face_map> frames_;   // per face: metric triangle -> embedded triangle
   int N_ = 1;
   Connection_weights weights_ = UNIT_WEIGHTS;
-  double clamp_ = 1e-3, cap_ = 10;
+  double clamp_ = 1e-3, cap_ = 10, rotation_limit_ = 0.8 * CGAL_PI;
+  bool smoothest_ = false;                    // the turning numbers are those of choose_smoothest_generator_turning_numbers()
+  std::vector<double> smoothest_turning_;     // ... as it chose them (restored before every solve)
   double condition_ = 0;   // sys_.condition_estimate() of the current factorisation (0: not yet)
   Connection_solver solver_kind_ = CHOLMOD_NORMAL_EQUATIONS;
 

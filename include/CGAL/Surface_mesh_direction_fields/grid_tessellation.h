@@ -1,0 +1,462 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_GRID_TESSELLATION_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_GRID_TESSELLATION_H
+
+// Regular remeshing (Lai et al. 2010, section 5): the square or triangular grid of the plane,
+// carried onto the surface by the development of a flat cone metric whose holonomy lies in
+// the grid's symmetry group. The grid points become the output vertices (placed on the input
+// triangles by barycentric coordinates), the grid's unit squares or triangles its faces.
+
+#include <CGAL/Surface_mesh_direction_fields/errors.h>
+#include <CGAL/Surface_mesh_direction_fields/flat_development.h>
+#include <CGAL/Surface_mesh_direction_fields/holonomy_group.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <array>
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <string>
+#include <tuple>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsRemeshing
+/// Outcome of tessellate_flat_metric().
+struct Grid_tessellation_status
+{
+  bool success = false;   ///< the output is a valid mesh whose irregular vertices are the cones
+  std::string message;    ///< empty on success
+  /// the holonomy test of the cut graph's motions (Theorem 3.5), from which the grid's spacing,
+  /// orientation and origin come; `failing_loops` are indices into `failing_edges`' source list
+  Tessellation_compatibility compatibility;
+  /// edges of the cut graph (indices of the input's index map) whose motion is not a symmetry
+  /// of the grid
+  std::vector<std::size_t> failing_edges;
+  double edge_length = 0;              ///< the grid's edge length on the surface
+  std::size_t vertices = 0, faces = 0; ///< of the output
+  /// valence histogram of the output's interior vertices: `valences[k]` vertices of valence k
+  std::vector<std::size_t> valences;
+  /// output vertices of irregular valence, each with the input cone it lies on (-1 if none)
+  std::vector<std::pair<std::size_t, long>> irregular_vertices;
+};
+
+namespace internal {
+
+// An integer-exact affine map of lattice coordinates: p -> R p + t, R a rotation of the grid
+// (entries in {-1, 0, 1}), t integer. Applied to coordinates that are multiples of 2^-20 below
+// 2^27 in magnitude it is exact in double precision.
+struct Lattice_motion
+{
+  int r[4] = {1, 0, 0, 1};
+  double t[2] = {0, 0};
+  Point_2 operator()(const Point_2& p) const
+  {
+    return Point_2(r[0] * p.x() + r[1] * p.y() + t[0], r[2] * p.x() + r[3] * p.y() + t[1]);
+  }
+  std::array<double, 2> rotate(double x, double y) const { return {{r[0] * x + r[1] * y, r[2] * x + r[3] * y}}; }
+  Lattice_motion inverse() const
+  {
+    Lattice_motion m;   // R is orthogonal in the square grid; in the triangular one det R = 1
+    m.r[0] = r[3]; m.r[1] = -r[1]; m.r[2] = -r[2]; m.r[3] = r[0];
+    m.t[0] = -(m.r[0] * t[0] + m.r[1] * t[1]);
+    m.t[1] = -(m.r[2] * t[0] + m.r[3] * t[1]);
+    return m;
+  }
+  friend Lattice_motion operator*(const Lattice_motion& a, const Lattice_motion& b)   // a after b
+  {
+    Lattice_motion c;
+    c.r[0] = a.r[0] * b.r[0] + a.r[1] * b.r[2]; c.r[1] = a.r[0] * b.r[1] + a.r[1] * b.r[3];
+    c.r[2] = a.r[2] * b.r[0] + a.r[3] * b.r[2]; c.r[3] = a.r[2] * b.r[1] + a.r[3] * b.r[3];
+    const Point_2 t = a(Point_2(b.t[0], b.t[1]));
+    c.t[0] = t.x(); c.t[1] = t.y();
+    return c;
+  }
+};
+
+inline double dyadic(double x) { return std::round(x * 1048576.) / 1048576.; }   // 2^20
+
+} // namespace internal
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsRemeshing
+/// Tessellates a developed flat cone metric with the square grid (quads) or the triangular grid
+/// (triangles), Lai et al. 2010, section 5. Works for any genus and boundary as long as the
+/// motions of the cut graph are symmetries of the grid (Theorem 3.5: rotations by multiples of
+/// \f$\pi/2\f$ or \f$\pi/3\f$, translations in the lattice of edge length `edge_length`, placed at
+/// the first cone) and every cone lies on a grid point; otherwise the status names the failing
+/// edges. In the output, a cone of curvature \f$K\f$ becomes a vertex of valence
+/// \f$4 - K/(\pi/2)\f$ (\f$6 - K/(\pi/3)\f$), every other interior vertex has valence 4 (6).
+///
+/// Exactness: the layout is converted to lattice coordinates, rounded to multiples of
+/// \f$2^{-20}\f$, the motions rounded to exact lattice symmetries, and the corners of every vertex
+/// re-derived from one of them through those motions, so that the layouts on both sides of every
+/// seam are exact images of each other. Grid points are then classified against the triangles
+/// with exact orientation predicates (`Exact_predicates_inexact_constructions_kernel`): a point
+/// on a seam or at a vertex is found once, whichever side looks at it, and no face is lost or
+/// doubled. Grid edges are followed across triangles and seams by a straight walk with the same
+/// predicates. Output vertices are placed on the input triangle (edge, vertex) that contains them
+/// by barycentric coordinates of the development, so every output vertex lies on the input
+/// surface. The development must be of `tm`'s own triangulation (`develop_flat_metric()` with an
+/// `edge_length_map` on `tm`).
+///
+/// Named parameters: `vertex_point_map` of `tm` (the positions of the output vertices' input
+/// triangles). Returns the status; `out` receives the remesh (cleared first) only on success.
+/// \tparam PolygonMesh a model of `MutableFaceGraph` whose vertex points are constructible from
+/// three doubles
+template <typename TriangleMesh, typename PolygonMesh, typename NamedParameters = parameters::Default_named_parameters>
+Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Flat_development<TriangleMesh>& dev,
+                                                Planar_tessellation grid, double edge_length, PolygonMesh& out,
+                                                const NamedParameters& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel EK;
+  typedef EK::Point_2 EP;
+  typedef boost::graph_traits<PolygonMesh> OGT;
+  typedef typename OGT::vertex_descriptor out_vertex;
+  const internal::Mesh_arrays<TriangleMesh>& m = dev.im_.arrays();
+  const std::size_t nf = m.number_of_faces(), ne = m.number_of_edges(), nv = m.number_of_vertices();
+  Grid_tessellation_status st;
+  if(!(edge_length > 0) || !std::isfinite(edge_length))
+    throw Input_error(Input_error::INVALID_ARGUMENT, "the grid's edge length must be positive, got " + std::to_string(edge_length));
+  const bool square = grid == SQUARE_GRID;
+  const int sides = square ? 4 : 3;
+
+  // 1. the holonomy test on the cut graph's motions, in the one frame of the development
+  Holonomy_group group;
+  std::vector<std::size_t> group_edge;
+  for(std::size_t e = 0; e < ne; ++e)
+    if(dev.cut_[e]) {
+      group.motions.push_back(dev.motions_[e]);
+      const double r = dev.motions_[e].rotation;
+      group.rotations.push_back(r < 0 ? r + 2 * CGAL_PI : r);
+      group_edge.push_back(e);
+    }
+  for(auto v : dev.cones_) {   // a cone's position: any corner at it
+    const int vi = m.vertex_index(v), h = m.vertex_out[std::size_t(vi)], f = m.face[std::size_t(h)];
+    int g = m.face_halfedge[std::size_t(f)], k = 0;
+    while(g != h) { g = m.next[std::size_t(g)]; ++k; }
+    group.cone_positions.push_back(dev.corners_[std::size_t(f)][std::size_t(k)]);
+  }
+  // several components: one frame each; the test then only holds for one component
+  st.compatibility = tessellation_compatibility(group, grid, 1e-6);
+  for(std::size_t i : st.compatibility.failing_loops) st.failing_edges.push_back(group_edge[i]);
+  if(!st.compatibility.compatible) {
+    std::ostringstream os;
+    os << st.failing_edges.size() << " edges of the cut graph glue the development by motions that are not symmetries of the "
+       << (square ? "square" : "triangular") << " grid (rotation off by up to " << st.compatibility.max_rotation_deviation
+       << " rad, translation by " << st.compatibility.max_translation_deviation << " grid edges); first edge "
+       << (st.failing_edges.empty() ? 0 : st.failing_edges.front());
+    st.message = os.str();
+    return st;
+  }
+  // the grid's lattice must contain the surface's (spacing s, orientation phi): its basis
+  // vector s e^{i phi} = h e^{i psi} g for a lattice vector g = a + b w of norm s / h
+  const double spacing = st.compatibility.spacing;
+  const double h = edge_length;
+  double orientation = st.compatibility.orientation;
+  const double wx0 = square ? 0. : 0.5, wy0 = square ? 1. : std::sqrt(3.) / 2;
+  if(spacing > 0) {
+    const double ratio = spacing / h;
+    bool found = false;
+    const long bound = long(std::ceil(ratio)) + 1;
+    for(long a = 0; a <= bound && !found; ++a)
+      for(long b = 0; b <= bound && !found; ++b) {
+        const double gx = double(a) + double(b) * wx0, gy = double(b) * wy0;
+        if(std::abs(std::sqrt(gx * gx + gy * gy) - ratio) <= 1e-7 * ratio) {
+          orientation -= std::atan2(gy, gx);
+          found = true;
+        }
+      }
+    if(!found) {
+      std::ostringstream os;
+      os << "edge length " << h << " does not divide the lattice of the metric (spacing " << spacing
+         << "): the edge length must be the spacing over the length of a lattice vector, e.g. " << spacing / 2 << ", "
+         << spacing / 3 << ", " << spacing / 4 << (square ? " or spacing / sqrt(2), spacing / sqrt(5)" : " or spacing / sqrt(3), spacing / sqrt(7)");
+      st.message = os.str();
+      return st;
+    }
+  }
+  st.edge_length = h;
+  // lattice coordinates: z = (p - origin) e^{-i orientation} / h in the basis (1, w)
+  const double wx = square ? 0. : 0.5, wy = square ? 1. : std::sqrt(3.) / 2;
+  const double co = std::cos(orientation), so = std::sin(orientation);
+  const Point_2 origin = st.compatibility.origin;
+  auto lattice = [&](const Point_2& p) {
+    const double x = p.x() - origin.x(), y = p.y() - origin.y();
+    const double zx = (co * x + so * y) / h, zy = (-so * x + co * y) / h;
+    const double b = zy / wy;
+    return Point_2(zx - b * wx, b);
+  };
+  // the grid's rotations in lattice coordinates: by pi/2 (square) or pi/3 (triangular)
+  const internal::Lattice_motion step_rotation = [&] {
+    internal::Lattice_motion r;
+    if(square) { r.r[0] = 0; r.r[1] = -1; r.r[2] = 1; r.r[3] = 0; }
+    else { r.r[0] = 0; r.r[1] = -1; r.r[2] = 1; r.r[3] = 1; }
+    return r;
+  }();
+  const double step = square ? CGAL_PI / 2 : CGAL_PI / 3;
+
+  // 2. exact layout: lattice coordinates on 2^-20, motions rounded to lattice symmetries
+  std::vector<std::array<Point_2, 3>> uv(nf);
+  for(std::size_t f = 0; f < nf; ++f)
+    for(int k = 0; k < 3; ++k) {
+      const Point_2 p = lattice(dev.corners_[f][std::size_t(k)]);
+      uv[f][std::size_t(k)] = Point_2(internal::dyadic(p.x()), internal::dyadic(p.y()));
+    }
+  auto corner_index = [&](int f, int v) {
+    int g = m.face_halfedge[std::size_t(f)];
+    for(int k = 0; k < 3; ++k, g = m.next[std::size_t(g)]) if(m.source(g) == v) return k;
+    return -1;
+  };
+  std::vector<internal::Lattice_motion> motion(ne);   // from face(2e + 1) to face(2e), exact
+  for(std::size_t e = 0; e < ne; ++e) {
+    if(dev.tree_[e] || m.face[2 * e] < 0 || m.face[2 * e + 1] < 0) continue;
+    const int turns = int(std::lround(dev.motions_[e].rotation / step));
+    internal::Lattice_motion r;
+    const int n_rot = square ? 4 : 6;
+    for(int i = 0; i < ((turns % n_rot) + n_rot) % n_rot; ++i) r = step_rotation * r;
+    const int fb = m.face[2 * e], fa = m.face[2 * e + 1], a = m.source(int(2 * e));
+    const Point_2 pa = uv[std::size_t(fa)][std::size_t(corner_index(fa, a))], pb = uv[std::size_t(fb)][std::size_t(corner_index(fb, a))];
+    const Point_2 ra = r(pa);
+    r.t[0] = std::round(pb.x() - ra.x());
+    r.t[1] = std::round(pb.y() - ra.y());
+    motion[e] = r;
+  }
+  // per vertex: walk around it, deriving each face's corner from the previous one's
+  for(std::size_t v = 0; v < nv; ++v) {
+    if(m.is_isolated(int(v))) continue;
+    const int h0 = m.vertex_out[v];   // boundary vertices: the boundary halfedge's face comes first
+    int f0 = m.face[std::size_t(h0)];
+    Point_2 p = uv[std::size_t(f0)][std::size_t(corner_index(f0, int(v)))];
+    if(dev.cone_index_[v] >= 0) {
+      const Point_2 snapped(std::round(p.x()), std::round(p.y()));
+      if(std::abs(snapped.x() - p.x()) > 1e-5 || std::abs(snapped.y() - p.y()) > 1e-5) {
+        std::ostringstream os;
+        os << "cone " << v << " is not on a grid point (" << p.x() << ", " << p.y() << " in grid coordinates)";
+        st.message = os.str();
+        return st;
+      }
+      p = snapped;
+    }
+    int hh = h0;
+    for(;;) {
+      const int f = m.face[std::size_t(hh)];
+      uv[std::size_t(f)][std::size_t(corner_index(f, int(v)))] = p;
+      const int prev = m.next[std::size_t(m.next[std::size_t(hh)])];   // ends at v
+      const int g = m.face[std::size_t(prev ^ 1)];
+      if(g < 0) break;                                                // reached the boundary
+      const int e = prev >> 1;
+      if(!dev.tree_[std::size_t(e)]) p = (prev & 1) ? motion[std::size_t(e)](p) : motion[std::size_t(e)].inverse()(p);
+      hh = prev ^ 1;
+      if(hh == h0) {   // closed around v: the composed motions must give back the first corner
+        const Point_2 q = uv[std::size_t(f0)][std::size_t(corner_index(f0, int(v)))];
+        if(q != p) {
+          std::ostringstream os;
+          os << "the rounded motions do not close up around vertex " << v << " (is the metric flat there?)";
+          st.message = os.str();
+          return st;
+        }
+        break;
+      }
+    }
+  }
+  for(std::size_t f = 0; f < nf; ++f)
+    if(CGAL::orientation(EP(uv[f][0].x(), uv[f][0].y()), EP(uv[f][1].x(), uv[f][1].y()), EP(uv[f][2].x(), uv[f][2].y())) != CGAL::LEFT_TURN) {
+      st.message = "face " + std::to_string(f) + " is degenerate or flipped in the development (grid too fine for the metric?)";
+      return st;
+    }
+
+  // 3. grid points, each once: owner face (inside), edge (on it, in face(2e)'s frame) or vertex
+  auto ep = [](const Point_2& p) { return EP(p.x(), p.y()); };
+  struct Where { int kind = -1; int id = -1; double x = 0, y = 0; };   // kind 0 face, 1 edge, 2 vertex
+  auto classify = [&](int f, const Point_2& q) {   // q on the closed face f
+    Where w;
+    int zeros = 0, zero_edge = -1;
+    int g = m.face_halfedge[std::size_t(f)];
+    for(int k = 0; k < 3; ++k, g = m.next[std::size_t(g)]) {
+      const CGAL::Orientation o = CGAL::orientation(ep(uv[std::size_t(f)][std::size_t(k)]), ep(uv[std::size_t(f)][std::size_t((k + 1) % 3)]), ep(q));
+      if(o == CGAL::RIGHT_TURN) return w;   // outside
+      if(o == CGAL::COLLINEAR) { ++zeros; zero_edge = g; }
+    }
+    if(zeros == 0) { w.kind = 0; w.id = f; w.x = q.x(); w.y = q.y(); return w; }
+    if(zeros >= 2) {   // at a corner
+      g = m.face_halfedge[std::size_t(f)];
+      for(int k = 0; k < 3; ++k, g = m.next[std::size_t(g)])
+        if(uv[std::size_t(f)][std::size_t(k)] == q) { w.kind = 2; w.id = m.source(g); return w; }
+      return w;
+    }
+    const int e = zero_edge >> 1;
+    Point_2 c = q;
+    if(zero_edge & 1) c = motion[std::size_t(e)](q);   // into the frame of face(2e)
+    if(m.face[std::size_t(zero_edge ^ 1)] < 0) c = q;   // boundary edge: one frame only
+    w.kind = 1; w.id = e; w.x = c.x(); w.y = c.y();
+    return w;
+  };
+  typedef std::tuple<int, int, double, double> Key;
+  auto key_of = [](const Where& w) { return w.kind == 2 ? Key(2, w.id, 0., 0.) : Key(w.kind, w.id, w.x, w.y); };
+  std::map<Key, std::size_t> id_of;
+  std::vector<Where> points;
+  std::vector<std::pair<int, Point_2>> seat;   // per grid point: a face containing it and its coordinates there
+  for(std::size_t f = 0; f < nf; ++f) {
+    double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+    for(const Point_2& p : uv[f]) {
+      lo[0] = (std::min)(lo[0], p.x()); lo[1] = (std::min)(lo[1], p.y());
+      hi[0] = (std::max)(hi[0], p.x()); hi[1] = (std::max)(hi[1], p.y());
+    }
+    for(double a = std::ceil(lo[0]); a <= hi[0]; ++a)
+      for(double b = std::ceil(lo[1]); b <= hi[1]; ++b) {
+        const Point_2 q(a, b);
+        const Where w = classify(int(f), q);
+        if(w.kind < 0) continue;
+        if(id_of.emplace(key_of(w), points.size()).second) { points.push_back(w); seat.emplace_back(int(f), q); }
+      }
+  }
+  if(points.size() > 50000000) { st.message = "more than 5e7 grid points: edge length too small"; return st; }
+
+  // 4. faces: from every grid point that is not a cone, the unit squares (triangles) at it, walked
+  auto walk = [&](int f, Point_2 from, Point_2 to, internal::Lattice_motion& carried, int& where) -> bool {
+    for(std::size_t it = 0; it < 4 * nf + 16; ++it) {
+      int exit = -1, any = -1;
+      int g = m.face_halfedge[std::size_t(f)];
+      for(int k = 0; k < 3; ++k, g = m.next[std::size_t(g)]) {
+        const EP a = ep(uv[std::size_t(f)][std::size_t(k)]), b = ep(uv[std::size_t(f)][std::size_t((k + 1) % 3)]);
+        if(CGAL::orientation(a, b, ep(to)) != CGAL::RIGHT_TURN) continue;
+        any = g;
+        if(CGAL::orientation(ep(from), ep(to), a) == CGAL::RIGHT_TURN && CGAL::orientation(ep(from), ep(to), b) != CGAL::RIGHT_TURN) exit = g;
+      }
+      if(any < 0) { where = f; return true; }   // `to` is in the closed face
+      if(exit < 0) exit = any;
+      const int next_face = m.face[std::size_t(exit ^ 1)];
+      if(next_face < 0) return false;   // left the surface through its boundary
+      const int e = exit >> 1;
+      if(!dev.tree_[std::size_t(e)]) {
+        const internal::Lattice_motion t = (exit & 1) ? motion[std::size_t(e)] : motion[std::size_t(e)].inverse();
+        from = t(from);
+        to = t(to);
+        carried = t * carried;
+      }
+      f = next_face;
+    }
+    return false;
+  };
+  std::map<std::vector<std::size_t>, int> face_set;
+  std::vector<std::vector<std::size_t>> out_faces;
+  for(std::size_t i = 0; i < points.size(); ++i) {
+    if(points[i].kind == 2 && dev.cone_index_[std::size_t(points[i].id)] >= 0) continue;
+    for(int dir = 0; dir < (square ? 4 : 6); ++dir) {
+      internal::Lattice_motion r;
+      for(int k = 0; k < dir; ++k) r = step_rotation * r;
+      std::vector<std::size_t> corners(1, i);
+      int f = seat[i].first;
+      Point_2 at = seat[i].second;
+      internal::Lattice_motion carried;   // from the start frame to the current one
+      bool ok = true;
+      for(int k = 1; k < sides && ok; ++k) {   // along d, then d rotated by the grid's angle at each corner
+        // square: d, then +rot90(d), then -d; triangle: d, then rot120(d)
+        std::array<double, 2> d = r.rotate(1, 0);
+        if(square) { for(int j = 1; j < k; ++j) d = step_rotation.rotate(d[0], d[1]); }
+        else if(k == 2) { d = step_rotation.rotate(d[0], d[1]); d = step_rotation.rotate(d[0], d[1]); }
+        const std::array<double, 2> dc = carried.rotate(d[0], d[1]);
+        const Point_2 to(at.x() + dc[0], at.y() + dc[1]);
+        int where = -1;
+        internal::Lattice_motion c = carried;
+        if(!walk(f, at, to, c, where)) { ok = false; break; }
+        const Point_2 target = (c * carried.inverse())(to);
+        carried = c;
+        const Where w = classify(where, target);
+        const auto it = id_of.find(key_of(w));
+        if(w.kind < 0 || it == id_of.end()) {
+          st.message = "a grid edge ends off the grid points (inconsistent development)";
+          return st;
+        }
+        corners.push_back(it->second);
+        f = where;
+        at = target;
+      }
+      if(!ok) continue;   // crosses the boundary: no face there
+      std::vector<std::size_t> key = corners;   // one face, whichever corner it was found from
+      std::rotate(key.begin(), std::min_element(key.begin(), key.end()), key.end());
+      if(face_set.emplace(key, int(out_faces.size())).second) out_faces.push_back(corners);
+    }
+  }
+
+  // 5. the output mesh
+  typedef typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
+  VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
+  typedef typename boost::property_traits<typename boost::property_map<PolygonMesh, CGAL::vertex_point_t>::type>::value_type Out_point;
+  auto point3 = [&](int v) {
+    const auto& p = get(vpm, m.vertices[std::size_t(v)]);
+    return std::array<double, 3>{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+  };
+  CGAL::clear(out);
+  std::vector<out_vertex> ov(points.size());
+  auto opm = get(CGAL::vertex_point, out);
+  for(std::size_t i = 0; i < points.size(); ++i) {
+    const Where& w = points[i];
+    std::array<double, 3> x{{0, 0, 0}};
+    if(w.kind == 2) x = point3(w.id);
+    else {
+      const int f = w.kind == 0 ? w.id : m.face[std::size_t(2 * w.id)] >= 0 ? m.face[std::size_t(2 * w.id)] : m.face[std::size_t(2 * w.id + 1)];
+      const Point_2 q(w.x, w.y);
+      const std::array<Point_2, 3>& c = uv[std::size_t(f)];
+      const double area = (c[1].x() - c[0].x()) * (c[2].y() - c[0].y()) - (c[2].x() - c[0].x()) * (c[1].y() - c[0].y());
+      double bary[3];
+      for(int k = 0; k < 3; ++k) {
+        const Point_2 &a = c[std::size_t((k + 1) % 3)], &b = c[std::size_t((k + 2) % 3)];
+        bary[k] = ((b.x() - a.x()) * (q.y() - a.y()) - (q.x() - a.x()) * (b.y() - a.y())) / area;
+      }
+      int g = m.face_halfedge[std::size_t(f)];
+      for(int k = 0; k < 3; ++k, g = m.next[std::size_t(g)]) {
+        const std::array<double, 3> p = point3(m.source(g));
+        for(int j = 0; j < 3; ++j) x[std::size_t(j)] += bary[k] * p[std::size_t(j)];
+      }
+    }
+    ov[i] = add_vertex(out);
+    put(opm, ov[i], Out_point(x[0], x[1], x[2]));
+  }
+  for(const auto& fc : out_faces) {
+    std::vector<out_vertex> vs;
+    for(std::size_t i : fc) vs.push_back(ov[i]);
+    if(CGAL::Euler::add_face(vs, out) == OGT::null_face()) {
+      CGAL::clear(out);
+      st.message = "the grid's faces do not form a manifold surface (a face is found twice or the cones are too close for this edge length)";
+      return st;
+    }
+  }
+  // 6. read-back: valences; irregular vertices must be the cones, with valence 4 - K/(pi/2)
+  const int regular = square ? 4 : 6;
+  const std::vector<double>& K = dev.im_.curvatures();
+  bool cones_ok = true;
+  for(std::size_t i = 0; i < points.size(); ++i) {
+    const out_vertex v = ov[i];
+    if(CGAL::is_border(v, out)) continue;
+    const std::size_t val = degree(v, out);
+    if(st.valences.size() <= val) st.valences.resize(val + 1, 0);
+    ++st.valences[val];
+    const bool at_cone = points[i].kind == 2 && dev.cone_index_[std::size_t(points[i].id)] >= 0;
+    const long expected = at_cone ? std::lround(regular - K[std::size_t(points[i].id)] / step) : regular;
+    if(long(val) != regular) st.irregular_vertices.emplace_back(i, at_cone ? long(points[i].id) : -1L);
+    if(long(val) != expected) cones_ok = false;
+  }
+  st.vertices = num_vertices(out);
+  st.faces = num_faces(out);
+  if(!cones_ok) {
+    st.message = "an output vertex has a valence its cone does not explain";
+    return st;
+  }
+  st.success = true;
+  return st;
+}
+
+} // namespace Surface_mesh_direction_fields
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_GRID_TESSELLATION_H

@@ -1,0 +1,262 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+// Regular remeshing from flat cone metrics (Lai et al. 2010, section 5): cut and develop, and
+// the square and triangular grids carried onto the surface. Checked on every result, from the
+// output mesh alone: face sizes, valences (4 or 6 except at the cones, where a cone of
+// curvature K has 4 - K/(pi/2) or 6 - K/(pi/3)), Euler characteristic, face count against the
+// area, every output vertex on the input surface (AABB distance), no face flipped against the
+// input's normal; and the failures (incompatible metric, edge length that does not divide).
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CGAL/Surface_mesh_direction_fields/flat_development.h>
+#include <CGAL/Surface_mesh_direction_fields/grid_tessellation.h>
+
+#include <cmath>
+#include <iostream>
+#include <map>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "test_util.h"
+#include "mesh_generators.h"
+
+namespace SMDF = CGAL::Surface_mesh_direction_fields;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Surface_mesh;
+typedef CGAL::Polyhedron_3<K> Polyhedron;
+
+namespace {
+
+// The surface of the unit cube, each side cut into n x n squares of two triangles; the vertices
+// inside a side moved within it at random (the metric stays the cube's: flat, eight cones of
+// pi/2 at the corners).
+smdf_test::Soup cube_soup(int n, unsigned seed)
+{
+  smdf_test::Soup s;
+  std::map<std::array<long, 3>, std::size_t> index;
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> jitter(-0.3 / n, 0.3 / n);
+  auto vertex = [&](std::array<long, 3> g) {
+    auto it = index.find(g);
+    if(it != index.end()) return it->second;
+    std::array<double, 3> p;
+    int inside = 0;
+    for(int k = 0; k < 3; ++k) { p[std::size_t(k)] = double(g[std::size_t(k)]) / n; inside += g[std::size_t(k)] > 0 && g[std::size_t(k)] < n; }
+    if(inside == 2)   // inside a side: move it within the side's plane
+      for(int k = 0; k < 3; ++k) if(g[std::size_t(k)] > 0 && g[std::size_t(k)] < n) p[std::size_t(k)] += jitter(rng);
+    s.points.push_back(p);
+    return index[g] = s.points.size() - 1;
+  };
+  for(int axis = 0; axis < 3; ++axis)
+    for(int side = 0; side < 2; ++side) {
+      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+      for(int i = 0; i < n; ++i)
+        for(int j = 0; j < n; ++j) {
+          std::array<long, 3> c[4];
+          const int di[4] = {0, 1, 1, 0}, dj[4] = {0, 0, 1, 1};
+          for(int k = 0; k < 4; ++k) {
+            c[k][std::size_t(axis)] = side * n;
+            c[k][std::size_t(u)] = i + di[k];
+            c[k][std::size_t(v)] = j + dj[k];
+          }
+          std::size_t q[4];
+          for(int k = 0; k < 4; ++k) q[k] = vertex(c[k]);
+          if(side == 1) { s.faces.push_back({q[0], q[1], q[2]}); s.faces.push_back({q[0], q[2], q[3]}); }   // outward normals
+          else { s.faces.push_back({q[0], q[2], q[1]}); s.faces.push_back({q[0], q[3], q[2]}); }
+        }
+    }
+  return s;
+}
+
+// The regular octahedron with vertices +-e_i, each face cut into n^2 triangles: six cones of
+// 2 pi / 3.
+smdf_test::Soup octahedron_soup(int n)
+{
+  smdf_test::Soup s;
+  std::map<std::array<long, 3>, std::size_t> index;
+  auto vertex = [&](std::array<long, 3> g) {   // barycentric integer coordinates times n, signed
+    auto it = index.find(g);
+    if(it != index.end()) return it->second;
+    s.points.push_back({{double(g[0]) / n, double(g[1]) / n, double(g[2]) / n}});
+    return index[g] = s.points.size() - 1;
+  };
+  for(int sx : {-1, 1})
+    for(int sy : {-1, 1})
+      for(int sz : {-1, 1}) {
+        auto P = [&](long a, long b) { return vertex({{sx * a, sy * b, sz * (n - a - b)}}); };
+        const bool flip = sx * sy * sz < 0;
+        for(long a = 0; a < n; ++a)
+          for(long b = 0; a + b < n; ++b) {
+            std::vector<std::size_t> t1 = {P(a, b), P(a + 1, b), P(a, b + 1)};
+            if(flip) std::swap(t1[1], t1[2]);
+            s.faces.push_back(t1);
+            if(a + b + 1 < n) {
+              std::vector<std::size_t> t2 = {P(a + 1, b), P(a + 1, b + 1), P(a, b + 1)};
+              if(flip) std::swap(t2[1], t2[2]);
+              s.faces.push_back(t2);
+            }
+          }
+      }
+  return s;
+}
+
+double surface_area(const Surface_mesh& m)
+{
+  double a = 0;
+  for(auto f : faces(m)) {
+    const auto h = halfedge(f, m);
+    a += std::sqrt(CGAL::squared_area(m.point(source(h, m)), m.point(target(h, m)), m.point(target(next(h, m), m))));
+  }
+  return a;
+}
+
+// The read-back of a remesh, from the output mesh alone.
+template <typename InputMesh>
+void check_remesh(const InputMesh& input, const Surface_mesh& in_sm, const Surface_mesh& out, const SMDF::Grid_tessellation_status& st,
+                  int sides, const std::map<int, std::size_t>& expected_irregular, double expected_faces, const std::string& what)
+{
+  (void)input;
+  SMDF_CHECK_MSG(st.success, what << ": " << st.message);
+  if(!st.success) return;
+  std::size_t wrong_size = 0;
+  for(auto f : faces(out)) wrong_size += CGAL::halfedges_around_face(halfedge(f, out), out).size() != std::size_t(sides);
+  const long chi_in = long(num_vertices(in_sm)) - long(num_edges(in_sm)) + long(num_faces(in_sm));
+  const long chi_out = long(num_vertices(out)) - long(num_edges(out)) + long(num_faces(out));
+  std::map<int, std::size_t> irregular;
+  const int regular = sides == 4 ? 4 : 6;
+  for(auto v : vertices(out)) {
+    const int d = int(degree(v, out));
+    if(d != regular) ++irregular[d];
+  }
+  SMDF_CHECK_MSG(wrong_size == 0 && CGAL::is_valid_polygon_mesh(out), what << ": all faces have " << sides << " sides (" << wrong_size << " do not)");
+  SMDF_CHECK_MSG(chi_out == chi_in, what << ": Euler characteristic " << chi_out << ", input " << chi_in);
+  SMDF_CHECK_MSG(irregular == expected_irregular, what << ": the irregular vertices are those of the cones (" << irregular.size() << " valences)");
+  SMDF_CHECK_MSG(std::abs(double(num_faces(out)) - expected_faces) < 1e-6 * expected_faces,
+                 what << ": " << num_faces(out) << " faces, area / face area = " << expected_faces);
+  // every output vertex on the input surface; no face flipped against the input's normal
+  typedef CGAL::AABB_face_graph_triangle_primitive<Surface_mesh> Primitive;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> Tree;
+  Tree tree(faces(in_sm).first, faces(in_sm).second, in_sm);
+  double far = 0;
+  std::size_t flipped = 0;
+  for(auto v : vertices(out)) far = std::max(far, std::sqrt(tree.squared_distance(out.point(v))));
+  for(auto f : faces(out)) {
+    K::Vector_3 n(0, 0, 0);
+    K::Vector_3 c(0, 0, 0);
+    std::vector<K::Point_3> p;
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, out), out)) p.push_back(out.point(target(h, out)));
+    for(std::size_t i = 0; i < p.size(); ++i) n = n + CGAL::cross_product(p[i] - CGAL::ORIGIN, p[(i + 1) % p.size()] - CGAL::ORIGIN);
+    for(const auto& q : p) c = c + (q - CGAL::ORIGIN) / double(p.size());
+    const auto hit = tree.closest_point_and_primitive(CGAL::ORIGIN + c);
+    const auto h = halfedge(hit.second, in_sm);
+    const K::Vector_3 m = CGAL::normal(in_sm.point(source(h, in_sm)), in_sm.point(target(h, in_sm)), in_sm.point(target(next(h, in_sm), in_sm)));
+    flipped += n * m <= 0;
+  }
+  SMDF_CHECK_MSG(far < 1e-12, what << ": every output vertex lies on the input surface (farthest " << far << ")");
+  SMDF_CHECK_MSG(flipped == 0, what << ": no face flipped against the input surface (" << flipped << " are)");
+  std::cout << what << ": " << num_vertices(out) << " vertices, " << num_faces(out) << " faces, spacing of the metric "
+            << st.compatibility.spacing << ", edge length " << st.edge_length << std::endl;
+}
+
+void cube()
+{
+  for(int n : {3, 4}) {
+    Surface_mesh mesh;
+    smdf_test::soup_to_mesh(cube_soup(n, 7u + unsigned(n)), mesh);
+    const auto dev = SMDF::develop_flat_metric(mesh);
+    SMDF_CHECK_MSG(dev.cones().size() == 8 && dev.max_flatness_error() < 1e-12 && dev.max_pruned_motion() < 1e-9,
+                   "cube: eight cones, flat elsewhere (" << dev.max_flatness_error() << "), pruned motions trivial");
+    for(double h : {0.25, 0.125}) {
+      Surface_mesh out;
+      const auto st = SMDF::tessellate_flat_metric(mesh, dev, SMDF::SQUARE_GRID, h, out);
+      check_remesh(mesh, mesh, out, st, 4, {{3, 8}}, 6 / (h * h), "cube n=" + std::to_string(n) + ", quads of " + std::to_string(h));
+    }
+    Surface_mesh out;
+    const auto bad = SMDF::tessellate_flat_metric(mesh, dev, SMDF::SQUARE_GRID, 0.3, out);
+    SMDF_CHECK_MSG(!bad.success && bad.message.find("divide") != std::string::npos, "cube, edge length 0.3: " << bad.message);
+    const auto tri = SMDF::tessellate_flat_metric(mesh, dev, SMDF::TRIANGULAR_GRID, 0.25, out);
+    SMDF_CHECK_MSG(!tri.success && !tri.failing_edges.empty(), "cube with the triangular grid: incompatible (" << tri.message << ")");
+  }
+  // the same on a Polyhedron_3
+  Polyhedron p;
+  smdf_test::soup_to_mesh(cube_soup(3, 3u), p);
+  Surface_mesh sm;
+  smdf_test::soup_to_mesh(cube_soup(3, 3u), sm);
+  const auto dev = SMDF::develop_flat_metric(p);
+  Surface_mesh out;
+  const auto st = SMDF::tessellate_flat_metric(p, dev, SMDF::SQUARE_GRID, 0.25, out);
+  check_remesh(p, sm, out, st, 4, {{3, 8}}, 96, "cube (Polyhedron_3), quads of 0.25");
+}
+
+void octahedron()
+{
+  Surface_mesh mesh;
+  smdf_test::soup_to_mesh(octahedron_soup(3), mesh);
+  const auto dev = SMDF::develop_flat_metric(mesh);
+  SMDF_CHECK_MSG(dev.cones().size() == 6, "octahedron: six cones");
+  const double side = std::sqrt(2.);
+  for(int k : {2, 4}) {
+    Surface_mesh out;
+    const auto st = SMDF::tessellate_flat_metric(mesh, dev, SMDF::TRIANGULAR_GRID, side / k, out);
+    check_remesh(mesh, mesh, out, st, 3, {{4, 6}}, 8. * k * k, "octahedron, triangles of side/" + std::to_string(k));
+  }
+  Surface_mesh out;
+  const auto sq = SMDF::tessellate_flat_metric(mesh, dev, SMDF::SQUARE_GRID, side / 2, out);
+  SMDF_CHECK_MSG(!sq.success && !sq.failing_edges.empty(), "octahedron with the square grid: incompatible (" << sq.message << ")");
+}
+
+// A torus embedded in space whose metric is that of a flat torus: the lengths of a periodic
+// planar layout of its n x m grid, cell (a, b), vertices jittered. Rectangular lattice
+// (n a, 0), (0, m b); with shear, a lattice the square grid does not fit.
+void flat_torus()
+{
+  const std::size_t n = 20, m = 12;
+  Surface_mesh mesh;
+  smdf_test::soup_to_mesh(smdf_test::torus_soup(n, m), mesh);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> jitter(-0.06, 0.06);
+  for(double shear : {0., 0.37}) {
+    std::vector<std::array<double, 2>> plane(n * m);
+    for(std::size_t i = 0; i < n; ++i)
+      for(std::size_t j = 0; j < m; ++j) plane[i * m + j] = {{0.25 * double(i) + jitter(rng), 0.25 * double(j) + jitter(rng)}};
+    auto lengths = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:flat", 0).first;
+    const double L[2] = {0.25 * double(n), 0.25 * double(m)};
+    for(auto e : edges(mesh)) {   // the shortest periodic difference (cells are small)
+      const std::size_t a = std::size_t(source(halfedge(e, mesh), mesh)), b = std::size_t(target(halfedge(e, mesh), mesh));
+      double dx = plane[b][0] - plane[a][0], dy = plane[b][1] - plane[a][1];
+      const double wy = std::round(dy / L[1]);
+      dy -= wy * L[1];
+      dx -= wy * shear;   // going once around in v shifts u by the shear
+      dx -= std::round(dx / L[0]) * L[0];
+      lengths[e] = std::sqrt(dx * dx + dy * dy);
+    }
+    const auto dev = SMDF::develop_flat_metric(mesh, SMDF::parameters::edge_length_map(lengths));
+    Surface_mesh out;
+    const auto st = SMDF::tessellate_flat_metric(mesh, dev, SMDF::SQUARE_GRID, 0.5, out);
+    if(shear == 0) {
+      SMDF_CHECK_MSG(dev.cones().empty() && dev.max_flatness_error() < 1e-9, "flat torus: no cones (" << dev.max_flatness_error() << ")");
+      check_remesh(mesh, mesh, out, st, 4, {}, 60, "flat 5 x 3 torus, quads of 0.5");
+    } else {
+      SMDF_CHECK_MSG(!st.success && !st.failing_edges.empty(), "sheared flat torus: the square grid does not fit (" << st.message << ")");
+    }
+    mesh.remove_property_map(lengths);
+  }
+}
+
+} // namespace
+
+int main()
+{
+  cube();
+  octahedron();
+  flat_torus();
+  return smdf_test::finish();
+}
