@@ -46,6 +46,9 @@ struct Grid_tessellation_status
   std::vector<std::size_t> valences;
   /// output vertices of irregular valence, each with the input cone it lies on (-1 if none)
   std::vector<std::pair<std::size_t, long>> irregular_vertices;
+  /// output faces whose area vector points against the input's normals under their corners
+  /// (inverted in space: the metric stretches too much for the edge length); success needs none
+  std::size_t inverted_faces = 0;
 };
 
 namespace internal {
@@ -107,7 +110,8 @@ inline double dyadic(double x) { return std::round(x * 1048576.) / 1048576.; }  
 /// `edge_length_map` on `tm`).
 ///
 /// Named parameters: `vertex_point_map` of `tm` (the positions of the output vertices' input
-/// triangles). Returns the status; `out` receives the remesh (cleared first) only on success.
+/// triangles). Returns the status. `out` is cleared; it receives the remesh when the faces could
+/// be built, also when a read-back check then fails (inverted faces, valences), for inspection.
 /// \tparam PolygonMesh a model of `MutableFaceGraph` whose vertex points are constructible from
 /// three doubles
 template <typename TriangleMesh, typename PolygonMesh, typename NamedParameters = parameters::Default_named_parameters>
@@ -146,7 +150,17 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
     group.cone_positions.push_back(dev.corners_[std::size_t(f)][std::size_t(k)]);
   }
   // several components: one frame each; the test then only holds for one component
-  st.compatibility = tessellation_compatibility(group, grid, 1e-6);
+  // the lattice search must reach lattice vectors as long as the longest translation in edge lengths
+  double longest = 0;
+  if(!group.motions.empty()) {
+    const Point_2 o = group.cone_positions.empty() ? Point_2(0, 0) : group.cone_positions.front();
+    for(const Rigid_motion_2& r : group.motions) {
+      const Point_2 q = r(o);
+      longest = (std::max)(longest, std::sqrt((q.x() - o.x()) * (q.x() - o.x()) + (q.y() - o.y()) * (q.y() - o.y())));
+    }
+  }
+  const int reach = int((std::min)(std::ceil(longest / edge_length) + 2, 1e3));
+  st.compatibility = tessellation_compatibility(group, grid, 1e-6, (std::max)(8, reach));
   for(std::size_t i : st.compatibility.failing_loops) st.failing_edges.push_back(group_edge[i]);
   if(!st.compatibility.compatible) {
     std::ostringstream os;
@@ -448,6 +462,36 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
   }
   st.vertices = num_vertices(out);
   st.faces = num_faces(out);
+  // inverted faces: the polygon's area vector against the sum of the input normals under its corners
+  auto input_normal = [&](const Where& w) {
+    const int f = w.kind == 0 ? w.id : w.kind == 1 ? (m.face[std::size_t(2 * w.id)] >= 0 ? m.face[std::size_t(2 * w.id)] : m.face[std::size_t(2 * w.id + 1)])
+                                                    : m.face[std::size_t(m.vertex_out[std::size_t(w.id)])];
+    const int g = m.face_halfedge[std::size_t(f)];
+    const std::array<double, 3> a = point3(m.source(g)), b = point3(m.target[std::size_t(g)]), c = point3(m.target[std::size_t(m.next[std::size_t(g)])]);
+    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    std::array<double, 3> n{{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]}};
+    const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for(double& x : n) x /= (l > 0 ? l : 1);
+    return n;
+  };
+  for(const auto& fc : out_faces) {
+    double area[3] = {0, 0, 0}, under[3] = {0, 0, 0};
+    for(std::size_t k = 0; k < fc.size(); ++k) {
+      const Out_point& p = get(opm, ov[fc[k]]);
+      const Out_point& q = get(opm, ov[fc[(k + 1) % fc.size()]]);
+      const double px = CGAL::to_double(p.x()), py = CGAL::to_double(p.y()), pz = CGAL::to_double(p.z());
+      const double qx = CGAL::to_double(q.x()), qy = CGAL::to_double(q.y()), qz = CGAL::to_double(q.z());
+      area[0] += py * qz - pz * qy; area[1] += pz * qx - px * qz; area[2] += px * qy - py * qx;
+      const std::array<double, 3> n = input_normal(points[fc[k]]);
+      for(int j = 0; j < 3; ++j) under[j] += n[std::size_t(j)];
+    }
+    st.inverted_faces += area[0] * under[0] + area[1] * under[1] + area[2] * under[2] <= 0;
+  }
+  if(st.inverted_faces > 0) {
+    st.message = std::to_string(st.inverted_faces) + " faces are inverted in space (their corners turn against the input's normals: "
+                 "the metric stretches too much for this edge length)";
+    return st;
+  }
   if(!cones_ok) {
     st.message = "an output vertex has a valence its cone does not explain";
     return st;
