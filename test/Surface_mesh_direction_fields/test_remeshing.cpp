@@ -18,6 +18,7 @@
 #include <CGAL/Surface_mesh_direction_fields/flat_development.h>
 #include <CGAL/Surface_mesh_direction_fields/grid_tessellation.h>
 #include <CGAL/Surface_mesh_direction_fields/polycube_metric.h>
+#include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/IO/read_triangle_mesh.h>
 
 #include <cmath>
@@ -281,7 +282,13 @@ void box_polycube(const std::string& dir)
     }
     const double h = extent / 16;
     auto lengths = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:box", 0).first;
-    const auto ps = SMDF::box_polycube_metric(mesh, corners, h, lengths);
+    // the paths and weights under the flat cone metric with the corners as cones of pi/2 (Lai et al.)
+    auto targets = mesh.add_property_map<Surface_mesh::Vertex_index, double>("v:target", 0.).first;
+    for(auto v : corners) targets[v] = M_PI / 2;
+    auto flat = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:flat", 0).first;
+    const auto cm = SMDF::compute_cone_metric(mesh, targets, flat, SMDF::parameters::intrinsic_edge_flips(false));
+    SMDF_CHECK_MSG(cm.converged, file << ": flat cone metric " << cm.message);
+    const auto ps = SMDF::box_polycube_metric(mesh, corners, h, lengths, SMDF::parameters::edge_length_map(flat));
     SMDF_CHECK_MSG(ps.success, file << ": box metric: " << ps.message);
     if(!ps.success) continue;
     const auto dev = SMDF::develop_flat_metric(mesh, SMDF::parameters::edge_length_map(lengths));

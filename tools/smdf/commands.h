@@ -24,6 +24,7 @@ Json run_connection(const Args& args);      Command connection_command();
 Json run_singularities(const Args& args);   Command singularities_command();
 Json run_cone_metric(const Args& args);     Command cone_metric_command();
 Json run_rosy(const Args& args);            Command rosy_command();
+Json run_remesh(const Args& args);          Command remesh_command();
 
 } // namespace smdf_cli
 

@@ -64,6 +64,7 @@ const std::vector<Command>& commands()
     singularities_command(),
     cone_metric_command(),
     rosy_command(),
+    remesh_command(),
   };
   return table;
 }

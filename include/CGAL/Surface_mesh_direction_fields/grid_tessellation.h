@@ -159,7 +159,11 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
       longest = (std::max)(longest, std::sqrt((q.x() - o.x()) * (q.x() - o.x()) + (q.y() - o.y()) * (q.y() - o.y())));
     }
   }
-  const int reach = int((std::min)(std::ceil(longest / edge_length) + 2, 1e3));
+  // (rotations first: when one fails no lattice search is needed)
+  const double step0 = square ? CGAL_PI / 2 : CGAL_PI / 3;
+  bool rotations_ok = true;
+  for(double r : group.rotations) rotations_ok = rotations_ok && std::abs(r / step0 - std::round(r / step0)) * step0 <= 1e-6;
+  const int reach = rotations_ok ? int((std::min)(std::ceil(longest / edge_length) + 2, 128.)) : 1;
   st.compatibility = tessellation_compatibility(group, grid, 1e-6, (std::max)(8, reach));
   for(std::size_t i : st.compatibility.failing_loops) st.failing_edges.push_back(group_edge[i]);
   if(!st.compatibility.compatible) {

@@ -48,7 +48,8 @@ struct Polycube_metric_status
 /// cube): the eight `corners` of a closed genus-0 mesh (corner \f$i\f$ goes to the box corner
 /// \f$(i \& 1, (i \gg 1) \& 1, (i \gg 2) \& 1)\f$) are joined by the twelve shortest edge paths
 /// of the box's edges (Dijkstra on the edge lengths, each path avoiding the earlier ones and
-/// the other corners), which cut the mesh into six disks; each disk is mapped onto its face of
+/// the other corners; lengths of the metric of `edge_length_map`, for Lai et al. the flat cone
+/// metric with cones of \f$\pi/2\f$ at the corners), which cut the mesh into six disks; each disk is mapped onto its face of
 /// the box by a Tutte embedding with mean value weights (Floater 2003: bijective onto the convex
 /// rectangle), its boundary placed by arc length along the four paths. The box's sides are the
 /// mean lengths of its four parallel paths, rounded to multiples of `edge_length`. The output
@@ -61,8 +62,8 @@ struct Polycube_metric_status
 /// disagree on where its vertices go. Placing each path once by arc length and embedding the
 /// disks with fixed boundaries keeps the sides consistent by construction.
 ///
-/// Named parameters: `vertex_point_map` (the positions that give the path lengths and the mean
-/// value weights). Failures (a path that cannot avoid the earlier ones, disks that do not match
+/// Named parameters: `edge_length_map` (the metric of the path lengths and of the angles of the
+/// mean value weights; default: Euclidean lengths) or `intrinsic_mesh`, and the index maps. Failures (a path that cannot avoid the earlier ones, disks that do not match
 /// the box's faces, a degenerate triangle) are in the status.
 template <typename TriangleMesh, typename EdgeLengthMap, typename NamedParameters = parameters::Default_named_parameters>
 Polycube_metric_status box_polycube_metric(const TriangleMesh& tm,
@@ -104,6 +105,7 @@ Polycube_metric_status box_polycube_metric(const TriangleMesh& tm,
   std::vector<char> used;           // vertices inside earlier paths
   std::vector<int> path_of_edge;    // per mesh edge: the box edge whose path it is on
   std::vector<std::vector<int>> paths(12);   // vertex sequences, from the lower corner to the upper
+  std::vector<std::vector<double>> steps(12);  // the metric's lengths of their edges
   // paths in three orders until one lets every path avoid the earlier ones: shortest first,
   // longest first, then the twelve edges grouped by axis
   for(int attempt = 0; attempt < 3; ++attempt) {
@@ -136,7 +138,7 @@ Polycube_metric_status box_polycube_metric(const TriangleMesh& tm,
       do {
         const int u = m.target[std::size_t(h)];
         const bool blocked = used[std::size_t(u)] || (corner_of[std::size_t(u)] >= 0 && u != t) || path_of_edge[std::size_t(h >> 1)] >= 0;
-        const double du = d[std::size_t(v)] + dist(point(v), point(u));
+        const double du = d[std::size_t(v)] + m.edge_length(h);
         if(!blocked && du < d[std::size_t(u)]) { d[std::size_t(u)] = du; from[std::size_t(u)] = h; queue.push({du, u}); }
         h = m.ccw_out(h);
       } while(h != h0);
@@ -149,14 +151,18 @@ Polycube_metric_status box_polycube_metric(const TriangleMesh& tm,
       break;
     }
     std::vector<int> p(1, t);
+    std::vector<double> len;
     for(int v = t; v != s;) {
       const int h = from[std::size_t(v)];
       path_of_edge[std::size_t(h >> 1)] = int(k);
       ++st.path_edges;
+      len.push_back(m.edge_length(h));
       v = m.source(h);
       p.push_back(v);
     }
     std::reverse(p.begin(), p.end());
+    std::reverse(len.begin(), len.end());
+    steps[k] = len;
     for(std::size_t i = 1; i + 1 < p.size(); ++i) used[std::size_t(p[i])] = 1;
     paths[k] = p;
   }
@@ -211,7 +217,7 @@ Polycube_metric_status box_polycube_metric(const TriangleMesh& tm,
   for(std::size_t k = 0; k < 12; ++k) {
     const int axis = box_edges[k][0] ^ box_edges[k][1];
     double L = 0;
-    for(std::size_t i = 0; i + 1 < paths[k].size(); ++i) L += dist(point(paths[k][i]), point(paths[k][i + 1]));
+    for(double x : steps[k]) L += x;
     total[axis == 1 ? 0 : axis == 2 ? 1 : 2] += L / 4;
   }
   for(int a = 0; a < 3; ++a) st.dimensions[std::size_t(a)] = edge_length * (std::max)(1., std::round(total[a] / edge_length));
@@ -223,7 +229,7 @@ Polycube_metric_status box_polycube_metric(const TriangleMesh& tm,
   for(std::size_t k = 0; k < 12; ++k) {
     const std::vector<int>& p = paths[k];
     std::vector<double> s(p.size(), 0.);
-    for(std::size_t i = 1; i < p.size(); ++i) s[i] = s[i - 1] + dist(point(p[i - 1]), point(p[i]));
+    for(std::size_t i = 1; i < p.size(); ++i) s[i] = s[i - 1] + steps[k][i - 1];
     const V3 a = corner_position(box_edges[k][0]), b = corner_position(box_edges[k][1]);
     st.max_path_stretch = (std::max)(st.max_path_stretch, (std::max)(s.back() / dist(a, b), dist(a, b) / s.back()));
     for(std::size_t i = 1; i + 1 < p.size(); ++i) {
@@ -247,21 +253,13 @@ Polycube_metric_status box_polycube_metric(const TriangleMesh& tm,
       Eigen::MatrixXd b = Eigen::MatrixXd::Zero(n, 2);
       for(int i = 0; i < n; ++i) {
         const int v = unknowns[std::size_t(i)];
-        const V3 pv = point(v);
         double sum = 0;
         const int h0 = m.vertex_out[std::size_t(v)];
         int h = h0;
-        do {   // mean value weight of edge (v, target(h)): (tan(a/2) + tan(b/2)) / |e|, a and b the angles at v beside it
+        do {   // mean value weight of edge (v, q): (tan(a/2) + tan(b/2)) / |vq|, a and b the metric's angles at v beside it
           const int q = m.target[std::size_t(h)];
-          auto angle_at_v = [&](int x, int y) {
-            const V3 a = point(x), c2 = point(y);
-            const double ax = a[0] - pv[0], ay = a[1] - pv[1], az = a[2] - pv[2], cx = c2[0] - pv[0], cy = c2[1] - pv[1], cz = c2[2] - pv[2];
-            const double cr = std::sqrt((ay * cz - az * cy) * (ay * cz - az * cy) + (az * cx - ax * cz) * (az * cx - ax * cz) + (ax * cy - ay * cx) * (ax * cy - ay * cx));
-            return std::atan2(cr, ax * cx + ay * cy + az * cz);
-          };
-          const int before = m.target[std::size_t(m.ccw_out(h))];      // the neighbours of q around v
-          const int after = m.target[std::size_t(m.next[std::size_t(h ^ 1)])];
-          const double wgt = (std::tan(0.5 * angle_at_v(q, before)) + std::tan(0.5 * angle_at_v(q, after))) / (std::max)(dist(pv, point(q)), 1e-300);
+          const double wgt = (std::tan(0.5 * m.angle[std::size_t(h)]) + std::tan(0.5 * m.angle[std::size_t(m.next[std::size_t(h ^ 1)])])) /
+                             (std::max)(m.edge_length(h), 1e-300);
           sum += wgt;
           if(column[std::size_t(q)] >= 0) t.emplace_back(i, column[std::size_t(q)], -wgt);
           else {
