@@ -394,9 +394,82 @@ def test_torus(smdf, c, torus, tmp):
     test_svg(smdf, c, torus, tmp, faces)
     test_cone_metric(smdf, c, torus, tmp, verts, faces)
     test_rosy(smdf, c, torus, tmp)
+    test_remesh(smdf, c, torus, tmp)
 
 
 # ---- rosy ---------------------------------------------------------------------------------------
+
+def write_cube_off(path, n):
+    """The surface of the unit cube, each side cut into n x n squares of two triangles."""
+    index, pts, tris = {}, [], []
+    def vid(g):
+        if g not in index:
+            index[g] = len(pts)
+            pts.append(tuple(x / n for x in g))
+        return index[g]
+    for axis in range(3):
+        for side in (0, 1):
+            u, v = (axis + 1) % 3, (axis + 2) % 3
+            for i in range(n):
+                for j in range(n):
+                    q = []
+                    for di, dj in ((0, 0), (1, 0), (1, 1), (0, 1)):
+                        g = [0, 0, 0]
+                        g[axis], g[u], g[v] = side * n, i + di, j + dj
+                        q.append(vid(tuple(g)))
+                    if side == 1:
+                        tris += [(q[0], q[1], q[2]), (q[0], q[2], q[3])]
+                    else:
+                        tris += [(q[0], q[2], q[1]), (q[0], q[3], q[2])]
+    with open(path, "w") as f:
+        f.write("OFF\n%d %d 0\n" % (len(pts), len(tris)))
+        for p in pts:
+            f.write("%r %r %r\n" % p)
+        for t in tris:
+            f.write("3 %d %d %d\n" % t)
+
+
+def test_remesh(smdf, c, torus, tmp):
+    """smdf remesh: a cube (its own metric: 8 cones of pi/2) into quads, the shipped Spot through
+    the box polycube, and the failures (grid incompatible with the metric, a metric that is not
+    flat, usage)."""
+    cube = os.path.join(tmp, "cube.off")
+    write_cube_off(cube, 3)
+    out = os.path.join(tmp, "cube_quads.off")
+    r = smdf.json(["remesh", cube, "--edge-length", "0.25", "--out", out], "smdf remesh cube, quads of 0.25")
+    if r:
+        c.check(r.get("success") is True and r.get("faces_by_size") == {"4": 96} and r.get("valences") == {"3": 8, "4": 90}
+                and r.get("inverted_faces") == 0 and len(r.get("irregular_vertices", [])) == 8
+                and all(v["cone"] is not None and v["valence"] == 3 for v in r["irregular_vertices"]),
+                "remesh cube: 96 quads, the 8 cones of valence 3 (%r)" % {k: r.get(k) for k in ("faces_by_size", "valences")})
+        c.check(r["distance_over_edge_length"]["remesh_to_input"] < 1e-9, "remesh cube: output vertices on the input")
+        verts, faces = read_off(out)
+        edges = set()
+        for f in faces:
+            for i in range(len(f)):
+                edges.add(tuple(sorted((f[i], f[(i + 1) % len(f)]))))
+        c.check(len(verts) == 98 and len(faces) == 96 and all(len(f) == 4 for f in faces)
+                and len(verts) - len(edges) + len(faces) == 2, "remesh cube: the written OFF has 98 vertices, 96 quads, chi 2")
+    r = smdf.json(["remesh", cube, "--faces", "400", "--out", out], "smdf remesh cube, about 400 faces")
+    c.check(r is not None and r.get("success") is True and abs(r["faces_by_size"]["4"] - 400) <= 200,
+            "remesh cube --faces 400: an admissible edge length near the request (%r)" % (r or {}).get("faces_by_size"))
+    rc, o, err = smdf.run(["remesh", cube, "--grid", "triangle", "--edge-length", "0.25", "--out", out])
+    doc = json.loads(o.decode()) if o else {}
+    c.check(rc == 3 and doc.get("success") is False and doc.get("failing_cut_edge_count", 0) > 0
+            and "not symmetries" in err.decode(), "remesh cube --grid triangle: exit 3, failing cut edges named")
+    spot = os.path.join(os.path.dirname(torus), "spot.off")
+    r = smdf.json(["remesh", spot, "--polycube", "box", "--faces", "2000", "--out", os.path.join(tmp, "spot_quads.obj")],
+                  "smdf remesh spot --polycube box")
+    if r:
+        c.check(r.get("success") is True and r.get("valences", {}).get("3") == 8 and set(r["valences"]) == {"3", "4"}
+                and r.get("inverted_faces") == 0 and r["quality"]["min_scaled_jacobian"] > 0,
+                "remesh spot, box polycube: quads, 8 vertices of valence 3, none inverted (%r)" % r.get("quality"))
+    rc, o, err = smdf.run(["remesh", torus, "--edge-length", "0.1", "--out", out])
+    c.check(rc == 3 and b"not symmetries" in err, "remesh torus (curved metric): exit 3, the cut graph's motions fail")
+    smdf.error(["remesh", cube, "--edge-length", "0.25"], "remesh without --out", 2, "--out")
+    smdf.error(["remesh", cube, "--edge-length", "0.25", "--faces", "10", "--out", out], "remesh: both sizes", 2, "one of")
+    smdf.error(["remesh", cube, "--grid", "hex", "--edge-length", "0.25", "--out", out], "remesh: bad grid", 2, "quad")
+
 
 def test_rosy(smdf, c, torus, tmp):
     """smdf rosy on the shipped Spot (cube-like metric: a parallel cross field whose read-back
@@ -732,6 +805,8 @@ def test_shared_robustness(smdf, c, meshes, tmp):
         if small:
             runs.append(["cone-metric", path])
             runs.append(["rosy", path])
+            runs.append(["remesh", path, "--faces", "500", "--out", os.path.join(tmp, "robust_remesh.off")])
+            runs.append(["remesh", path, "--polycube", "box", "--faces", "500", "--out", os.path.join(tmp, "robust_remesh.obj")])
         for args in runs:
             rc, out, err = smdf.run(args)
             if not outcome_ok(rc, out, err):
@@ -744,7 +819,8 @@ def test_shared_robustness(smdf, c, meshes, tmp):
                     bad += 1
                     c.check(False, "smdf singularities %s on its own field: exit 0 (rc=%s, stderr=%r)" % (name, rc, err[:200]))
     c.check(bad == 0, "every subcommand (info, generators, holonomy, connection N = 1 and 4, singularities on "
-            "the field written, cone-metric, rosy) on all %d shared meshes ends cleanly" % len(names))
+            "the field written, cone-metric, rosy, remesh with its own metric and with the box polycube) on all %d "
+            "shared meshes ends cleanly" % len(names))
     # truncated copies of real files and random bytes, in every format
     sources = [n for n in ("spot_c3d.obj", "double-torus_jnd.off", "mushroom_cgal.off", "bob_small_gc.off",
                            "soup_trimesh.off") if n in names]
