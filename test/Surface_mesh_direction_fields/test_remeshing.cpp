@@ -309,6 +309,59 @@ void box_polycube(const std::string& dir)
   }
 }
 
+// The octahedron as the polyhedron (Lai et al.'s 3-RoSy / triangle remeshing): six corners at
+// the vertices extreme along the axes, eight equilateral triangles, the triangular grid.
+void octahedron_polyhedron(const std::string& dir)
+{
+  Surface_mesh mesh;
+  SMDF::read_triangle_mesh(dir + "/meshes/spot_c3d.obj", mesh);
+  std::vector<Surface_mesh::Vertex_index> corners(6);
+  double extent = 0;
+  for(int i = 0; i < 6; ++i) {
+    K::Vector_3 d(i / 2 == 0 ? 1 : 0, i / 2 == 1 ? 1 : 0, i / 2 == 2 ? 1 : 0);
+    if(i % 2) d = -d;
+    double best = -1e300;
+    for(auto v : vertices(mesh)) {
+      const double x = (mesh.point(v) - CGAL::ORIGIN) * d;
+      if(x > best) { best = x; corners[std::size_t(i)] = v; }
+    }
+    extent = std::max(extent, best);
+  }
+  std::vector<std::vector<int>> faces;
+  for(int sx : {1, -1})
+    for(int sy : {1, -1})
+      for(int sz : {1, -1}) {
+        const int X = sx > 0 ? 0 : 1, Y = sy > 0 ? 2 : 3, Z = sz > 0 ? 4 : 5;
+        faces.push_back(sx * sy * sz > 0 ? std::vector<int>{X, Y, Z} : std::vector<int>{X, Z, Y});
+      }
+  auto targets = mesh.add_property_map<Surface_mesh::Vertex_index, double>("v:octa", 0.).first;
+  for(auto v : corners) targets[v] = 2 * M_PI / 3;
+  auto flat = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:octa_flat", 0).first;
+  const auto cm = SMDF::compute_cone_metric(mesh, targets, flat, SMDF::parameters::intrinsic_edge_flips(false));
+  SMDF_CHECK_MSG(cm.converged, "spot, octahedron cones: " << cm.message);
+  const double h = extent / 8, side = 6 * h;
+  auto lengths = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:octa", 0).first;
+  const auto ps = SMDF::polyhedron_metric(mesh, corners, faces, side, lengths, SMDF::parameters::edge_length_map(flat));
+  SMDF_CHECK_MSG(ps.success, "spot, octahedron metric: " << ps.message);
+  if(!ps.success) return;
+  const auto dev = SMDF::develop_flat_metric(mesh, SMDF::parameters::edge_length_map(lengths));
+  SMDF_CHECK_MSG(dev.cones().size() == 6 && dev.max_flatness_error() < 1e-9, "spot, octahedron metric: six cones, flat elsewhere");
+  Surface_mesh out;
+  const auto st = SMDF::tessellate_flat_metric(mesh, dev, SMDF::TRIANGULAR_GRID, h, out);
+  const std::string what = "spot, octahedron polyhedron, triangles of side/6";
+  if(st.inverted_faces == 0) check_remesh(mesh, mesh, out, st, 3, {{4, 6}}, 8 * 36, what);
+  else SMDF_CHECK_MSG(!st.success && st.message.find("inverted") != std::string::npos, what << ": inverted faces reported as failure");
+  std::cout << what << ": path stretch " << ps.max_path_stretch << ", " << st.inverted_faces << " inverted faces" << std::endl;
+  // a polyhedron that is not a sphere, and a polygon that is neither a triangle nor a square
+  bool threw = false;
+  try { SMDF::polyhedron_metric(mesh, corners, std::vector<std::vector<int>>(faces.begin(), faces.begin() + 4), side, lengths); }
+  catch(const SMDF::Input_error&) { threw = true; }
+  SMDF_CHECK_MSG(threw, "an open polyhedron is refused");
+  threw = false;
+  try { SMDF::polyhedron_metric(mesh, corners, {{0, 2, 1, 3, 4}}, side, lengths); } catch(const SMDF::Input_error&) { threw = true; }
+  SMDF_CHECK_MSG(threw, "a pentagon is refused");
+}
+
 } // namespace
 
 int main()
@@ -317,7 +370,7 @@ int main()
   octahedron();
   flat_torus();
   const std::string dir = smdf_test::shared_data_dir();
-  if(!dir.empty()) box_polycube(dir);
+  if(!dir.empty()) { box_polycube(dir); octahedron_polyhedron(dir); }
   else std::cout << "../shared/data not found: box polycube on shared meshes skipped" << std::endl;
   return smdf_test::finish();
 }

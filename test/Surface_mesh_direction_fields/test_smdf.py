@@ -464,6 +464,15 @@ def test_remesh(smdf, c, torus, tmp):
         c.check(r.get("success") is True and r.get("valences", {}).get("3") == 8 and set(r["valences"]) == {"3", "4"}
                 and r.get("inverted_faces") == 0 and r["quality"]["min_scaled_jacobian"] > 0,
                 "remesh spot, box polycube: quads, 8 vertices of valence 3, none inverted (%r)" % r.get("quality"))
+    r = smdf.json(["remesh", cube, "--polycube", "octahedron", "--faces", "300", "--out", out], "smdf remesh cube --polycube octahedron")
+    c.check(r is not None and r.get("grid") == "triangle" and set(r.get("faces_by_size", {})) == {"3"}
+            and r.get("valences", {}).get("4") == 6 and set(r["valences"]) == {"4", "6"},
+            "remesh cube, octahedron polyhedron: triangles, 6 vertices of valence 4, the others 6 (%r)" % (r or {}).get("valences"))
+    pfile = os.path.join(tmp, "open_polyhedron.txt")
+    with open(pfile, "w") as f:
+        f.write("# one square only: not closed\n0 1 2 3\n")
+    smdf.error(["remesh", cube, "--polycube", pfile, "--faces", "100", "--out", out], "remesh: open polyhedron file", 1,
+               "not a closed oriented surface")
     rc, o, err = smdf.run(["remesh", torus, "--edge-length", "0.1", "--out", out])
     c.check(rc == 3 and b"not symmetries" in err, "remesh torus (curved metric): exit 3, the cut graph's motions fail")
     smdf.error(["remesh", cube, "--edge-length", "0.25"], "remesh without --out", 2, "--out")

@@ -18,6 +18,7 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <array>
+#include <map>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -26,22 +27,80 @@ namespace smdf_cli {
 
 namespace {
 
-// The eight vertices extreme in the directions of the box's corners (+-1, +-1, +-1) from the
-// centroid, corner i at (i & 1, i & 2, i & 4).
-std::array<vertex_descriptor, 8> box_corners(const Mesh& mesh)
+// Distinct vertices extreme in the given directions from the centroid (ties: the one nearest
+// to the ray, then the first), for the corners of the box and octahedron presets.
+std::vector<vertex_descriptor> extreme_vertices(const Mesh& mesh, const std::vector<K::Vector_3>& directions)
 {
   K::Vector_3 c(0, 0, 0);
   for(vertex_descriptor v : vertices(mesh)) c = c + (mesh.point(v) - CGAL::ORIGIN) / double(num_vertices(mesh));
-  std::array<vertex_descriptor, 8> out;
-  for(int i = 0; i < 8; ++i) {
-    const K::Vector_3 d((i & 1) ? 1 : -1, (i & 2) ? 1 : -1, (i & 4) ? 1 : -1);
+  double scale = 0;
+  for(vertex_descriptor v : vertices(mesh)) scale = (std::max)(scale, std::sqrt((mesh.point(v) - (CGAL::ORIGIN + c)).squared_length()));
+  std::vector<vertex_descriptor> out;
+  std::vector<char> taken(num_vertices(mesh), 0);
+  for(const K::Vector_3& d0 : directions) {
+    const K::Vector_3 d = d0 / std::sqrt(d0.squared_length());
     double best = -1e300;
+    vertex_descriptor pick = *vertices(mesh).begin();
     for(vertex_descriptor v : vertices(mesh)) {
-      const double x = (mesh.point(v) - (CGAL::ORIGIN + c)) * d;
-      if(x > best) { best = x; out[std::size_t(i)] = v; }
+      if(taken[std::size_t(v)]) continue;
+      const K::Vector_3 x = mesh.point(v) - (CGAL::ORIGIN + c);
+      const double along = x * d, off = std::sqrt((std::max)(0., x.squared_length() - along * along));
+      const double score = along - 1e-9 * off;
+      if(score > best + 1e-12 * scale) { best = score; pick = v; }
     }
+    taken[std::size_t(pick)] = 1;
+    out.push_back(pick);
   }
   return out;
+}
+
+// The box's corners: extreme in the directions (+-1, +-1, +-1), corner i at (i & 1, i & 2, i & 4).
+std::array<vertex_descriptor, 8> box_corners(const Mesh& mesh)
+{
+  std::vector<K::Vector_3> d;
+  for(int i = 0; i < 8; ++i) d.push_back(K::Vector_3((i & 1) ? 1 : -1, (i & 2) ? 1 : -1, (i & 4) ? 1 : -1));
+  const std::vector<vertex_descriptor> v = extreme_vertices(mesh, d);
+  std::array<vertex_descriptor, 8> out;
+  std::copy(v.begin(), v.end(), out.begin());
+  return out;
+}
+
+// The octahedron's corners: extreme along +x, -x, +y, -y, +z, -z.
+std::vector<vertex_descriptor> axis_corners(const Mesh& mesh)
+{
+  return extreme_vertices(mesh, {K::Vector_3(1, 0, 0), K::Vector_3(-1, 0, 0), K::Vector_3(0, 1, 0), K::Vector_3(0, -1, 0),
+                                 K::Vector_3(0, 0, 1), K::Vector_3(0, 0, -1)});
+}
+
+// A polyhedron file: one face per line, its corner vertex ids counterclockwise seen from
+// outside; the corners are the distinct ids in order of appearance.
+void read_polyhedron(const std::string& file, const Mesh& mesh, std::vector<vertex_descriptor>& corners, std::vector<std::vector<int>>& faces)
+{
+  std::map<std::size_t, int> corner_of;
+  for_each_data_line(file, [&](std::size_t line_no, const std::vector<std::string>& fields) {
+    if(fields.size() != 3 && fields.size() != 4)
+      throw line_error(file, line_no, "a face has 3 or 4 vertex ids, got " + std::to_string(fields.size()));
+    std::vector<int> f;
+    for(const std::string& x : fields) {
+      const std::size_t v = vertex_field(file, line_no, x, num_vertices(mesh));
+      auto it = corner_of.find(v);
+      if(it == corner_of.end()) { it = corner_of.emplace(v, int(corners.size())).first; corners.push_back(vertex_descriptor(Mesh::size_type(v))); }
+      f.push_back(it->second);
+    }
+    faces.push_back(f);
+  });
+  if(faces.empty()) throw file_error(file, "no face in the polyhedron file", "malformed_file");
+  std::map<std::pair<int, int>, int> directed;
+  for(const auto& f : faces)
+    for(std::size_t i = 0; i < f.size(); ++i) ++directed[std::make_pair(f[i], f[(i + 1) % f.size()])];
+  for(const auto& d : directed)
+    if(d.second != 1 || directed.count(std::make_pair(d.first.second, d.first.first)) == 0)
+      throw file_error(file, "the polyhedron is not a closed oriented surface: its edge between vertices " +
+                                 std::to_string(std::size_t(corners[std::size_t(d.first.first)])) + " and " +
+                                 std::to_string(std::size_t(corners[std::size_t(d.first.second)])) + " is not in exactly two faces of opposite directions",
+                       "malformed_file");
+  const long chi = long(corners.size()) - long(directed.size() / 2) + long(faces.size());
+  if(chi != 2) throw file_error(file, "the polyhedron is not a sphere (Euler characteristic " + std::to_string(chi) + ")", "malformed_file");
 }
 
 double metric_area(const Mesh& mesh, const Edge_length_property& l)
@@ -128,16 +187,18 @@ Json run_remesh(const Args& args)
   const std::string grid_name = args.value("grid", "quad");
   if(grid_name != "quad" && grid_name != "triangle")
     throw Usage_error("option --grid expects 'quad' or 'triangle', got '" + shorten(grid_name) + "'");
-  const SMDF::Planar_tessellation grid = grid_name == "quad" ? SMDF::SQUARE_GRID : SMDF::TRIANGULAR_GRID;
+  SMDF::Planar_tessellation grid = grid_name == "quad" ? SMDF::SQUARE_GRID : SMDF::TRIANGULAR_GRID;
   if(args.has("edge-length") == args.has("faces")) throw Usage_error("give one of --edge-length and --faces");
   const double requested_h = args.has("edge-length") ? args.real("edge-length", 0) : 0;
   const long requested_faces = args.has("faces") ? args.integer("faces", 0) : 0;
   if(args.has("edge-length") && !(requested_h > 0)) throw Usage_error("option --edge-length expects a positive number");
   if(args.has("faces") && requested_faces < 1) throw Usage_error("option --faces expects a positive integer");
   const std::string polycube = args.value("polycube", "");
-  if(args.has("polycube") && polycube != "box") throw Usage_error("option --polycube expects 'box', got '" + shorten(polycube) + "'");
+  if(args.has("polycube") && polycube.empty()) throw Usage_error("option --polycube expects 'box', 'octahedron' or a file");
   if(args.has("polycube") && args.has("lengths")) throw Usage_error("give at most one of --polycube and --lengths");
-  if(args.has("polycube") && grid != SMDF::SQUARE_GRID) throw Usage_error("--polycube box gives a metric for --grid quad");
+  if(polycube == "box" && grid != SMDF::SQUARE_GRID) throw Usage_error("--polycube box gives a metric for --grid quad");
+  if(polycube == "octahedron" && args.has("grid") && grid != SMDF::TRIANGULAR_GRID)
+    throw Usage_error("--polycube octahedron gives a metric for --grid triangle");
   if(!args.has("out")) throw Usage_error("option --out FILE is required (.off or .obj)");
   const std::string out_file = args.value("out");
 
@@ -159,7 +220,56 @@ Json run_remesh(const Args& args)
   }
   metric_s = clock.lap();
   double h = requested_h > 0 ? requested_h : std::sqrt(metric_area(mesh, lengths) / (double(requested_faces) * unit_area));
-  if(args.has("polycube")) {
+  if(args.has("polycube") && polycube != "box") {
+    // a polyhedron of unit squares and equilateral triangles: the octahedron, or from a file
+    std::vector<vertex_descriptor> corners;
+    std::vector<std::vector<int>> pfaces;
+    if(polycube == "octahedron") {
+      corners = axis_corners(mesh);
+      for(int sx : {1, -1})
+        for(int sy : {1, -1})
+          for(int sz : {1, -1}) {
+            const int X = sx > 0 ? 0 : 1, Y = sy > 0 ? 2 : 3, Z = sz > 0 ? 4 : 5;
+            pfaces.push_back(sx * sy * sz > 0 ? std::vector<int>{X, Y, Z} : std::vector<int>{X, Z, Y});
+          }
+      grid = SMDF::TRIANGULAR_GRID;
+      out["grid"] = "triangle";
+    } else {
+      read_polyhedron(polycube, mesh, corners, pfaces);
+      std::size_t quads = 0;
+      for(const auto& f : pfaces) quads += f.size() == 4;
+      if(quads != 0 && quads != pfaces.size())
+        throw file_error(polycube, "the polyhedron mixes squares and triangles: mixed square / triangle tessellation is not built yet", "unsupported");
+      grid = quads ? SMDF::SQUARE_GRID : SMDF::TRIANGULAR_GRID;
+      out["grid"] = quads ? "quad" : "triangle";
+    }
+    std::size_t nq = 0;
+    for(const auto& f : pfaces) nq += f.size() == 4;
+    const double polygon_area = double(nq) + double(pfaces.size() - nq) * std::sqrt(3.) / 4;
+    const double side = h * (std::max)(1., std::round(std::sqrt(metric_area(mesh, lengths) / polygon_area) / h));
+    // the paths under the flat cone metric with P's cones (Lai et al.)
+    auto targets = mesh.add_property_map<vertex_descriptor, double>("v:smdf_remesh_target", 0.).first;
+    std::vector<double> angle_sum(corners.size(), 0.);
+    for(const auto& f : pfaces) for(int c : f) angle_sum[std::size_t(c)] += f.size() == 4 ? CGAL_PI / 2 : CGAL_PI / 3;
+    for(std::size_t i = 0; i < corners.size(); ++i) targets[corners[i]] = 2 * CGAL_PI - angle_sum[i];
+    const Edge_length_property flat = mesh.add_property_map<edge_descriptor, double>("e:smdf_remesh_flat", 0.).first;
+    const SMDF::Cone_metric_status cm = on_file(file, [&] {
+      return SMDF::compute_cone_metric(mesh, targets, flat, SMDF::parameters::intrinsic_edge_flips(false));
+    });
+    metric["flat_cone_metric_converged"] = cm.converged;
+    const SMDF::Polycube_metric_status ps = on_file(file, [&] {
+      return cm.converged ? SMDF::polyhedron_metric(mesh, corners, pfaces, side, lengths, SMDF::parameters::edge_length_map(flat))
+                          : SMDF::polyhedron_metric(mesh, corners, pfaces, side, lengths);
+    });
+    compensation_s = clock.lap();
+    Json c = Json::array();
+    for(vertex_descriptor v : corners) c.push_back(index(v));
+    metric["corners"] = std::move(c);
+    metric["side_length"] = side;
+    metric["max_path_stretch"] = ps.max_path_stretch;
+    out["metric"] = metric;
+    if(!ps.success) throw Failed_result{out, file + ": polyhedron metric: " + ps.message, 3};
+  } else if(args.has("polycube")) {
     const auto corners = box_corners(mesh);
     // Lai et al.: the paths under the flat cone metric with cones of pi/2 at the corners
     auto targets = mesh.add_property_map<vertex_descriptor, double>("v:smdf_remesh_target", 0.).first;
@@ -251,17 +361,18 @@ Command remesh_command()
           {{"grid", "G", "quad (default) or triangle"},
            {"edge-length", "H", "the grid's edge length on the surface"},
            {"faces", "N", "about N faces instead (the admissible edge length nearest to area / N)"},
-           {"polycube", "box", "metric compensation with a box: corners at the 8 vertices extreme in the diagonal directions"},
+           {"polycube", "P", "metric compensation with a polyhedron: 'box' (corners: the 8 vertices extreme in the diagonal directions from the centroid), 'octahedron' (the 6 extreme along the axes; triangles), or a file: one face per line, its 3 or 4 vertex ids counterclockwise from outside (squares or triangles)"},
            {"lengths", "FILE", "the flat cone metric: one line 'i j length' per edge (e.g. cone-metric --no-flips --lengths-out)"},
            {"out", "FILE", "write the remesh (.off or .obj)"}},
           "regular quad or triangle remesh from a flat cone metric",
           "Lai et al. 2010, section 5: develops a flat cone metric of the mesh (its own edge lengths,\n"
-          "--lengths, or the box polycube metric of --polycube box) and carries the square (quad)\n"
+          "--lengths, or the metric of a polyhedron: --polycube box | octahedron | FILE) and carries the\n"
+          "square (quad)\n"
           "or triangular grid onto the surface. The cut graph's motions must be symmetries of the\n"
           "grid (Theorem 3.5) and the cones grid points; otherwise the failing edges are reported.\n"
           "Output vertices lie on the input triangles (barycentric placement); every interior\n"
           "vertex has valence 4 (6) except at a cone of curvature K: 4 - K/(pi/2) (6 - K/(pi/3)).\n"
-          "Prints {grid, metric: {source, corners, dimensions, max_path_stretch}, edge_length,\n"
+          "Prints {grid, metric: {source, corners, dimensions or side_length, max_path_stretch}, edge_length,\n"
           "cut_edges, cones, grid_spacing_of_metric, failing_cut_edges (first 20),\n"
           "failing_cut_edge_count, vertices, faces_by_size, valences (interior vertices),\n"
           "irregular_vertices: [{vertex, cone, valence}], inverted_faces, quality:\n"

@@ -21,6 +21,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <limits>
 #include <queue>
 #include <sstream>
@@ -36,94 +37,71 @@ struct Polycube_metric_status
 {
   bool success = false;
   std::string message;                         ///< empty on success
-  std::array<double, 3> dimensions{{0, 0, 0}}; ///< the box's side lengths (multiples of the edge length)
+  std::array<double, 3> dimensions{{0, 0, 0}}; ///< box_polycube_metric(): the box's side lengths (multiples of the edge length)
   std::size_t path_edges = 0;                  ///< mesh edges on the twelve paths between the corners
-  /// the largest ratio, over the box's twelve edges, between the path's length on the surface
-  /// and the box edge it is mapped to (1: no stretch along the cut)
+  /// the largest ratio, over the polyhedron's edges, between the path's length on the surface
+  /// and the edge it is mapped to (1: no stretch along the cut)
   double max_path_stretch = 0;
 };
 
-/// \ingroup PkgSurfaceMeshDirectionFieldsRemeshing
-/// Metric compensation with a box (Lai et al. 2010, section 4.1.3.2, for the polycube with one
-/// cube): the eight `corners` of a closed genus-0 mesh (corner \f$i\f$ goes to the box corner
-/// \f$(i \& 1, (i \gg 1) \& 1, (i \gg 2) \& 1)\f$) are joined by the twelve shortest edge paths
-/// of the box's edges (Dijkstra on the edge lengths, each path avoiding the earlier ones and
-/// the other corners; lengths of the metric of `edge_length_map`, for Lai et al. the flat cone
-/// metric with cones of \f$\pi/2\f$ at the corners), which cut the mesh into six disks; each disk is mapped onto its face of
-/// the box by a Tutte embedding with mean value weights (Floater 2003: bijective onto the convex
-/// rectangle), its boundary placed by arc length along the four paths. The box's sides are the
-/// mean lengths of its four parallel paths, rounded to multiples of `edge_length`. The output
-/// metric (`lengths`, on `tm`'s triangulation) is the box's: flat but for cones of \f$\pi/2\f$ at
-/// the corners, with cut-graph motions that are symmetries of the square grid of edge length
-/// `edge_length`, so tessellate_flat_metric() accepts it.
-///
-/// Departure from the paper: Lai et al. flatten each disk to a rectangle by Ricci flow with
-/// corner curvatures \f$\pi/2\f$ and then scale the rectangles; the two sides of a path then
-/// disagree on where its vertices go. Placing each path once by arc length and embedding the
-/// disks with fixed boundaries keeps the sides consistent by construction.
-///
-/// Named parameters: `edge_length_map` (the metric of the path lengths and of the angles of the
-/// mean value weights; default: Euclidean lengths) or `intrinsic_mesh`, and the index maps. Failures (a path that cannot avoid the earlier ones, disks that do not match
-/// the box's faces, a degenerate triangle) are in the status.
-template <typename TriangleMesh, typename EdgeLengthMap, typename NamedParameters = parameters::Default_named_parameters>
-Polycube_metric_status box_polycube_metric(const TriangleMesh& tm,
-                                           const std::array<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, 8>& corners,
-                                           double edge_length, EdgeLengthMap lengths,
-                                           const NamedParameters& np = parameters::default_values())
+namespace internal {
+
+// The metric of a polyhedron P on a closed genus-0 mesh (the engine of box_polycube_metric() and
+// polyhedron_metric()): P's corners are mesh vertices, its faces cycles of corners
+// (counterclockwise seen from outside). P's edges become shortest edge paths under the mesh's
+// metric, the pieces between them P's faces, each embedded onto the planar polygon that
+// `polygon(face, path_length)` returns (its corners counterclockwise, in the face's order; it is
+// called once the paths are known, `path_length(a, b)` the length of the path between corners a
+// and b) by a Tutte embedding with mean value weights, the paths placed by arc length. Writes
+// one length per mesh edge.
+template <typename TM, typename Polygon>
+Polycube_metric_status polyhedron_metric_core(const Mesh_arrays<TM>& m, const std::vector<int>& corner_vertex,
+                                              const std::vector<std::vector<int>>& pfaces, Polygon polygon,
+                                              std::vector<double>& lengths)
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
   Polycube_metric_status st;
-  if(!(edge_length > 0) || !std::isfinite(edge_length))
-    throw Input_error(Input_error::INVALID_ARGUMENT, "the edge length must be positive, got " + std::to_string(edge_length));
-  const Intrinsic_mesh<TriangleMesh> im = internal::get_intrinsic_mesh(tm, np);
-  const internal::Mesh_arrays<TriangleMesh>& m = im.arrays();
   const std::size_t nv = m.number_of_vertices(), ne = m.number_of_edges(), nf = m.number_of_faces();
-  const internal::Topology_arrays& topo = im.topology_arrays();
-  if(topo.components.size() != 1 || !topo.loops.empty() || nv + nf != ne + 2)
-    throw Input_error(Input_error::INVALID_ARGUMENT, "box_polycube_metric() needs a closed connected mesh of genus 0");
-  typedef typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
-  VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
-  typedef std::array<double, 3> V3;
-  auto point = [&](int v) {
-    const auto& p = get(vpm, m.vertices[std::size_t(v)]);
-    return V3{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
-  };
-  auto dist = [](const V3& a, const V3& b) { return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2])); };
-  std::array<int, 8> c;
+  const std::size_t nc = corner_vertex.size();
   std::vector<int> corner_of(nv, -1);
-  for(int i = 0; i < 8; ++i) {
-    c[std::size_t(i)] = m.vertex_index(corners[std::size_t(i)]);
-    if(c[std::size_t(i)] < 0 || m.is_isolated(c[std::size_t(i)]) || corner_of[std::size_t(c[std::size_t(i)])] >= 0)
-      throw Input_error(Input_error::INVALID_ARGUMENT, "box corners must be eight distinct vertices of the mesh");
-    corner_of[std::size_t(c[std::size_t(i)])] = i;
+  for(std::size_t i = 0; i < nc; ++i) {
+    const int v = corner_vertex[i];
+    if(v < 0 || std::size_t(v) >= nv || m.is_isolated(v) || corner_of[std::size_t(v)] >= 0)
+      throw Input_error(Input_error::INVALID_ARGUMENT, "the polyhedron's corners must be distinct vertices of the mesh");
+    corner_of[std::size_t(v)] = int(i);
   }
-  // 1. the twelve box edges (corners differing in one bit), shortest first, as disjoint paths
-  std::vector<std::array<int, 2>> box_edges;
-  for(int i = 0; i < 8; ++i)
-    for(int b = 0; b < 3; ++b) if(!(i & (1 << b))) box_edges.push_back({{i, i | (1 << b)}});
-  std::vector<char> used;           // vertices inside earlier paths
-  std::vector<int> path_of_edge;    // per mesh edge: the box edge whose path it is on
-  std::vector<std::vector<int>> paths(12);   // vertex sequences, from the lower corner to the upper
-  std::vector<std::vector<double>> steps(12);  // the metric's lengths of their edges
-  // paths in three orders until one lets every path avoid the earlier ones: shortest first,
-  // longest first, then the twelve edges grouped by axis
-  for(int attempt = 0; attempt < 3; ++attempt) {
-  if(attempt < 2)
-    std::stable_sort(box_edges.begin(), box_edges.end(), [&](const std::array<int, 2>& x, const std::array<int, 2>& y) {
-      const double dx = dist(point(c[std::size_t(x[0])]), point(c[std::size_t(x[1])])), dy = dist(point(c[std::size_t(y[0])]), point(c[std::size_t(y[1])]));
-      return attempt == 0 ? dx < dy : dx > dy;
-    });
-  else
-    std::stable_sort(box_edges.begin(), box_edges.end(), [](const std::array<int, 2>& x, const std::array<int, 2>& y) { return (x[0] ^ x[1]) < (y[0] ^ y[1]); });
-  used.assign(nv, 0);
-  path_of_edge.assign(ne, -1);
-  st.path_edges = 0;
-  st.message.clear();
-  for(std::size_t k = 0; k < box_edges.size() && st.message.empty(); ++k) {
-    const int s = c[std::size_t(box_edges[k][0])], t = c[std::size_t(box_edges[k][1])];
+  // P's edges, each in two faces in opposite directions
+  std::map<std::pair<int, int>, int> edge_id;
+  std::vector<std::array<int, 2>> pedges;
+  std::vector<int> uses;
+  for(const auto& f : pfaces) {
+    if(f.size() < 3) throw Input_error(Input_error::INVALID_ARGUMENT, "a face of the polyhedron has fewer than three corners");
+    for(std::size_t i = 0; i < f.size(); ++i) {
+      const int a = f[i], b = f[(i + 1) % f.size()];
+      if(a < 0 || b < 0 || std::size_t(a) >= nc || std::size_t(b) >= nc || a == b)
+        throw Input_error(Input_error::INVALID_ARGUMENT, "a face of the polyhedron names a corner that does not exist");
+      const auto key = std::make_pair((std::min)(a, b), (std::max)(a, b));
+      auto it = edge_id.find(key);
+      if(it == edge_id.end()) { edge_id[key] = int(pedges.size()); pedges.push_back({{a, b}}); uses.push_back(1); }
+      else if(pedges[std::size_t(it->second)][0] != b || ++uses[std::size_t(it->second)] > 2)
+        throw Input_error(Input_error::INVALID_ARGUMENT, "the polyhedron is not a closed oriented surface (edge of corners " +
+                                                             std::to_string(a) + " and " + std::to_string(b) + ")");
+    }
+  }
+  for(int u : uses) if(u != 2) throw Input_error(Input_error::INVALID_ARGUMENT, "the polyhedron has an edge in only one face");
+  if(long(nc) - long(pedges.size()) + long(pfaces.size()) != 2)
+    throw Input_error(Input_error::INVALID_ARGUMENT, "the polyhedron is not a sphere (Euler characteristic " +
+                                                         std::to_string(long(nc) - long(pedges.size()) + long(pfaces.size())) + ")");
+  // 1. the paths, in three orders until every one avoids the earlier ones
+  const std::size_t np = pedges.size();
+  std::vector<char> used;
+  std::vector<int> path_of_edge;
+  std::vector<std::vector<int>> paths(np);
+  std::vector<std::vector<double>> steps(np);
+  // the distance between the two corners of every edge of P, without obstacles: the orders
+  std::vector<double> reach(np, 0.);
+  for(std::size_t k = 0; k < np; ++k) {
+    const int s = corner_vertex[std::size_t(pedges[k][0])], t = corner_vertex[std::size_t(pedges[k][1])];
     std::vector<double> d(nv, std::numeric_limits<double>::infinity());
-    std::vector<int> from(nv, -1);
     typedef std::pair<double, int> Item;
     std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
     d[std::size_t(s)] = 0;
@@ -131,45 +109,79 @@ Polycube_metric_status box_polycube_metric(const TriangleMesh& tm,
     while(!queue.empty()) {
       const Item it = queue.top();
       queue.pop();
-      if(it.first > d[std::size_t(it.second)] || it.second == t) continue;
-      const int v = it.second;
-      const int h0 = m.vertex_out[std::size_t(v)];
+      if(it.first > d[std::size_t(it.second)]) continue;
+      if(it.second == t) break;
+      const int h0 = m.vertex_out[std::size_t(it.second)];
       int h = h0;
       do {
         const int u = m.target[std::size_t(h)];
-        const bool blocked = used[std::size_t(u)] || (corner_of[std::size_t(u)] >= 0 && u != t) || path_of_edge[std::size_t(h >> 1)] >= 0;
-        const double du = d[std::size_t(v)] + m.edge_length(h);
-        if(!blocked && du < d[std::size_t(u)]) { d[std::size_t(u)] = du; from[std::size_t(u)] = h; queue.push({du, u}); }
+        const double du = it.first + m.edge_length(h);
+        if(du < d[std::size_t(u)]) { d[std::size_t(u)] = du; queue.push({du, u}); }
         h = m.ccw_out(h);
       } while(h != h0);
     }
-    if(from[std::size_t(t)] < 0) {
-      std::ostringstream os;
-      os << "no path from corner " << box_edges[k][0] << " (vertex " << s << ") to corner " << box_edges[k][1] << " (vertex " << t
-         << ") avoids the earlier paths (place the corners farther apart, or refine the mesh)";
-      st.message = os.str();
-      break;
-    }
-    std::vector<int> p(1, t);
-    std::vector<double> len;
-    for(int v = t; v != s;) {
-      const int h = from[std::size_t(v)];
-      path_of_edge[std::size_t(h >> 1)] = int(k);
-      ++st.path_edges;
-      len.push_back(m.edge_length(h));
-      v = m.source(h);
-      p.push_back(v);
-    }
-    std::reverse(p.begin(), p.end());
-    std::reverse(len.begin(), len.end());
-    steps[k] = len;
-    for(std::size_t i = 1; i + 1 < p.size(); ++i) used[std::size_t(p[i])] = 1;
-    paths[k] = p;
+    reach[k] = d[std::size_t(t)];
   }
-  if(st.message.empty()) break;
+  std::vector<std::size_t> order(np);
+  for(int attempt = 0; attempt < 3; ++attempt) {   // shortest first, longest first, P's order
+    for(std::size_t k = 0; k < np; ++k) order[k] = k;
+    if(attempt < 2)
+      std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return attempt == 0 ? reach[x] < reach[y] : reach[x] > reach[y]; });
+    used.assign(nv, 0);
+    path_of_edge.assign(ne, -1);
+    st.path_edges = 0;
+    st.message.clear();
+    for(std::size_t kk = 0; kk < np && st.message.empty(); ++kk) {
+      const std::size_t k = order[kk];
+      const int s = corner_vertex[std::size_t(pedges[k][0])], t = corner_vertex[std::size_t(pedges[k][1])];
+      std::vector<double> d(nv, std::numeric_limits<double>::infinity());
+      std::vector<int> from(nv, -1);
+      typedef std::pair<double, int> Item;
+      std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+      d[std::size_t(s)] = 0;
+      queue.push({0., s});
+      while(!queue.empty()) {
+        const Item it = queue.top();
+        queue.pop();
+        if(it.first > d[std::size_t(it.second)] || it.second == t) continue;
+        const int v = it.second;
+        const int h0 = m.vertex_out[std::size_t(v)];
+        int h = h0;
+        do {
+          const int u = m.target[std::size_t(h)];
+          const bool blocked = used[std::size_t(u)] || (corner_of[std::size_t(u)] >= 0 && u != t) || path_of_edge[std::size_t(h >> 1)] >= 0;
+          const double du = d[std::size_t(v)] + m.edge_length(h);
+          if(!blocked && du < d[std::size_t(u)]) { d[std::size_t(u)] = du; from[std::size_t(u)] = h; queue.push({du, u}); }
+          h = m.ccw_out(h);
+        } while(h != h0);
+      }
+      if(from[std::size_t(t)] < 0) {
+        std::ostringstream os;
+        os << "no path from corner " << pedges[k][0] << " (vertex " << s << ") to corner " << pedges[k][1] << " (vertex " << t
+           << ") avoids the earlier paths (place the corners farther apart, or refine the mesh)";
+        st.message = os.str();
+        break;
+      }
+      std::vector<int> p(1, t);
+      std::vector<double> len;
+      for(int v = t; v != s;) {
+        const int h = from[std::size_t(v)];
+        path_of_edge[std::size_t(h >> 1)] = int(k);
+        ++st.path_edges;
+        len.push_back(m.edge_length(h));
+        v = m.source(h);
+        p.push_back(v);
+      }
+      std::reverse(p.begin(), p.end());
+      std::reverse(len.begin(), len.end());
+      for(std::size_t i = 1; i + 1 < p.size(); ++i) used[std::size_t(p[i])] = 1;
+      paths[k] = p;
+      steps[k] = len;
+    }
+    if(st.message.empty()) break;
   }
   if(!st.message.empty()) return st;
-  // 2. the six disks: faces connected without crossing a path
+  // 2. the pieces: faces connected without crossing a path, matched to P's faces by their corners
   std::vector<int> region(nf, -1);
   int regions = 0;
   for(std::size_t f0 = 0; f0 < nf; ++f0) {
@@ -187,66 +199,86 @@ Polycube_metric_status box_polycube_metric(const TriangleMesh& tm,
     }
     ++regions;
   }
-  if(regions != 6) {
-    st.message = "the twelve paths cut the mesh into " + std::to_string(regions) + " pieces, not the six faces of a box";
+  if(std::size_t(regions) != pfaces.size()) {
+    st.message = "the paths cut the mesh into " + std::to_string(regions) + " pieces, not the " + std::to_string(pfaces.size()) +
+                 " faces of the polyhedron";
     return st;
   }
-  // each disk's face of the box: the axis on which its four corners agree
-  std::vector<std::array<int, 2>> face_of(6, {{-1, -1}});   // (axis, side)
-  std::vector<int> corner_mask(6, 0);
+  std::vector<std::vector<int>> region_corners((std::size_t(regions)));
   for(std::size_t h = 0; h < m.number_of_halfedges(); ++h) {
-    const int f = m.face[h];
-    if(f < 0) continue;
-    const int v = m.source(int(h));
-    if(corner_of[std::size_t(v)] >= 0) corner_mask[std::size_t(region[std::size_t(f)])] |= 1 << corner_of[std::size_t(v)];
+    const int f = m.face[h], v = m.source(int(h));
+    if(f >= 0 && corner_of[std::size_t(v)] >= 0) region_corners[std::size_t(region[std::size_t(f)])].push_back(corner_of[std::size_t(v)]);
   }
-  for(int r = 0; r < 6; ++r) {
-    for(int axis = 0; axis < 3; ++axis)
-      for(int side = 0; side < 2; ++side) {
-        int mask = 0;
-        for(int i = 0; i < 8; ++i) if(((i >> axis) & 1) == side) mask |= 1 << i;
-        if(mask == corner_mask[std::size_t(r)]) face_of[std::size_t(r)] = {{axis, side}};
-      }
-    if(face_of[std::size_t(r)][0] < 0) {
-      st.message = "a piece cut by the paths does not have the four corners of a box face (the corners are not placed like a box's)";
+  std::vector<int> face_of_region(std::size_t(regions), -1), region_of_face(pfaces.size(), -1);
+  for(int r = 0; r < regions; ++r) {
+    std::vector<int>& rc = region_corners[std::size_t(r)];
+    std::sort(rc.begin(), rc.end());
+    rc.erase(std::unique(rc.begin(), rc.end()), rc.end());
+    for(std::size_t j = 0; j < pfaces.size(); ++j) {
+      std::vector<int> fc = pfaces[j];
+      std::sort(fc.begin(), fc.end());
+      if(fc == rc && region_of_face[j] < 0) { face_of_region[std::size_t(r)] = int(j); region_of_face[j] = r; break; }
+    }
+    if(face_of_region[std::size_t(r)] < 0) {
+      st.message = "a piece cut by the paths does not have the corners of a face of the polyhedron (are the corners placed like P's?)";
       return st;
     }
   }
-  // 3. box dimensions: mean path length per axis, in multiples of the edge length
-  double total[3] = {0, 0, 0};
-  for(std::size_t k = 0; k < 12; ++k) {
-    const int axis = box_edges[k][0] ^ box_edges[k][1];
-    double L = 0;
-    for(double x : steps[k]) L += x;
-    total[axis == 1 ? 0 : axis == 2 ? 1 : 2] += L / 4;
+  // 3. the polygons, and every path vertex placed by arc length in each face along the path
+  std::vector<double> path_length(np, 0.);
+  for(std::size_t k = 0; k < np; ++k) for(double x : steps[k]) path_length[k] += x;
+  auto length_between = [&](int a, int b) { return path_length[std::size_t(edge_id.at(std::make_pair((std::min)(a, b), (std::max)(a, b))))]; };
+  std::vector<std::vector<Point_2>> shape(pfaces.size());
+  for(std::size_t j = 0; j < pfaces.size(); ++j) {
+    shape[j] = polygon(j, length_between);
+    if(shape[j].size() != pfaces[j].size()) throw Input_error(Input_error::INVALID_ARGUMENT, "a polygon of the polyhedron has the wrong number of corners");
   }
-  for(int a = 0; a < 3; ++a) st.dimensions[std::size_t(a)] = edge_length * (std::max)(1., std::round(total[a] / edge_length));
-  auto corner_position = [&](int i) { return V3{{(i & 1) * st.dimensions[0], ((i >> 1) & 1) * st.dimensions[1], ((i >> 2) & 1) * st.dimensions[2]}}; };
-  // the box position of every path vertex, by arc length
-  std::vector<V3> box(nv, V3{{0, 0, 0}});
-  std::vector<char> fixed(nv, 0);
-  for(int i = 0; i < 8; ++i) { box[std::size_t(c[std::size_t(i)])] = corner_position(i); fixed[std::size_t(c[std::size_t(i)])] = 1; }
-  for(std::size_t k = 0; k < 12; ++k) {
-    const std::vector<int>& p = paths[k];
-    std::vector<double> s(p.size(), 0.);
-    for(std::size_t i = 1; i < p.size(); ++i) s[i] = s[i - 1] + steps[k][i - 1];
-    const V3 a = corner_position(box_edges[k][0]), b = corner_position(box_edges[k][1]);
-    st.max_path_stretch = (std::max)(st.max_path_stretch, (std::max)(s.back() / dist(a, b), dist(a, b) / s.back()));
-    for(std::size_t i = 1; i + 1 < p.size(); ++i) {
-      const double t = s[i] / s.back();
-      for(int j = 0; j < 3; ++j) box[std::size_t(p[i])][std::size_t(j)] = (1 - t) * a[std::size_t(j)] + t * b[std::size_t(j)];
-      fixed[std::size_t(p[i])] = 1;
+  for(std::size_t k = 0; k < np; ++k) {
+    double target = 0;   // the edge's length in the polygons (the same in both faces: checked)
+    int seen = 0;
+    for(std::size_t j = 0; j < pfaces.size(); ++j)
+      for(std::size_t i = 0; i < pfaces[j].size(); ++i) {
+        const int a = pfaces[j][i], b = pfaces[j][(i + 1) % pfaces[j].size()];
+        if((std::min)(a, b) != (std::min)(pedges[k][0], pedges[k][1]) || (std::max)(a, b) != (std::max)(pedges[k][0], pedges[k][1])) continue;
+        const Point_2 &p = shape[j][i], &q = shape[j][(i + 1) % pfaces[j].size()];
+        const double l = std::sqrt((q.x() - p.x()) * (q.x() - p.x()) + (q.y() - p.y()) * (q.y() - p.y()));
+        if(seen++ && std::abs(l - target) > 1e-9 * (std::max)(l, target))
+          throw Input_error(Input_error::INVALID_ARGUMENT, "two faces of the polyhedron give one edge different lengths");
+        target = l;
+      }
+    st.max_path_stretch = (std::max)(st.max_path_stretch, (std::max)(path_length[k] / target, target / path_length[k]));
+  }
+  // per face: positions of its boundary vertices (corners and path vertices), then the Tutte embedding
+  std::vector<std::array<Point_2, 3>> chart(nf);
+  std::vector<char> on_path(nv, 0);
+  for(const auto& p : paths) for(int v : p) on_path[std::size_t(v)] = 1;
+  for(std::size_t j = 0; j < pfaces.size(); ++j) {
+    const int r = region_of_face[j];
+    std::map<int, Point_2> fixed;
+    const std::vector<int>& fc = pfaces[j];
+    for(std::size_t i = 0; i < fc.size(); ++i) {
+      const int a = fc[i], b = fc[(i + 1) % fc.size()];
+      const int k = edge_id.at(std::make_pair((std::min)(a, b), (std::max)(a, b)));
+      const Point_2 &pa = shape[j][i], &pb = shape[j][(i + 1) % fc.size()];
+      const std::vector<int>& p = paths[std::size_t(k)];
+      const bool forward = pedges[std::size_t(k)][0] == a;
+      double s = 0;
+      for(std::size_t q = 0; q < p.size(); ++q) {
+        if(q > 0) s += steps[std::size_t(k)][q - 1];
+        const double t = forward ? s / path_length[std::size_t(k)] : 1 - s / path_length[std::size_t(k)];
+        fixed[p[q]] = Point_2((1 - t) * pa.x() + t * pb.x(), (1 - t) * pa.y() + t * pb.y());
+      }
     }
-  }
-  // 4. every disk onto its face: Tutte embedding with mean value weights, boundary fixed
-  std::vector<int> vertex_region(nv, -1);
-  for(std::size_t h = 0; h < m.number_of_halfedges(); ++h)
-    if(m.face[h] >= 0 && !fixed[std::size_t(m.source(int(h)))]) vertex_region[std::size_t(m.source(int(h)))] = region[std::size_t(m.face[h])];
-  for(int r = 0; r < 6; ++r) {
-    const int axis = face_of[std::size_t(r)][0], side = face_of[std::size_t(r)][1];
-    const int u = (axis + 1) % 3, w = (axis + 2) % 3;
     std::vector<int> column(nv, -1), unknowns;
-    for(std::size_t v = 0; v < nv; ++v) if(vertex_region[v] == r) { column[v] = int(unknowns.size()); unknowns.push_back(int(v)); }
+    for(std::size_t f = 0; f < nf; ++f) {
+      if(region[f] != r) continue;
+      int h = m.face_halfedge[f];
+      for(int i = 0; i < 3; ++i, h = m.next[std::size_t(h)]) {
+        const int v = m.source(h);
+        if(!on_path[std::size_t(v)] && column[std::size_t(v)] < 0) { column[std::size_t(v)] = int(unknowns.size()); unknowns.push_back(v); }
+      }
+    }
+    std::vector<Point_2> solved(unknowns.size());
     if(!unknowns.empty()) {
       const int n = int(unknowns.size());
       std::vector<Eigen::Triplet<double>> t;
@@ -263,9 +295,10 @@ Polycube_metric_status box_polycube_metric(const TriangleMesh& tm,
           sum += wgt;
           if(column[std::size_t(q)] >= 0) t.emplace_back(i, column[std::size_t(q)], -wgt);
           else {
-            const V3& bq = box[std::size_t(q)];
-            b(i, 0) += wgt * bq[std::size_t(u)];
-            b(i, 1) += wgt * bq[std::size_t(w)];
+            const auto it = fixed.find(q);
+            if(it == fixed.end()) { st.message = "a piece of the cut is not a disk bounded by its paths"; return st; }
+            b(i, 0) += wgt * it->second.x();
+            b(i, 1) += wgt * it->second.y();
           }
           h = m.ccw_out(h);
         } while(h != h0);
@@ -275,39 +308,169 @@ Polycube_metric_status box_polycube_metric(const TriangleMesh& tm,
       A.setFromTriplets(t.begin(), t.end());
       Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
       lu.compute(A);
-      if(lu.info() != Eigen::Success) { st.message = "the Tutte embedding of a box face could not be factored"; return st; }
+      if(lu.info() != Eigen::Success) { st.message = "the Tutte embedding of a face could not be factored"; return st; }
       const Eigen::MatrixXd x = lu.solve(b);
-      for(int i = 0; i < n; ++i) {
-        V3& p = box[std::size_t(unknowns[std::size_t(i)])];
-        p[std::size_t(axis)] = side * st.dimensions[std::size_t(axis)];
-        p[std::size_t(u)] = x(i, 0);
-        p[std::size_t(w)] = x(i, 1);
+      for(int i = 0; i < n; ++i) solved[std::size_t(i)] = Point_2(x(i, 0), x(i, 1));
+    }
+    for(std::size_t f = 0; f < nf; ++f) {
+      if(region[f] != r) continue;
+      int h = m.face_halfedge[f];
+      for(int i = 0; i < 3; ++i, h = m.next[std::size_t(h)]) {
+        const int v = m.source(h);
+        chart[f][std::size_t(i)] = column[std::size_t(v)] >= 0 ? solved[std::size_t(column[std::size_t(v)])] : fixed.at(v);
       }
     }
   }
-  // 5. the metric of the box, and its validity: every triangle non-degenerate, all on the same
-  // side of their faces (the corners may be given mirrored: the lengths do not see it)
+  // 4. validity: every triangle non-degenerate, all on the same side (mirrored corners are fine:
+  // the lengths do not see orientation); then the lengths, each edge from one of its faces
+  double scale = 0;
+  for(const auto& sh : shape) for(const Point_2& p : sh) scale = (std::max)(scale, std::abs(p.x()) + std::abs(p.y()));
   std::size_t positive = 0, negative = 0;
   for(std::size_t f = 0; f < nf; ++f) {
-    const int r = region[f], axis = face_of[std::size_t(r)][0], side = face_of[std::size_t(r)][1];
-    const int u = (axis + 1) % 3, w = (axis + 2) % 3;
-    const int h0 = m.face_halfedge[f];
-    const V3 &a = box[std::size_t(m.source(h0))], &b = box[std::size_t(m.target[std::size_t(h0)])], &cc = box[std::size_t(m.target[std::size_t(m.next[std::size_t(h0)])])];
-    const double area = (b[std::size_t(u)] - a[std::size_t(u)]) * (cc[std::size_t(w)] - a[std::size_t(w)]) -
-                        (cc[std::size_t(u)] - a[std::size_t(u)]) * (b[std::size_t(w)] - a[std::size_t(w)]);
-    const double orient = side == 1 ? area : -area;   // the outward normal is +axis on side 1
-    if(!(std::abs(orient) > 1e-12 * edge_length * edge_length)) {
-      st.message = "face " + std::to_string(f) + " is degenerate on the box (refine the mesh near the paths)";
+    const std::array<Point_2, 3>& c = chart[f];
+    const double area = (c[1].x() - c[0].x()) * (c[2].y() - c[0].y()) - (c[2].x() - c[0].x()) * (c[1].y() - c[0].y());
+    if(!(std::abs(area) > 1e-14 * scale * scale)) {
+      st.message = "face " + std::to_string(f) + " is degenerate on the polyhedron (refine the mesh near the paths)";
       return st;
     }
-    (orient > 0 ? positive : negative) += 1;
+    (area > 0 ? positive : negative) += 1;
   }
   if(positive && negative) {
-    st.message = std::to_string((std::min)(positive, negative)) + " faces fold over on the box (the paths meet the corners in the wrong order)";
+    st.message = std::to_string((std::min)(positive, negative)) + " faces fold over on the polyhedron (the paths meet the corners in the wrong order)";
     return st;
   }
-  for(std::size_t e = 0; e < ne; ++e) put(lengths, m.edges[e], dist(box[std::size_t(m.source(int(2 * e)))], box[std::size_t(m.target[2 * e])]));
+  lengths.assign(ne, 0.);
+  for(std::size_t e = 0; e < ne; ++e) {
+    const int h = m.face[2 * e] >= 0 ? int(2 * e) : int(2 * e + 1);
+    const int f = m.face[std::size_t(h)];
+    int g = m.face_halfedge[std::size_t(f)], k = 0;
+    while(g != h) { g = m.next[std::size_t(g)]; ++k; }
+    const Point_2 &p = chart[std::size_t(f)][std::size_t(k)], &q = chart[std::size_t(f)][std::size_t((k + 1) % 3)];
+    lengths[e] = std::sqrt((q.x() - p.x()) * (q.x() - p.x()) + (q.y() - p.y()) * (q.y() - p.y()));
+  }
   st.success = true;
+  return st;
+}
+
+template <typename TM, typename NP>
+const Intrinsic_mesh<TM> genus_zero_mesh(const TM& tm, const NP& np, const char* who)
+{
+  Intrinsic_mesh<TM> im = get_intrinsic_mesh(tm, np);
+  const Mesh_arrays<TM>& m = im.arrays();
+  const Topology_arrays& topo = im.topology_arrays();
+  if(topo.components.size() != 1 || !topo.loops.empty() || m.number_of_vertices() + m.number_of_faces() != m.number_of_edges() + 2)
+    throw Input_error(Input_error::INVALID_ARGUMENT, std::string(who) + " needs a closed connected mesh of genus 0");
+  return im;
+}
+
+} // namespace internal
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsRemeshing
+/// Metric compensation with a box (Lai et al. 2010, section 4.1.3.2, for the polycube with one
+/// cube): the eight `corners` of a closed genus-0 mesh (corner \f$i\f$ goes to the box corner
+/// \f$(i \& 1, (i \gg 1) \& 1, (i \gg 2) \& 1)\f$) are joined by the twelve shortest edge paths
+/// of the box's edges (Dijkstra, each path avoiding the earlier ones and the other corners;
+/// lengths of the metric of `edge_length_map`, for Lai et al. the flat cone metric with cones
+/// of \f$\pi/2\f$ at the corners), which cut the mesh into six disks; each disk is mapped onto
+/// its face of the box by a Tutte embedding with mean value weights of the same metric (Floater
+/// 2003: bijective onto the convex rectangle), its boundary placed by arc length along the four
+/// paths. The box's sides are the mean lengths of their four parallel paths, rounded to multiples
+/// of `edge_length`. The output metric (`lengths`, on `tm`'s triangulation) is the box's: flat
+/// but for cones of \f$\pi/2\f$ at the corners, with cut-graph motions that are symmetries of
+/// the square grid of edge length `edge_length`, so tessellate_flat_metric() accepts it.
+///
+/// Departure from the paper: Lai et al. flatten each disk to a rectangle by Ricci flow with
+/// corner curvatures \f$\pi/2\f$ and then scale the rectangles; the two sides of a path then
+/// disagree on where its vertices go. Placing each path once by arc length and embedding the
+/// disks with fixed boundaries keeps the sides consistent by construction.
+///
+/// Named parameters: `edge_length_map` (the metric of the path lengths and of the angles of the
+/// mean value weights; default: Euclidean lengths) or `intrinsic_mesh`, and the index maps.
+/// Failures (a path that cannot avoid the earlier ones, pieces that do not match the box's
+/// faces, a degenerate triangle) are in the status; `Input_error` for a mesh that is not a
+/// closed genus-0 surface or corners that are not eight distinct vertices.
+template <typename TriangleMesh, typename EdgeLengthMap, typename NamedParameters = parameters::Default_named_parameters>
+Polycube_metric_status box_polycube_metric(const TriangleMesh& tm,
+                                           const std::array<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, 8>& corners,
+                                           double edge_length, EdgeLengthMap lengths,
+                                           const NamedParameters& np = parameters::default_values())
+{
+  if(!(edge_length > 0) || !std::isfinite(edge_length))
+    throw Input_error(Input_error::INVALID_ARGUMENT, "the edge length must be positive, got " + std::to_string(edge_length));
+  const Intrinsic_mesh<TriangleMesh> im = internal::genus_zero_mesh(tm, np, "box_polycube_metric()");
+  const internal::Mesh_arrays<TriangleMesh>& m = im.arrays();
+  std::vector<int> cv;
+  for(const auto& v : corners) cv.push_back(m.vertex_index(v));
+  // the six faces (axis a, side s), corners counterclockwise seen from outside, and their axes in the plane
+  std::vector<std::vector<int>> pfaces;
+  std::vector<std::array<int, 2>> plane_axes;
+  for(int a = 0; a < 3; ++a)
+    for(int s = 0; s < 2; ++s) {
+      const int u = (a + 1) % 3, w = (a + 2) % 3;
+      auto corner = [&](int bu, int bw) { return (s << a) | (bu << u) | (bw << w); };
+      if(s == 1) { pfaces.push_back({corner(0, 0), corner(1, 0), corner(1, 1), corner(0, 1)}); plane_axes.push_back({{u, w}}); }
+      else { pfaces.push_back({corner(0, 0), corner(0, 1), corner(1, 1), corner(1, 0)}); plane_axes.push_back({{w, u}}); }
+    }
+  std::array<double, 3> dims{{0, 0, 0}};
+  bool dims_known = false;
+  auto polygon = [&](std::size_t j, const std::function<double(int, int)>& path_length) {
+    if(!dims_known) {   // each side: the mean of its four paths, in multiples of the edge length
+      for(int a = 0; a < 3; ++a) {
+        double sum = 0;
+        for(int i = 0; i < 8; ++i) if(!(i & (1 << a))) sum += path_length(i, i | (1 << a)) / 4;
+        dims[std::size_t(a)] = edge_length * (std::max)(1., std::round(sum / edge_length));
+      }
+      dims_known = true;
+    }
+    const int x = plane_axes[j][0], y = plane_axes[j][1];
+    std::vector<Point_2> p;
+    for(int c : pfaces[j]) p.push_back(Point_2(((c >> x) & 1) * dims[std::size_t(x)], ((c >> y) & 1) * dims[std::size_t(y)]));
+    return p;
+  };
+  std::vector<double> l;
+  Polycube_metric_status st = internal::polyhedron_metric_core(m, cv, pfaces, polygon, l);
+  st.dimensions = dims;
+  if(st.success) for(std::size_t e = 0; e < l.size(); ++e) put(lengths, m.edges[e], l[e]);
+  return st;
+}
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsRemeshing
+/// Metric compensation with a polyhedron P made of squares and equilateral triangles of side
+/// `side_length` (Lai et al. 2010, section 4.1.3.2: P's vertices are the cones, its faces
+/// quadrilaterals or triangles): `corners` are the mesh vertices of P's vertices, `faces` P's
+/// faces as cycles of indices into `corners`, counterclockwise seen from outside. The mesh is cut
+/// along shortest edge paths of P's edges and every piece embedded onto its square or triangle
+/// as in box_polycube_metric(). The output metric has a cone at each of P's vertices of
+/// curvature \f$2\pi\f$ minus its polygons' angles (\f$\pi/2\f$ per square, \f$\pi/3\f$ per
+/// triangle): the octahedron's six cones of \f$2\pi/3\f$, an obelisk's mix. Its holonomy is in
+/// the square grid's group when P has only squares, in the triangular grid's when it has only
+/// triangles; a side length that is a multiple of the grid's edge length makes the cones grid
+/// points. Named parameters and failures as for box_polycube_metric(); `Input_error` also for a
+/// P that is not a closed oriented sphere or has faces other than triangles and quadrilaterals.
+template <typename TriangleMesh, typename EdgeLengthMap, typename NamedParameters = parameters::Default_named_parameters>
+Polycube_metric_status polyhedron_metric(const TriangleMesh& tm,
+                                         const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& corners,
+                                         const std::vector<std::vector<int>>& faces, double side_length, EdgeLengthMap lengths,
+                                         const NamedParameters& np = parameters::default_values())
+{
+  if(!(side_length > 0) || !std::isfinite(side_length))
+    throw Input_error(Input_error::INVALID_ARGUMENT, "the side length must be positive, got " + std::to_string(side_length));
+  for(const auto& f : faces)
+    if(f.size() != 3 && f.size() != 4)
+      throw Input_error(Input_error::INVALID_ARGUMENT, "the polyhedron's faces must be triangles or quadrilaterals, got one with " +
+                                                           std::to_string(f.size()) + " corners");
+  const Intrinsic_mesh<TriangleMesh> im = internal::genus_zero_mesh(tm, np, "polyhedron_metric()");
+  const internal::Mesh_arrays<TriangleMesh>& m = im.arrays();
+  std::vector<int> cv;
+  for(const auto& v : corners) cv.push_back(m.vertex_index(v));
+  const double L = side_length;
+  auto polygon = [&](std::size_t j, const std::function<double(int, int)>&) {
+    return faces[j].size() == 4 ? std::vector<Point_2>{Point_2(0, 0), Point_2(L, 0), Point_2(L, L), Point_2(0, L)}
+                                : std::vector<Point_2>{Point_2(0, 0), Point_2(L, 0), Point_2(L / 2, L * std::sqrt(3.) / 2)};
+  };
+  std::vector<double> l;
+  Polycube_metric_status st = internal::polyhedron_metric_core(m, cv, faces, polygon, l);
+  if(st.success) for(std::size_t e = 0; e < l.size(); ++e) put(lengths, m.edges[e], l[e]);
   return st;
 }
 
