@@ -18,6 +18,7 @@
 #include <CGAL/Surface_mesh_direction_fields/flat_development.h>
 #include <CGAL/Surface_mesh_direction_fields/grid_tessellation.h>
 #include <CGAL/Surface_mesh_direction_fields/polycube_metric.h>
+#include <CGAL/Surface_mesh_direction_fields/polyhedron_remeshing.h>
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/IO/read_triangle_mesh.h>
 
@@ -362,6 +363,68 @@ void octahedron_polyhedron(const std::string& dir)
   SMDF_CHECK_MSG(threw, "a pentagon is refused");
 }
 
+// The paper's obelisk (Lai et al., Figure 1c and d): a box of four squares on a square base with
+// a pyramid of four equilateral triangles on top; cones of pi/2 at the base, pi/3 at the middle
+// ring, 2 pi/3 at the apex. The mixed remesh: quads on the box, triangles on the pyramid,
+// valence 5 along the ring, each corner the number of its faces.
+void obelisk(const std::string& dir)
+{
+  Surface_mesh mesh;
+  SMDF::read_triangle_mesh(dir + "/meshes/spot_c3d.obj", mesh);
+  K::Vector_3 center(0, 0, 0);
+  for(auto v : vertices(mesh)) center = center + (mesh.point(v) - CGAL::ORIGIN) / double(num_vertices(mesh));
+  std::vector<K::Vector_3> dirs;
+  for(double y : {-1., 0.5})
+    for(int i = 0; i < 4; ++i) dirs.push_back(K::Vector_3(std::cos(M_PI / 4 + i * M_PI / 2), y, std::sin(M_PI / 4 + i * M_PI / 2)));
+  dirs.push_back(K::Vector_3(0, 1, 0));
+  std::vector<Surface_mesh::Vertex_index> corners;
+  for(const auto& d : dirs) {
+    double best = -1e300;
+    Surface_mesh::Vertex_index pick;
+    for(auto v : vertices(mesh)) {
+      const double x = (mesh.point(v) - (CGAL::ORIGIN + center)) * d;
+      if(x > best && std::find(corners.begin(), corners.end(), v) == corners.end()) { best = x; pick = v; }
+    }
+    corners.push_back(pick);
+  }
+  std::vector<std::vector<int>> pfaces = {{0, 1, 2, 3}};   // the base, then the sides and the pyramid
+  for(int i = 0; i < 4; ++i) pfaces.push_back({i, 4 + i, 4 + (i + 1) % 4, (i + 1) % 4});
+  for(int i = 0; i < 4; ++i) pfaces.push_back({4 + i, 8, 4 + (i + 1) % 4});
+  auto targets = mesh.add_property_map<Surface_mesh::Vertex_index, double>("v:obelisk", 0.).first;
+  for(int i = 0; i < 9; ++i) targets[corners[std::size_t(i)]] = i < 4 ? M_PI / 2 : i < 8 ? M_PI / 3 : 2 * M_PI / 3;
+  auto flat = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:obelisk_flat", 0).first;
+  const auto cm = SMDF::compute_cone_metric(mesh, targets, flat, SMDF::parameters::intrinsic_edge_flips(false));
+  SMDF_CHECK_MSG(cm.converged, "spot, obelisk cones: " << cm.message);
+  for(int n : {3, 6}) {
+    Surface_mesh out;
+    const auto st = SMDF::polyhedron_remesh(mesh, corners, pfaces, n, out, SMDF::parameters::edge_length_map(flat));
+    const std::string what = "spot, obelisk, " + std::to_string(n) + " grid edges per side";
+    SMDF_CHECK_MSG(st.metric.success, what << ": " << st.message);
+    if(!st.metric.success) continue;
+    std::map<std::size_t, std::size_t> sides, valence;
+    for(auto f : faces(out)) ++sides[CGAL::halfedges_around_face(halfedge(f, out), out).size()];
+    for(auto v : vertices(out)) ++valence[degree(v, out)];
+    const long chi = long(num_vertices(out)) - long(num_edges(out)) + long(num_faces(out));
+    // base corners 3, ring and apex 4, ring edges 5 (4 (n - 1) points), pyramid inside 6
+    const std::size_t n1 = std::size_t(n - 1);
+    const std::size_t tri_inner = n >= 3 ? std::size_t((n - 1) * (n - 2) / 2) : 0;
+    SMDF_CHECK_MSG(sides[4] == std::size_t(5 * n * n) && sides[3] == std::size_t(4 * n * n) && sides.size() == 2,
+                   what << ": " << sides[4] << " quads on the box, " << sides[3] << " triangles on the pyramid");
+    SMDF_CHECK_MSG(chi == 2 && CGAL::is_valid_polygon_mesh(out), what << ": a valid sphere (chi " << chi << ")");
+    SMDF_CHECK_MSG(valence[3] == 4 && valence[5] == 4 * n1 && valence[6] == 4 * tri_inner + 4 * n1 && st.unexpected_valences == 0,
+                   what << ": valences 3 (base corners), 5 (ring), 6 (pyramid): " << valence[3] << ", " << valence[5] << ", " << valence[6]);
+    typedef CGAL::AABB_face_graph_triangle_primitive<Surface_mesh> Primitive;
+    typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> Tree;
+    Tree tree(faces(mesh).first, faces(mesh).second, mesh);
+    double far = 0;
+    for(auto v : vertices(out)) far = std::max(far, std::sqrt(tree.squared_distance(out.point(v))));
+    SMDF_CHECK_MSG(far < 1e-12, what << ": every output vertex on the input surface (" << far << ")");
+    SMDF_CHECK_MSG(st.success == (st.inverted_faces == 0), what << ": success unless faces are inverted (" << st.inverted_faces << ")");
+    std::cout << what << ": " << sides[4] << " quads, " << sides[3] << " triangles, " << st.inverted_faces << " inverted, path stretch "
+              << st.metric.max_path_stretch << std::endl;
+  }
+}
+
 } // namespace
 
 int main()
@@ -370,7 +433,7 @@ int main()
   octahedron();
   flat_torus();
   const std::string dir = smdf_test::shared_data_dir();
-  if(!dir.empty()) { box_polycube(dir); octahedron_polyhedron(dir); }
+  if(!dir.empty()) { box_polycube(dir); octahedron_polyhedron(dir); obelisk(dir); }
   else std::cout << "../shared/data not found: box polycube on shared meshes skipped" << std::endl;
   return smdf_test::finish();
 }

@@ -473,6 +473,16 @@ def test_remesh(smdf, c, torus, tmp):
         f.write("# one square only: not closed\n0 1 2 3\n")
     smdf.error(["remesh", cube, "--polycube", pfile, "--faces", "100", "--out", out], "remesh: open polyhedron file", 1,
                "not a closed oriented surface")
+    rc, o, err = smdf.run(["remesh", spot, "--polycube", "obelisk", "--faces", "1500", "--out", os.path.join(tmp, "spot_obelisk.obj")])
+    doc = json.loads(o.decode()) if o else {}
+    n = doc.get("subdivisions", 0)
+    c.check(rc in (0, 3) and doc.get("grid") == "mixed" and doc.get("faces_by_size") == {"4": 5 * n * n, "3": 4 * n * n}
+            and doc.get("unexpected_valences") == 0 and doc.get("valences", {}).get("5") == 4 * (n - 1)
+            and (rc == 0) == (doc.get("inverted_faces") == 0),
+            "remesh spot --polycube obelisk: quads on the box, triangles on the pyramid, valence 5 along the ring, "
+            "exit 3 exactly when faces are inverted (rc=%s, %r)" % (rc, {k: doc.get(k) for k in ("faces_by_size", "inverted_faces")}))
+    smdf.error(["remesh", cube, "--grid", "mixed", "--edge-length", "0.25", "--out", out], "remesh --grid mixed without a polyhedron", 2,
+               "polyhedron")
     rc, o, err = smdf.run(["remesh", torus, "--edge-length", "0.1", "--out", out])
     c.check(rc == 3 and b"not symmetries" in err, "remesh torus (curved metric): exit 3, the cut graph's motions fail")
     smdf.error(["remesh", cube, "--edge-length", "0.25"], "remesh without --out", 2, "--out")

@@ -11,6 +11,7 @@
 #include <CGAL/Surface_mesh_direction_fields/flat_development.h>
 #include <CGAL/Surface_mesh_direction_fields/grid_tessellation.h>
 #include <CGAL/Surface_mesh_direction_fields/polycube_metric.h>
+#include <CGAL/Surface_mesh_direction_fields/polyhedron_remeshing.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -185,8 +186,8 @@ Json run_remesh(const Args& args)
 {
   const std::string& file = args.positional[0];
   const std::string grid_name = args.value("grid", "quad");
-  if(grid_name != "quad" && grid_name != "triangle")
-    throw Usage_error("option --grid expects 'quad' or 'triangle', got '" + shorten(grid_name) + "'");
+  if(grid_name != "quad" && grid_name != "triangle" && grid_name != "mixed")
+    throw Usage_error("option --grid expects 'quad', 'triangle' or 'mixed', got '" + shorten(grid_name) + "'");
   SMDF::Planar_tessellation grid = grid_name == "quad" ? SMDF::SQUARE_GRID : SMDF::TRIANGULAR_GRID;
   if(args.has("edge-length") == args.has("faces")) throw Usage_error("give one of --edge-length and --faces");
   const double requested_h = args.has("edge-length") ? args.real("edge-length", 0) : 0;
@@ -197,8 +198,10 @@ Json run_remesh(const Args& args)
   if(args.has("polycube") && polycube.empty()) throw Usage_error("option --polycube expects 'box', 'octahedron' or a file");
   if(args.has("polycube") && args.has("lengths")) throw Usage_error("give at most one of --polycube and --lengths");
   if(polycube == "box" && grid != SMDF::SQUARE_GRID) throw Usage_error("--polycube box gives a metric for --grid quad");
-  if(polycube == "octahedron" && args.has("grid") && grid != SMDF::TRIANGULAR_GRID)
+  if(polycube == "octahedron" && args.has("grid") && grid_name != "triangle")
     throw Usage_error("--polycube octahedron gives a metric for --grid triangle");
+  if(grid_name == "mixed" && (polycube.empty() || polycube == "box" || polycube == "octahedron"))
+    throw Usage_error("--grid mixed needs a polyhedron of squares and triangles: --polycube obelisk or --polycube FILE");
   if(!args.has("out")) throw Usage_error("option --out FILE is required (.off or .obj)");
   const std::string out_file = args.value("out");
 
@@ -224,7 +227,19 @@ Json run_remesh(const Args& args)
     // a polyhedron of unit squares and equilateral triangles: the octahedron, or from a file
     std::vector<vertex_descriptor> corners;
     std::vector<std::vector<int>> pfaces;
-    if(polycube == "octahedron") {
+    bool mixed = false;
+    if(polycube == "obelisk") {   // Lai et al. Figure 1c: a box of four squares on a base, a pyramid on top (y up)
+      std::vector<K::Vector_3> d;
+      for(double y : {-1., 0.5})
+        for(int i = 0; i < 4; ++i) d.push_back(K::Vector_3(std::cos(CGAL_PI / 4 + i * CGAL_PI / 2), y, std::sin(CGAL_PI / 4 + i * CGAL_PI / 2)));
+      d.push_back(K::Vector_3(0, 1, 0));
+      corners = extreme_vertices(mesh, d);
+      pfaces.push_back({0, 1, 2, 3});
+      for(int i = 0; i < 4; ++i) pfaces.push_back({i, 4 + i, 4 + (i + 1) % 4, (i + 1) % 4});
+      for(int i = 0; i < 4; ++i) pfaces.push_back({4 + i, 8, 4 + (i + 1) % 4});
+      mixed = true;
+      out["grid"] = "mixed";
+    } else if(polycube == "octahedron") {
       corners = axis_corners(mesh);
       for(int sx : {1, -1})
         for(int sy : {1, -1})
@@ -238,10 +253,9 @@ Json run_remesh(const Args& args)
       read_polyhedron(polycube, mesh, corners, pfaces);
       std::size_t quads = 0;
       for(const auto& f : pfaces) quads += f.size() == 4;
-      if(quads != 0 && quads != pfaces.size())
-        throw file_error(polycube, "the polyhedron mixes squares and triangles: mixed square / triangle tessellation is not built yet", "unsupported");
+      mixed = grid_name == "mixed" || (quads != 0 && quads != pfaces.size());
       grid = quads ? SMDF::SQUARE_GRID : SMDF::TRIANGULAR_GRID;
-      out["grid"] = quads ? "quad" : "triangle";
+      out["grid"] = mixed ? "mixed" : quads ? "quad" : "triangle";
     }
     std::size_t nq = 0;
     for(const auto& f : pfaces) nq += f.size() == 4;
@@ -257,6 +271,42 @@ Json run_remesh(const Args& args)
       return SMDF::compute_cone_metric(mesh, targets, flat, SMDF::parameters::intrinsic_edge_flips(false));
     });
     metric["flat_cone_metric_converged"] = cm.converged;
+    if(mixed) {   // each face of P its own grid (polyhedron_remesh), n grid edges per side
+      const int n = int((std::max)(1., std::round(side / h)));
+      Mesh remesh;
+      const SMDF::Polyhedron_remesh_status rs = on_file(file, [&] {
+        return cm.converged ? SMDF::polyhedron_remesh(mesh, corners, pfaces, n, remesh, SMDF::parameters::edge_length_map(flat))
+                            : SMDF::polyhedron_remesh(mesh, corners, pfaces, n, remesh);
+      });
+      Json c = Json::array();
+      for(vertex_descriptor v : corners) c.push_back(index(v));
+      metric["corners"] = std::move(c);
+      metric["max_path_stretch"] = rs.metric.max_path_stretch;
+      out["metric"] = metric;
+      out["subdivisions"] = n;
+      Json timings = Json::object();
+      timings["metric_s"] = metric_s;
+      timings["tessellation_s"] = clock.lap();
+      if(num_faces(remesh) > 0) {
+        Json sizes = Json::object(), val = Json::object();
+        sizes["4"] = rs.quads;
+        sizes["3"] = rs.triangles;
+        for(std::size_t k = 0; k < rs.valences.size(); ++k) if(rs.valences[k]) val[std::to_string(k)] = rs.valences[k];
+        out["vertices"] = rs.vertices;
+        out["faces_by_size"] = std::move(sizes);
+        out["valences"] = std::move(val);
+        out["unexpected_valences"] = rs.unexpected_valences;
+        out["inverted_faces"] = rs.inverted_faces;
+        out["quality"] = quality(remesh);
+        out["distance_over_edge_length"] = distances(mesh, remesh, side / n);
+        if(!CGAL::IO::write_polygon_mesh(out_file, remesh, CGAL::parameters::stream_precision(17)))
+          throw file_error(out_file, "cannot write the remesh (the extension must be .off or .obj)", "output");
+      }
+      out["timings"] = std::move(timings);
+      out["success"] = rs.success;
+      if(!rs.success) throw Failed_result{out, file + ": " + rs.message, 3};
+      return out;
+    }
     const SMDF::Polycube_metric_status ps = on_file(file, [&] {
       return cm.converged ? SMDF::polyhedron_metric(mesh, corners, pfaces, side, lengths, SMDF::parameters::edge_length_map(flat))
                           : SMDF::polyhedron_metric(mesh, corners, pfaces, side, lengths);
@@ -358,10 +408,10 @@ Json run_remesh(const Args& args)
 Command remesh_command()
 {
   return {"remesh", {"MESH"},
-          {{"grid", "G", "quad (default) or triangle"},
+          {{"grid", "G", "quad (default), triangle, or mixed (with a polyhedron of squares and triangles)"},
            {"edge-length", "H", "the grid's edge length on the surface"},
            {"faces", "N", "about N faces instead (the admissible edge length nearest to area / N)"},
-           {"polycube", "P", "metric compensation with a polyhedron: 'box' (corners: the 8 vertices extreme in the diagonal directions from the centroid), 'octahedron' (the 6 extreme along the axes; triangles), or a file: one face per line, its 3 or 4 vertex ids counterclockwise from outside (squares or triangles)"},
+           {"polycube", "P", "metric compensation with a polyhedron: 'box' (corners: the 8 vertices extreme in the diagonal directions from the centroid), 'octahedron' (the 6 extreme along the axes; triangles), 'obelisk' (Lai et al. Fig. 1c, y up: mixed), or a file: one face per line, its 3 or 4 vertex ids counterclockwise from outside (squares or triangles)"},
            {"lengths", "FILE", "the flat cone metric: one line 'i j length' per edge (e.g. cone-metric --no-flips --lengths-out)"},
            {"out", "FILE", "write the remesh (.off or .obj)"}},
           "regular quad or triangle remesh from a flat cone metric",

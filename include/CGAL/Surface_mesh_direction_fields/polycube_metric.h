@@ -46,6 +46,19 @@ struct Polycube_metric_status
 
 namespace internal {
 
+// What polyhedron_metric_core() knows at the end, for polyhedron_remesh(): every mesh face in the
+// chart of its polyhedron face, and the paths of P's edges.
+struct Polyhedron_charts
+{
+  std::vector<std::array<Point_2, 3>> chart;     // per mesh face: its corners in its P face's polygon
+  std::vector<int> pface;                        // per mesh face: its face of P
+  std::vector<std::array<int, 2>> pedges;        // P's edges (corner indices), as first met in the faces
+  std::vector<std::vector<int>> paths;           // per P edge: mesh vertices from pedges[k][0] to pedges[k][1]
+  std::vector<std::vector<double>> steps;        // ... and the metric's lengths of their edges
+  std::vector<std::vector<Point_2>> shape;       // per P face: its polygon
+  bool mirrored = false;                         // the mesh's faces turn clockwise in the charts
+};
+
 // The metric of a polyhedron P on a closed genus-0 mesh (the engine of box_polycube_metric() and
 // polyhedron_metric()): P's corners are mesh vertices, its faces cycles of corners
 // (counterclockwise seen from outside). P's edges become shortest edge paths under the mesh's
@@ -57,7 +70,7 @@ namespace internal {
 template <typename TM, typename Polygon>
 Polycube_metric_status polyhedron_metric_core(const Mesh_arrays<TM>& m, const std::vector<int>& corner_vertex,
                                               const std::vector<std::vector<int>>& pfaces, Polygon polygon,
-                                              std::vector<double>& lengths)
+                                              std::vector<double>& lengths, Polyhedron_charts* charts = nullptr)
 {
   Polycube_metric_status st;
   const std::size_t nv = m.number_of_vertices(), ne = m.number_of_edges(), nf = m.number_of_faces();
@@ -347,6 +360,16 @@ Polycube_metric_status polyhedron_metric_core(const Mesh_arrays<TM>& m, const st
     while(g != h) { g = m.next[std::size_t(g)]; ++k; }
     const Point_2 &p = chart[std::size_t(f)][std::size_t(k)], &q = chart[std::size_t(f)][std::size_t((k + 1) % 3)];
     lengths[e] = std::sqrt((q.x() - p.x()) * (q.x() - p.x()) + (q.y() - p.y()) * (q.y() - p.y()));
+  }
+  if(charts) {
+    charts->chart = chart;
+    charts->pface.assign(nf, -1);
+    for(std::size_t f = 0; f < nf; ++f) charts->pface[f] = face_of_region[std::size_t(region[f])];
+    charts->pedges = pedges;
+    charts->paths = paths;
+    charts->steps = steps;
+    charts->shape = shape;
+    charts->mirrored = negative > 0;
   }
   st.success = true;
   return st;
