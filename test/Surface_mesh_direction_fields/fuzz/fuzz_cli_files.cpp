@@ -1,7 +1,8 @@
 // libFuzzer target: the command-line tool's file parsers, through the tool itself (main.cpp is
 // compiled with main renamed): the bytes after the first one are written to a file that is
 // passed, on data/torus.off, as --singularities-file or --constraints (connection), --lengths
-// (holonomy, connection), --field or --matching (singularities), chosen by the first byte.
+// (holonomy, connection, remesh), --field or --matching (singularities), --polycube (remesh),
+// chosen by the first byte.
 // Every input must end with an exit code of 0 to 3; a crash or an escaping exception is a bug.
 #include <cstdint>
 #include <cstdio>
@@ -42,7 +43,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string mesh = SMDF_FUZZ_MESH;
   const std::string file = write_temp("input", data + 1, size - 1);
   std::vector<std::string> args;
-  switch(data[0] % 6) {
+  const std::string out = "/tmp/smdf_fuzz_remesh_" + std::to_string(getpid()) + ".off";
+  switch(data[0] % 8) {
+    case 6: args = {"remesh", mesh, "--lengths", file, "--faces", "200", "--out", out}; break;
+    case 7: args = {"remesh", mesh, "--polycube", file, "--faces", "200", "--out", out}; break;
     case 0: args = {"connection", mesh, "--singularities-file", file}; break;
     case 1: args = {"connection", mesh, "--N", "4", "--constraints", file}; break;
     case 2: args = {"holonomy", mesh, "--lengths", file}; break;
@@ -58,6 +62,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const int code = smdf_tool_main(int(args.size() + 1), argv.data());
   sink.str("");
   std::remove(file.c_str());
+  std::remove(out.c_str());
   if(code < 0 || code > 3) std::abort();
   return 0;
 }
