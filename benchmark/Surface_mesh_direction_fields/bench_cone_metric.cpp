@@ -22,9 +22,30 @@
 //                                triangles on which the fixed-triangulation Newton may stall.
 //
 // Targets (issue), `_median` rows: 20k faces <= 0.15 s, 433k faces <= 4 s, error <= 1e-10.
+//
+//   BM_field_design/<size>  Lai et al.'s field design: the metric with the 8 cones, the
+//                           compensated 4-RoSy vertex field (rotation_compensated_field(); on a
+//                           sphere no handle loop: the parallel field), a vertex editor with
+//                           three hard direction constraints (factor) and one edit with new
+//                           values (a solve). Counters metric_s, compensation_s, editor_s
+//                           (construction and first edit), edit_s (the second edit).
+//                           Targets (issue #12): compensation and edit <= 0.02 s at 20k,
+//                           <= 0.2 s at 400k.
+//   BM_remesh_pipeline/<size> the remeshing pipeline: the metric with the 8 cones on the input
+//                           triangulation, the box polycube metric, development and quad
+//                           tessellation with about as many quads as input faces. Counters
+//                           metric_s, compensation_s, tessellation_s, output_quads, read_back_ok
+//                           (valences and no inverted face). Targets (issue #13): <= 1 s at
+//                           20k, <= 10 s at 400k.
 #include "benchmark_util.h"
 
+#include <CGAL/Surface_mesh_direction_fields/Intrinsic_triangulation.h>
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
+#include <CGAL/Surface_mesh_direction_fields/field_editing.h>
+#include <CGAL/Surface_mesh_direction_fields/flat_development.h>
+#include <CGAL/Surface_mesh_direction_fields/grid_tessellation.h>
+#include <CGAL/Surface_mesh_direction_fields/polycube_metric.h>
+#include <CGAL/Surface_mesh_direction_fields/rotation_compensation.h>
 
 #include <array>
 #include <chrono>
@@ -183,6 +204,139 @@ void BM_cone_metric(benchmark::State& state, SMDF::Ricci_flow_scheme scheme)
   }
 }
 
+
+double since(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+void BM_field_design(benchmark::State& state)
+{
+  const smdf_bench::Bench_mesh* b = nullptr;
+  try { b = &cone_mesh_of_size(std::size_t(state.range(0))); } catch(const std::exception& e) { fail(state, e.what()); return; }
+  smdf_bench::set_mesh_counters(state, *b);
+  try {
+    const std::vector<Vertex> cones = extreme_vertices(b->mesh);
+    double metric_s = 0, compensation_s = 0, editor_s = 0, edit_s = 0;
+    bool ok = true;
+    std::string message;
+    smdf_bench::Memory_probe mem;
+    for(auto _ : state) {
+      Mesh work = b->mesh;
+      auto target = work.add_property_map<Vertex, double>("v:bench_target", 0.).first;
+      auto lengths = work.add_property_map<Mesh::Edge_index, double>("e:bench_length", 0.).first;
+      for(Vertex v : cones) put(target, v, CGAL_PI / 2);
+      auto t0 = std::chrono::steady_clock::now();
+      const SMDF::Cone_metric_status cm = SMDF::compute_cone_metric(work, target, lengths);
+      metric_s += since(t0);
+      Mesh flat_mesh;
+      auto flat = flat_mesh.add_property_map<Mesh::Edge_index, double>("e:bench_flat", 0.).first;
+      Mesh* carrier = &work;
+      auto flat_map = lengths;
+      if(cm.triangulation_changed) {
+        SMDF::copy_intrinsic_triangulation(cm.intrinsic_triangulation, work, flat_mesh, flat);
+        carrier = &flat_mesh;
+        flat_map = flat;
+      }
+      auto va = carrier->add_property_map<Vertex, double>("v:bench_angle", 0.).first;
+      auto fa = carrier->add_property_map<Mesh::Face_index, double>("f:bench_angle", 0.).first;
+      t0 = std::chrono::steady_clock::now();
+      const SMDF::Rotation_compensation_status rc =
+          SMDF::rotation_compensated_field(*carrier, 4, va, fa, SMDF::parameters::edge_length_map(flat_map));
+      compensation_s += since(t0);
+      t0 = std::chrono::steady_clock::now();
+      SMDF::Rosy_vertex_field_editor<Mesh> editor(*carrier, 4, va, SMDF::parameters::edge_length_map(flat_map));
+      std::vector<std::pair<Vertex, double>> c;
+      const std::size_t nv = num_vertices(*carrier);
+      for(std::size_t i = 1; c.size() < 3 && i < nv; i += nv / 4) {
+        const Vertex v(Mesh::size_type(i % nv));
+        if(std::find(cones.begin(), cones.end(), v) == cones.end()) c.emplace_back(v, get(va, v) + 0.1);
+      }
+      editor.set_direction_constraints(c);
+      const SMDF::Field_edit_status e1 = editor.edit();
+      editor_s += since(t0);
+      for(auto& x : c) x.second += 0.05;
+      editor.set_direction_constraints(c);
+      t0 = std::chrono::steady_clock::now();
+      const SMDF::Field_edit_status e2 = editor.edit();
+      edit_s += since(t0);
+      if(!(cm.converged && rc.success && e1.success && e2.success && e2.factor_seconds == 0)) {
+        ok = false;
+        message = !cm.converged ? cm.message : !rc.success ? rc.message : e1.message + e2.message;
+      }
+    }
+    mem.report(state);
+    state.counters["metric_s"] = benchmark::Counter(metric_s, benchmark::Counter::kAvgIterations);
+    state.counters["compensation_s"] = benchmark::Counter(compensation_s, benchmark::Counter::kAvgIterations);
+    state.counters["editor_s"] = benchmark::Counter(editor_s, benchmark::Counter::kAvgIterations);
+    state.counters["edit_s"] = benchmark::Counter(edit_s, benchmark::Counter::kAvgIterations);
+    state.counters["ok"] = ok ? 1 : 0;
+    if(!ok) state.SetLabel(b->source + " FAILED: " + message);
+  } catch(const std::exception& e) {
+    fail(state, e.what());
+  }
+}
+
+void BM_remesh_pipeline(benchmark::State& state)
+{
+  const smdf_bench::Bench_mesh* b = nullptr;
+  try { b = &cone_mesh_of_size(std::size_t(state.range(0))); } catch(const std::exception& e) { fail(state, e.what()); return; }
+  smdf_bench::set_mesh_counters(state, *b);
+  try {
+    const std::vector<Vertex> cones = extreme_vertices(b->mesh);
+    std::array<Vertex, 8> corners;
+    std::copy(cones.begin(), cones.end(), corners.begin());
+    double area = 0;
+    for(auto f : faces(b->mesh)) {
+      const auto h = halfedge(f, b->mesh);
+      area += std::sqrt(CGAL::squared_area(b->mesh.point(source(h, b->mesh)), b->mesh.point(target(h, b->mesh)),
+                                           b->mesh.point(target(next(h, b->mesh), b->mesh))));
+    }
+    const double h = std::sqrt(area / double(num_faces(b->mesh)));   // about as many quads as input faces
+    double metric_s = 0, compensation_s = 0, tessellation_s = 0;
+    std::size_t quads = 0, inverted = 0;
+    bool ok = true;
+    std::string message;
+    smdf_bench::Memory_probe mem;
+    for(auto _ : state) {
+      Mesh work = b->mesh;
+      auto target = work.add_property_map<Vertex, double>("v:bench_target", 0.).first;
+      auto flat = work.add_property_map<Mesh::Edge_index, double>("e:bench_flat", 0.).first;
+      auto box = work.add_property_map<Mesh::Edge_index, double>("e:bench_box", 0.).first;
+      for(Vertex v : cones) put(target, v, CGAL_PI / 2);
+      auto t0 = std::chrono::steady_clock::now();
+      const SMDF::Cone_metric_status cm = SMDF::compute_cone_metric(work, target, flat, SMDF::parameters::intrinsic_edge_flips(false));
+      metric_s += since(t0);
+      t0 = std::chrono::steady_clock::now();
+      const SMDF::Polycube_metric_status ps = cm.converged
+          ? SMDF::box_polycube_metric(work, corners, h, box, SMDF::parameters::edge_length_map(flat))
+          : SMDF::box_polycube_metric(work, corners, h, box);
+      compensation_s += since(t0);
+      t0 = std::chrono::steady_clock::now();
+      Mesh out;
+      SMDF::Grid_tessellation_status st;
+      if(ps.success) {
+        const auto dev = SMDF::develop_flat_metric(work, SMDF::parameters::edge_length_map(box));
+        st = SMDF::tessellate_flat_metric(work, dev, SMDF::SQUARE_GRID, h, out);
+      }
+      tessellation_s += since(t0);
+      quads = st.faces;
+      inverted = st.inverted_faces;
+      if(!st.success) { ok = false; message = ps.success ? st.message : ps.message; }
+    }
+    mem.report(state);
+    state.counters["metric_s"] = benchmark::Counter(metric_s, benchmark::Counter::kAvgIterations);
+    state.counters["compensation_s"] = benchmark::Counter(compensation_s, benchmark::Counter::kAvgIterations);
+    state.counters["tessellation_s"] = benchmark::Counter(tessellation_s, benchmark::Counter::kAvgIterations);
+    state.counters["output_quads"] = double(quads);
+    state.counters["inverted_faces"] = double(inverted);
+    state.counters["read_back_ok"] = ok ? 1 : 0;
+    if(!ok) state.SetLabel(b->source + " READ-BACK FAILED: " + message);
+  } catch(const std::exception& e) {
+    fail(state, e.what());
+  }
+}
+
 void register_sizes(const char* name, const std::vector<std::int64_t>& sizes,
                     SMDF::Ricci_flow_scheme scheme = SMDF::VERTEX_SCALING)
 {
@@ -197,6 +351,10 @@ const bool registered = [] {
     register_sizes("BM_cone_metric", smdf_bench::target_sizes());
   } else {
     register_sizes("BM_cone_metric", {10000, 20000, 100000, 433000, 1000000});
+    for(std::int64_t size : {10000, 20000, 100000, 433000}) {
+      smdf_bench::sized(benchmark::RegisterBenchmark("BM_field_design", BM_field_design), size);
+      smdf_bench::sized(benchmark::RegisterBenchmark("BM_remesh_pipeline", BM_remesh_pipeline), size);
+    }
     // the paper's flow (inversive distance circle packing, input triangulation only)
     register_sizes("BM_cone_metric_circle_packing", {10000, 20000, 100000, 433000}, SMDF::INVERSIVE_DISTANCE_CIRCLE_PACKING);
     // the base mesh and its Loop subdivisions, not decimated (armadillo: 52k, 208k, 832k faces)
