@@ -4,8 +4,10 @@
 #ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_TRIVIAL_CONNECTION_H
 #define CGAL_SURFACE_MESH_DIRECTION_FIELDS_TRIVIAL_CONNECTION_H
 
-// (One concern, over 600 lines: the public API of the class, two thirds of it documentation;
-// the system, the guide solver, the field propagation and the lattice search are in internal/.)
+// (One concern, over 600 lines: the class and its solve, two thirds of it documentation; the
+// rotation limiting and the smoothest-turning search are steps of that solve on the same
+// factored system; the system, the guide solver, the field propagation and the lattice search
+// are in internal/.)
 
 #include <CGAL/Surface_mesh_direction_fields/errors.h>
 #include <CGAL/Surface_mesh_direction_fields/parameters.h>

@@ -110,11 +110,12 @@ Polycube_metric_status polyhedron_metric_core(const Mesh_arrays<TM>& m, const st
   std::vector<int> path_of_edge;
   std::vector<std::vector<int>> paths(np);
   std::vector<std::vector<double>> steps(np);
-  // the distance between the two corners of every edge of P, without obstacles: the orders
-  std::vector<double> reach(np, 0.);
-  for(std::size_t k = 0; k < np; ++k) {
-    const int s = corner_vertex[std::size_t(pedges[k][0])], t = corner_vertex[std::size_t(pedges[k][1])];
+  // Dijkstra from vertex s to t on the metric's lengths, returning the distance; `from[v]` is
+  // the halfedge into v. With `avoid`, not through earlier paths (their inner vertices and
+  // edges) nor through other corners.
+  auto shortest = [&](int s, int t, bool avoid, std::vector<int>& from) {
     std::vector<double> d(nv, std::numeric_limits<double>::infinity());
+    from.assign(nv, -1);
     typedef std::pair<double, int> Item;
     std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
     d[std::size_t(s)] = 0;
@@ -128,12 +129,20 @@ Polycube_metric_status polyhedron_metric_core(const Mesh_arrays<TM>& m, const st
       int h = h0;
       do {
         const int u = m.target[std::size_t(h)];
+        const bool blocked = avoid && (used[std::size_t(u)] || (corner_of[std::size_t(u)] >= 0 && u != t) || path_of_edge[std::size_t(h >> 1)] >= 0);
         const double du = it.first + m.edge_length(h);
-        if(du < d[std::size_t(u)]) { d[std::size_t(u)] = du; queue.push({du, u}); }
+        if(!blocked && du < d[std::size_t(u)]) { d[std::size_t(u)] = du; from[std::size_t(u)] = h; queue.push({du, u}); }
         h = m.ccw_out(h);
       } while(h != h0);
     }
-    reach[k] = d[std::size_t(t)];
+    return d[std::size_t(t)];
+  };
+  // the distance between the two corners of every edge of P, without obstacles: the orders
+  std::vector<double> reach(np, 0.);
+  {
+    std::vector<int> from;
+    for(std::size_t k = 0; k < np; ++k)
+      reach[k] = shortest(corner_vertex[std::size_t(pedges[k][0])], corner_vertex[std::size_t(pedges[k][1])], false, from);
   }
   std::vector<std::size_t> order(np);
   for(int attempt = 0; attempt < 3; ++attempt) {   // shortest first, longest first, P's order
@@ -147,27 +156,8 @@ Polycube_metric_status polyhedron_metric_core(const Mesh_arrays<TM>& m, const st
     for(std::size_t kk = 0; kk < np && st.message.empty(); ++kk) {
       const std::size_t k = order[kk];
       const int s = corner_vertex[std::size_t(pedges[k][0])], t = corner_vertex[std::size_t(pedges[k][1])];
-      std::vector<double> d(nv, std::numeric_limits<double>::infinity());
-      std::vector<int> from(nv, -1);
-      typedef std::pair<double, int> Item;
-      std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
-      d[std::size_t(s)] = 0;
-      queue.push({0., s});
-      while(!queue.empty()) {
-        const Item it = queue.top();
-        queue.pop();
-        if(it.first > d[std::size_t(it.second)] || it.second == t) continue;
-        const int v = it.second;
-        const int h0 = m.vertex_out[std::size_t(v)];
-        int h = h0;
-        do {
-          const int u = m.target[std::size_t(h)];
-          const bool blocked = used[std::size_t(u)] || (corner_of[std::size_t(u)] >= 0 && u != t) || path_of_edge[std::size_t(h >> 1)] >= 0;
-          const double du = d[std::size_t(v)] + m.edge_length(h);
-          if(!blocked && du < d[std::size_t(u)]) { d[std::size_t(u)] = du; from[std::size_t(u)] = h; queue.push({du, u}); }
-          h = m.ccw_out(h);
-        } while(h != h0);
-      }
+      std::vector<int> from;
+      shortest(s, t, true, from);
       if(from[std::size_t(t)] < 0) {
         std::ostringstream os;
         os << "no path from corner " << pedges[k][0] << " (vertex " << s << ") to corner " << pedges[k][1] << " (vertex " << t
