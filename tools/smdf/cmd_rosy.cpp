@@ -2,22 +2,28 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // smdf rosy: metric-driven N-RoSy field design (Lai et al. 2010): flat cone metric, holonomy
-// group and its compatibility tests, and the parallel field when there is one.
+// group and its compatibility tests, the field (rotation compensation, parallel transport or
+// the trivial connection of the metric), open meshes, editing, and its read-back.
 
 #include "commands.h"
 #include "common.h"
 
 #include <CGAL/Surface_mesh_direction_fields/Intrinsic_triangulation.h>
+#include <CGAL/Surface_mesh_direction_fields/Trivial_connection.h>
+#include <CGAL/Surface_mesh_direction_fields/boundary_aligned_field.h>
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
+#include <CGAL/Surface_mesh_direction_fields/field_editing.h>
 #include <CGAL/Surface_mesh_direction_fields/field_singularities.h>
 #include <CGAL/Surface_mesh_direction_fields/holonomy_group.h>
 #include <CGAL/Surface_mesh_direction_fields/homotopy_basis.h>
 #include <CGAL/Surface_mesh_direction_fields/parallel_rosy_field.h>
+#include <CGAL/Surface_mesh_direction_fields/parameters.h>
 #include <CGAL/Surface_mesh_direction_fields/rotation_compensation.h>
 #include <CGAL/Surface_mesh_direction_fields/topology.h>
-#include <CGAL/Surface_mesh_direction_fields/parameters.h>
 
+#include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <map>
 #include <string>
 #include <vector>
@@ -25,6 +31,22 @@
 namespace smdf_cli {
 
 namespace {
+
+typedef Mesh::Property_map<vertex_descriptor, double> Vertex_double_property;
+
+enum Rosy_method { AUTOMATIC, ROTATION_COMPENSATION, TRIVIAL_CONNECTION, PARALLEL, BOUNDARY_ALIGNED };
+enum Boundary_mode { FREE_BOUNDARY, PARALLEL_BOUNDARY, ORTHOGONAL_BOUNDARY };
+
+const char* method_name(Rosy_method m)
+{
+  switch(m) {
+    case ROTATION_COMPENSATION: return "rotation-compensation";
+    case TRIVIAL_CONNECTION: return "trivial-connection";
+    case PARALLEL: return "parallel";
+    case BOUNDARY_ALIGNED: return "boundary-aligned";
+    default: return "automatic";
+  }
+}
 
 const char* loop_kind_name(SMDF::Homotopy_loop_kind k)
 {
@@ -50,7 +72,45 @@ Json tessellation_json(const SMDF::Tessellation_compatibility& t)
   return o;
 }
 
-// The cones of the options: interior vertices with K < 2 pi (index below 1), each once.
+struct Rosy_options
+{
+  Rosy_method method = AUTOMATIC;
+  Boundary_mode boundary = FREE_BOUNDARY;
+  bool boundary_given = false;
+  long N = 0;   // 0: from the cones
+  Indexed_values turning;
+};
+
+Rosy_options rosy_options(const Args& args)
+{
+  Rosy_options o;
+  if(args.has("N")) o.N = symmetry_order_option(args);
+  if(args.has("method")) {
+    const std::string m = args.value("method");
+    if(m == "rotation-compensation") o.method = ROTATION_COMPENSATION;
+    else if(m == "trivial-connection") o.method = TRIVIAL_CONNECTION;
+    else if(m == "parallel") o.method = PARALLEL;
+    else throw Usage_error("option --method expects rotation-compensation, trivial-connection or parallel, got '" + shorten(m) + "'");
+  }
+  if(args.has("boundary")) {
+    o.boundary_given = true;
+    const std::string b = args.value("boundary");
+    if(b == "free") o.boundary = FREE_BOUNDARY;
+    else if(b == "parallel") o.boundary = PARALLEL_BOUNDARY;
+    else if(b == "orthogonal") o.boundary = ORTHOGONAL_BOUNDARY;
+    else throw Usage_error("option --boundary expects free, parallel or orthogonal, got '" + shorten(b) + "'");
+  }
+  o.turning = index_list_option(args, "turning");
+  if(o.boundary != FREE_BOUNDARY && (o.method == ROTATION_COMPENSATION || o.method == TRIVIAL_CONNECTION))
+    throw Usage_error(std::string("--boundary ") + args.value("boundary") + " builds the field on the double cover; it takes no --method " +
+                      method_name(o.method));
+  if(o.method == PARALLEL && !o.turning.empty())
+    throw Usage_error("--turning needs --method rotation-compensation or trivial-connection (a parallel field has no choice)");
+  return o;
+}
+
+// The cones of the options: vertices with K < 2 pi (index below 1) inside, K < pi on the
+// boundary (the boundary's turning angle there), each once.
 std::vector<std::pair<vertex_descriptor, double>> rosy_cones(const Args& args, const Mesh& mesh)
 {
   const Indexed_values cones = pairs_option(args, "cones", parse_angle, "'v:K,v:K,...' (K radians: decimal, p/q, pi/2, -4pi, ...)");
@@ -58,16 +118,19 @@ std::vector<std::pair<vertex_descriptor, double>> rosy_cones(const Args& args, c
   std::vector<std::pair<vertex_descriptor, double>> out;
   std::vector<char> given(num_vertices(mesh), 0);
   auto add = [&](const char* option, std::size_t v, double K) {
+    const std::string where = std::string("--") + option + ": vertex " + std::to_string(v);
     if(v >= num_vertices(mesh))
-      throw Error(std::string("--") + option + ": vertex " + std::to_string(v) + " does not exist (the mesh has " +
-                  std::to_string(num_vertices(mesh)) + " vertices)");
+      throw Error(where + " does not exist (the mesh has " + std::to_string(num_vertices(mesh)) + " vertices)");
     const vertex_descriptor vd(static_cast<Mesh::size_type>(v));
-    if(given[v]++) throw Error(std::string("--") + option + ": vertex " + std::to_string(v) + " is given twice");
-    if(halfedge(vd, mesh) == boost::graph_traits<Mesh>::null_halfedge() || CGAL::is_border(vd, mesh))
-      throw Error(std::string("--") + option + ": vertex " + std::to_string(v) + " is not an interior vertex");
-    if(!(K < 2 * CGAL_PI))
-      throw Error(std::string("--") + option + ": vertex " + std::to_string(v) +
-                  ": cones of index 1 or more (punched holes) are not supported by rosy");
+    if(given[v]++) throw Error(where + " is given twice");
+    if(halfedge(vd, mesh) == boost::graph_traits<Mesh>::null_halfedge())
+      throw Error(where + " is isolated (no face)");
+    if(CGAL::is_border(vd, mesh)) {
+      if(!(K < CGAL_PI && K > -CGAL_PI))
+        throw Error(where + " is on the boundary, where K is the boundary's turning angle and must lie in (-pi, pi), got " + format_real(K));
+    } else if(!(K < 2 * CGAL_PI)) {
+      throw Error(where + ": cones of index 1 or more (punched holes) are not supported by rosy");
+    }
     out.emplace_back(vd, K);
   };
   for(const auto& c : cones) add("cones", c.first, c.second);
@@ -75,168 +138,584 @@ std::vector<std::pair<vertex_descriptor, double>> rosy_cones(const Args& args, c
   return out;
 }
 
+bool multiple_of(double K, int N) { const double k = K / (2 * CGAL_PI) * N; return std::abs(k - std::round(k)) < 1e-6; }
+
+// The input's turning angle pi - sum(theta) at every boundary vertex, and the boundary loops.
+struct Boundary_geometry
+{
+  std::vector<double> kappa;                            // per vertex (0 inside)
+  std::vector<std::vector<vertex_descriptor>> loops;    // per boundary loop, in order
+  std::vector<double> dual_length;                      // per vertex: half its two boundary edges
+};
+
+Boundary_geometry boundary_geometry(const Mesh& mesh)
+{
+  Boundary_geometry b;
+  b.kappa.assign(num_vertices(mesh), 0.);
+  b.dual_length.assign(num_vertices(mesh), 0.);
+  std::vector<char> done(num_halfedges(mesh), 0);
+  for(halfedge_descriptor h : halfedges(mesh)) {
+    if(!is_border(h, mesh) || done[std::size_t(h)]) continue;
+    std::vector<vertex_descriptor> loop;
+    for(halfedge_descriptor g = h; !done[std::size_t(g)]; g = next(g, mesh)) {
+      done[std::size_t(g)] = 1;
+      loop.push_back(target(g, mesh));
+      const double l = std::sqrt(CGAL::squared_distance(mesh.point(source(g, mesh)), mesh.point(target(g, mesh))));
+      b.dual_length[index(source(g, mesh))] += l / 2;
+      b.dual_length[index(target(g, mesh))] += l / 2;
+    }
+    b.loops.push_back(std::move(loop));
+  }
+  for(vertex_descriptor v : vertices(mesh)) {
+    if(!is_border(v, mesh)) continue;
+    double sum = 0;
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, mesh), mesh)) {
+      if(is_border(h, mesh)) continue;
+      const K::Vector_3 a = mesh.point(source(h, mesh)) - mesh.point(v);
+      const K::Vector_3 c = mesh.point(target(next(h, mesh), mesh)) - mesh.point(v);
+      sum += std::atan2(std::sqrt(CGAL::cross_product(a, c).squared_length()), a * c);
+    }
+    b.kappa[index(v)] = CGAL_PI - sum;
+  }
+  return b;
+}
+
+// The target curvatures of an open mesh: the cones inside and at the given boundary vertices;
+// at the other boundary vertices the input's turning angle, changed so that Gauss-Bonnet holds
+// and the field can exist:
+//  - free boundary: every boundary loop turns in total by a multiple of 2 pi / N (so that the
+//    loop's holonomy allows a parallel field), the change spread in proportion to boundary length;
+//  - boundary-aligned fields: every boundary vertex turns by a multiple of the field's step
+//    (2 pi / N; pi / N for odd N, whose directions are lines along the boundary): the input's
+//    turning rounded, then moved by a step where the rounding cut most until Gauss-Bonnet holds.
+void open_mesh_targets(const Mesh& mesh, const Boundary_geometry& b, int N, Boundary_mode mode,
+                       const std::vector<std::pair<vertex_descriptor, double>>& cones, Vertex_double_property targets)
+{
+  std::vector<char> fixed(num_vertices(mesh), 0);
+  double fixed_total = 0;
+  for(const auto& c : cones) { fixed[index(c.first)] = 1; fixed_total += c.second; targets[c.first] = c.second; }
+  const double chi = double(SMDF::mesh_topology(mesh).euler_characteristic());
+  const double required = 2 * CGAL_PI * chi - fixed_total;   // over the free boundary vertices
+  const double step = mode == FREE_BOUNDARY ? 2 * CGAL_PI / N : (N % 2 ? CGAL_PI / N : 2 * CGAL_PI / N);
+  std::vector<vertex_descriptor> free_vertices;
+  for(const auto& loop : b.loops) for(vertex_descriptor v : loop) if(!fixed[index(v)]) free_vertices.push_back(v);
+  if(free_vertices.empty()) {
+    if(std::abs(required) > 1e-9)
+      throw Error("the cones sum to " + format_real(fixed_total) + " with every boundary vertex given; Gauss-Bonnet needs 2 pi chi = " +
+                  format_real(2 * CGAL_PI * chi) + " [inconsistent_indices]");
+    return;
+  }
+  if(mode == FREE_BOUNDARY) {
+    // per loop: the input total over its free vertices, rounded to a multiple of the step with
+    // the loop's fixed part; the rounding error of the sum goes to the longest loop
+    std::vector<double> have(b.loops.size(), 0.), fixed_part(b.loops.size(), 0.), want(b.loops.size(), 0.), length(b.loops.size(), 0.);
+    std::size_t longest = 0;
+    for(std::size_t l = 0; l < b.loops.size(); ++l) {
+      for(vertex_descriptor v : b.loops[l]) {
+        (fixed[index(v)] ? fixed_part[l] : have[l]) += fixed[index(v)] ? targets[v] : b.kappa[index(v)];
+        if(!fixed[index(v)]) length[l] += b.dual_length[index(v)];
+      }
+      want[l] = step * std::round((have[l] + fixed_part[l]) / step) - fixed_part[l];
+      if(length[l] > length[longest]) longest = l;
+    }
+    double sum = 0;
+    for(double w : want) sum += w;
+    want[longest] += required - sum;
+    for(std::size_t l = 0; l < b.loops.size(); ++l) {
+      if(length[l] <= 0) continue;
+      for(vertex_descriptor v : b.loops[l])
+        if(!fixed[index(v)]) targets[v] = b.kappa[index(v)] + (want[l] - have[l]) * b.dual_length[index(v)] / length[l];
+    }
+  } else {
+    double sum = 0;
+    for(vertex_descriptor v : free_vertices) { targets[v] = step * std::round(b.kappa[index(v)] / step); sum += targets[v]; }
+    long moves = std::lround((required - sum) / step);
+    while(moves != 0) {
+      const double dir = moves > 0 ? 1. : -1.;
+      vertex_descriptor best = free_vertices.front();
+      double best_cut = -1e300;
+      for(vertex_descriptor v : free_vertices) {
+        const double next = targets[v] + dir * step;
+        if(!(next < CGAL_PI - 1e-9 && next > -CGAL_PI + 1e-9)) continue;
+        const double cut = dir * (b.kappa[index(v)] - targets[v]);
+        if(cut > best_cut) { best_cut = cut; best = v; }
+      }
+      if(best_cut == -1e300)
+        throw Error("no boundary turning angles that are multiples of " + format_real(step) + " below pi satisfy Gauss-Bonnet; give the corners with --cones");
+      targets[best] += dir * step;
+      moves -= long(dir);
+    }
+  }
+  for(vertex_descriptor v : free_vertices)
+    if(!(targets[v] < CGAL_PI && targets[v] > -CGAL_PI))
+      throw Error("boundary vertex " + std::to_string(index(v)) + " would have to turn by " + format_real(targets[v]) +
+                  " (not in (-pi, pi)); give the boundary's turning angles with --cones");
+}
+
+// --edit FILE ('vertex x y z [weight]') and --length FILE ('vertex length [weight]'): the pairs
+// and the one weight of the file (0: hard).
+struct Constraint_lines
+{
+  std::vector<std::pair<vertex_descriptor, K::Vector_3>> directions;
+  std::vector<std::pair<vertex_descriptor, double>> lengths;
+  double weight = 0;
+};
+
+Constraint_lines read_constraint_file(const std::string& file, const Mesh& mesh, bool lengths)
+{
+  Constraint_lines c;
+  const std::size_t values = lengths ? 1 : 3;
+  std::size_t first_line = 0;
+  std::vector<char> seen(num_vertices(mesh), 0);
+  for_each_data_line(file, [&](std::size_t line, const std::vector<std::string>& f) {
+    if(f.size() != 1 + values && f.size() != 2 + values)
+      throw line_error(file, line, lengths ? "expected 'vertex length [weight]'" : "expected 'vertex x y z [weight]'");
+    const std::size_t v = vertex_field(file, line, f[0], num_vertices(mesh));
+    if(seen[v]++) throw line_error(file, line, "vertex " + std::to_string(v) + " is constrained twice");
+    double x[3] = {0, 0, 0};
+    for(std::size_t i = 0; i < values; ++i) x[i] = finite_field(file, line, f[1 + i]);
+    const double w = f.size() == 2 + values ? finite_field(file, line, f[1 + values]) : 0.;
+    if(f.size() == 2 + values && !(w > 0)) throw line_error(file, line, "the weight must be positive (no weight: a hard constraint)");
+    if(first_line == 0) { first_line = line; c.weight = w; }
+    else if(w != c.weight)
+      throw line_error(file, line, "weight " + format_real(w) + " differs from that of line " + std::to_string(first_line) + " (" +
+                                       format_real(c.weight) + "): all constraints of a file are hard, or soft with one weight");
+    const vertex_descriptor vd(static_cast<Mesh::size_type>(v));
+    if(lengths) {
+      if(!(x[0] > 0)) throw line_error(file, line, "the length must be positive");
+      c.lengths.emplace_back(vd, x[0]);
+    } else {
+      if(x[0] == 0 && x[1] == 0 && x[2] == 0) throw line_error(file, line, "the direction is the zero vector");
+      c.directions.emplace_back(vd, K::Vector_3(x[0], x[1], x[2]));
+    }
+  });
+  return c;
+}
+
+void write_vectors(const std::string& file, const std::vector<K::Vector_3>& v)
+{
+  std::ostringstream os = number_stream();
+  for(const K::Vector_3& x : v) os << x.x() << ' ' << x.y() << ' ' << x.z() << '\n';
+  write_lines_file(file, os.str());
+}
+
 } // namespace
 
 Json run_rosy(const Args& args)
 {
   const std::string& file = args.positional[0];
-  const long requested_N = args.has("N") ? symmetry_order_option(args) : 0;
+  const Rosy_options opt = rosy_options(args);
   const SMDF::Svg_options svg = svg_options(args);
   Mesh mesh;
   load_mesh(file, mesh);
   const std::vector<std::pair<vertex_descriptor, double>> cones = rosy_cones(args, mesh);
+  const bool open = !SMDF::mesh_topology(mesh).is_closed();
+  if(opt.boundary_given && !open) throw Usage_error("--boundary: " + file + " has no boundary");
+  const bool editing = args.has("edit") || args.has("length");
+  Json out = Json::object();
+  Json timings = Json::object();
+  Stopwatch clock;
 
-  // 1. the flat cone metric
+  // 0. N: given, else the smallest for which every cone curvature is a multiple of 2 pi / N
+  int N = int(opt.N);
+  if(N == 0) {
+    for(int n = 1; n <= 24 && N == 0; ++n) {
+      bool all = true;
+      for(const auto& c : cones) all = all && multiple_of(c.second, n);
+      if(all) N = n;
+    }
+    if(N == 0) throw Error("no N <= 24 makes every cone curvature a multiple of 2 pi / N; give --N");
+  }
+  out["N"] = N;
+  out["N_from"] = opt.N ? "option" : "cones";
+
+  // 1. the method
+  Rosy_method method = opt.method;
+  if(open && opt.boundary != FREE_BOUNDARY) method = BOUNDARY_ALIGNED;
+  else if(method == AUTOMATIC) method = open ? PARALLEL : ROTATION_COMPENSATION;
+  if(method == ROTATION_COMPENSATION && open)
+    throw Usage_error("--method rotation-compensation needs a closed mesh; on " + file +
+                      " use --method parallel or trivial-connection (free boundary) or --boundary parallel|orthogonal");
+  if(editing && method != ROTATION_COMPENSATION)
+    throw Usage_error(std::string("--edit and --length edit the vertex field of rotation compensation (closed meshes), not a ") +
+                      method_name(method) + " field");
+  if(args.has("field-out") && method != ROTATION_COMPENSATION)
+    throw Usage_error(std::string("--field-out writes the vertex field of rotation compensation (closed meshes); the ") +
+                      method_name(method) + " field is per face: --face-field-out");
+  out["method"] = method_name(method);
+  if(open) out["boundary"] = opt.boundary == FREE_BOUNDARY ? "free" : opt.boundary == PARALLEL_BOUNDARY ? "parallel" : "orthogonal";
+
+  // 2. the targets and the flat cone metric (the double cover's for boundary-aligned fields)
   auto targets = mesh.add_property_map<vertex_descriptor, double>("v:smdf_rosy_target", 0.).first;
   for(const auto& c : cones) targets[c.first] = c.second;
+  const Boundary_geometry bgeo = open ? boundary_geometry(mesh) : Boundary_geometry();
+  if(open) open_mesh_targets(mesh, bgeo, N, opt.boundary, cones, targets);
   const Edge_length_property lengths = mesh.add_property_map<edge_descriptor, double>("e:smdf_rosy_length", 0.).first;
-  const SMDF::Cone_metric_status cm = on_file(file, [&] { return SMDF::compute_cone_metric(mesh, targets, lengths); });
-  Json out = Json::object();
+  const Face_angle_property input_angles = mesh.add_property_map<face_descriptor, double>("f:smdf_rosy_angle", 0.).first;
+  SMDF::Cone_metric_status cm;
+  SMDF::Boundary_aligned_field_status aligned;
+  if(method == BOUNDARY_ALIGNED) {
+    aligned = on_file(file, [&] {
+      return SMDF::boundary_aligned_rosy_field(mesh, N, targets, lengths, input_angles,
+                                               SMDF::parameters::orthogonal_to_boundary(opt.boundary == ORTHOGONAL_BOUNDARY));
+    });
+    cm = aligned.metric;
+  } else {
+    cm = on_file(file, [&] { return SMDF::compute_cone_metric(mesh, targets, lengths); });
+  }
+  timings["metric_s"] = clock.lap();
   Json metric = Json::object();
   metric["converged"] = cm.converged;
   metric["iterations"] = cm.iterations;
   metric["max_curvature_error"] = cm.max_curvature_error;
   metric["triangulation_changed"] = cm.triangulation_changed;
+  if(method == BOUNDARY_ALIGNED) metric["on"] = "double cover";
   out["metric"] = std::move(metric);
-  if(!cm.converged) throw Failed_result{out, file + ": flat cone metric not converged: " + cm.message, 3};
+  if(open) {
+    Json bt = Json::array();
+    for(const auto& loop : bgeo.loops) {
+      double total = 0;
+      for(vertex_descriptor v : loop) total += targets[v];
+      bt.push_back(total / CGAL_PI);
+    }
+    out["boundary_turning_over_pi"] = std::move(bt);
+  }
+  if(!cm.converged) {
+    out["success"] = false;
+    out["timings"] = std::move(timings);
+    throw Failed_result{out, file + ": flat cone metric not converged: " + cm.message, 3};
+  }
 
-  // 2. the mesh carrying it (the input, or its intrinsic triangulation: same vertices)
+  // 3. the mesh carrying it (the input, or its intrinsic triangulation: same vertices)
   Mesh flat_mesh;
   Edge_length_property flat = lengths;
   Mesh* carrier = &mesh;
-  if(cm.triangulation_changed) {
+  if(cm.triangulation_changed && method != BOUNDARY_ALIGNED) {
     flat = flat_mesh.add_property_map<edge_descriptor, double>("e:smdf_rosy_length", 0.).first;
     SMDF::copy_intrinsic_triangulation(cm.intrinsic_triangulation, mesh, flat_mesh, flat);
     carrier = &flat_mesh;
   }
+  const bool on_input = carrier == &mesh;
+  auto need_input_faces = [&](std::initializer_list<const char*> options) {
+    for(const char* o : options)
+      if(args.has(o) && !on_input)
+        throw Failed_result{out, file + ": the metric lives on an intrinsic triangulation (edge flips): --" + o +
+                                     " needs it on the input faces (try other cones, or a finer mesh)", 3};
+  };
+  need_input_faces({"edit", "length"});
   std::vector<vertex_descriptor> cone_vertices;
-  for(const auto& c : cones) cone_vertices.push_back(c.first);
+  for(const auto& c : cones) if(!is_border(c.first, mesh)) cone_vertices.push_back(c.first);
 
-  // 3. the holonomy group and its tests
+  // 4. the holonomy group and its tests
   const auto basis = on_file(file, [&] { return SMDF::homotopy_basis(*carrier, cone_vertices); });
   const SMDF::Holonomy_group group = SMDF::holonomy_group(*carrier, basis, SMDF::parameters::edge_length_map(flat));
-  Json loops = Json::array();
-  for(std::size_t i = 0; i < basis.loops.size(); ++i) {
-    Json l = Json::object();
-    l["kind"] = loop_kind_name(basis.loops[i].kind);
-    if(basis.loops[i].kind == SMDF::CONE_LOOP) l["cone"] = index(basis.loops[i].cone);
-    l["rotation_over_pi"] = group.rotations[i] / CGAL_PI;
-    l["translation"] = Json::pair(group.motions[i].translation.x(), group.motions[i].translation.y());
-    loops.push_back(std::move(l));
+  const SMDF::Rosy_compatibility rc = SMDF::parallel_rosy_compatibility(group, N);
+  if(args.has("holonomy")) {
+    std::vector<char> failing(basis.loops.size(), 0);
+    for(std::size_t i : rc.failing_loops) failing[i] = 1;
+    Json loops = Json::array();
+    for(std::size_t i = 0; i < basis.loops.size(); ++i) {
+      Json l = Json::object();
+      l["kind"] = loop_kind_name(basis.loops[i].kind);
+      if(basis.loops[i].kind == SMDF::CONE_LOOP) l["cone"] = index(basis.loops[i].cone);
+      l["rotation_over_pi"] = group.rotations[i] / CGAL_PI;
+      l["translation"] = Json::pair(group.motions[i].translation.x(), group.motions[i].translation.y());
+      l["compatible"] = !failing[i];
+      loops.push_back(std::move(l));
+    }
+    out["holonomy"] = std::move(loops);
   }
-  out["holonomy"] = std::move(loops);
-  const int smallest = SMDF::smallest_parallel_rosy_order(group);
-  out["smallest_parallel_order"] = smallest;
+  Json compatible_N = Json::array();
+  for(int n = 1; n <= 24; ++n) if(SMDF::parallel_rosy_compatibility(group, n).compatible) compatible_N.push_back(n);
+  out["compatible_N"] = std::move(compatible_N);
+  out["smallest_parallel_order"] = SMDF::smallest_parallel_rosy_order(group);
   out["square_grid"] = tessellation_json(SMDF::tessellation_compatibility(group, SMDF::SQUARE_GRID));
   out["triangular_grid"] = tessellation_json(SMDF::tessellation_compatibility(group, SMDF::TRIANGULAR_GRID));
-  // without --N: the smallest order of the group (a parallel field), else the smallest order
-  // the cone curvatures allow (rotation compensation, closed surfaces)
-  auto cones_allow = [&](int n) {
-    for(const auto& c : cones) {
-      const double k = c.second / (2 * CGAL_PI) * n;
-      if(std::abs(k - std::round(k)) > 1e-6) return false;
-    }
-    return true;
-  };
-  int N = requested_N > 0 ? int(requested_N) : smallest;
-  if(N == 0)
-    for(int n = 1; n <= 24 && N == 0; ++n) if(cones_allow(n)) N = n;
-  out["N"] = N;
-  if(N == 0)
-    throw Failed_result{out, file + ": no N <= 24 for which the cone curvatures are multiples of 2 pi / N", 3};
-  const SMDF::Rosy_compatibility rc = SMDF::parallel_rosy_compatibility(group, N);
   Json compat = Json::object();
   compat["compatible"] = rc.compatible;
   compat["max_deviation"] = rc.max_deviation;
   compat["failing_loops"] = index_list(rc.failing_loops);
   out["parallel_rosy"] = std::move(compat);
+  clock.lap();
 
-  // 4. the parallel field, or the rotation-compensated one, read back on the metric
-  const auto angles = carrier->add_property_map<face_descriptor, double>("f:smdf_rosy_angle", 0.).first;
-  std::string field_failure;
-  const bool compensate = !rc.compatible && cones_allow(N) && SMDF::mesh_topology(*carrier).is_closed();
-  out["method"] = compensate ? "rotation compensation" : "parallel";
-  if(compensate) {
-    const auto va = carrier->add_property_map<vertex_descriptor, double>("v:smdf_rosy_angle", 0.).first;
-    const SMDF::Rotation_compensation_status cs =
-        on_file(file, [&] { return SMDF::rotation_compensated_field(*carrier, N, va, angles, SMDF::parameters::edge_length_map(flat)); });
-    Json c = Json::object();
-    Json periods = Json::array();
-    for(double p : cs.periods) periods.push_back(p);
-    c["periods"] = std::move(periods);
-    c["max_harmonic_residual"] = cs.max_harmonic_residual;
-    c["max_inconsistency"] = cs.max_inconsistency;
-    out["rotation_compensation"] = std::move(c);
-    if(!cs.success) field_failure = cs.message;
-  } else {
-    const SMDF::Parallel_rosy_status ps = SMDF::parallel_rosy_field(*carrier, N, angles, SMDF::parameters::edge_length_map(flat));
-    if(!rc.compatible)
-      field_failure = "no parallel " + std::to_string(N) + "-RoSy field: " + std::to_string(rc.failing_loops.size()) +
-                      " loops of the holonomy group turn by angles that are no multiple of 2 pi / " + std::to_string(N) +
-                      (cones_allow(N) ? "" : " (nor are the cone curvatures multiples of 2 pi / " + std::to_string(N) + ")");
-    else if(!ps.success) field_failure = ps.message;
+  // 5. the field, in the face frames of the metric (and per vertex for rotation compensation)
+  std::string failure;
+  std::vector<std::string> off_lattice;   // cones whose curvature is no multiple of 2 pi / N
+  for(const auto& c : cones)
+    if(!is_border(c.first, mesh) && !multiple_of(c.second, N)) off_lattice.push_back(std::to_string(index(c.first)));
+  if(!off_lattice.empty()) {
+    std::string list;
+    for(std::size_t i = 0; i < off_lattice.size() && i < 5; ++i) list += (i ? ", " : "") + off_lattice[i];
+    failure = "no " + std::to_string(N) + "-RoSy field has these cones: the curvature of " + std::to_string(off_lattice.size()) +
+              " cone(s) (vertex " + list + (off_lattice.size() > 5 ? ", ..." : "") + ") is no multiple of 2 pi / " +
+              std::to_string(N) + " (" + std::to_string(rc.failing_loops.size()) + " loops of the holonomy group fail the " +
+              std::to_string(N) + "-RoSy test)";
   }
-  const SMDF::Field_topology<Mesh> found =
-      SMDF::field_singularities(*carrier, angles, SMDF::parameters::symmetry_order(N).edge_length_map(flat));
+  const Face_angle_property angles =
+      on_input ? input_angles : carrier->add_property_map<face_descriptor, double>("f:smdf_rosy_angle", 0.).first;
+  const auto vertex_angles = carrier->add_property_map<vertex_descriptor, double>("v:smdf_rosy_angle", 0.).first;
+  const auto vertex_lengths = carrier->add_property_map<vertex_descriptor, double>("v:smdf_rosy_length", 1.).first;
+  Edge_matching_property matching = carrier->add_property_map<edge_descriptor, int>("e:smdf_rosy_matching", 0).first;
+  bool have_matching = false;
+  std::vector<double> prescribed_turning;   // trivial connection: per generator
+  if(failure.empty()) {
+    const auto np = SMDF::parameters::edge_length_map(flat);
+    if(method == ROTATION_COMPENSATION) {
+      auto compensate = [&](const std::vector<double>& turning) {
+        return on_file(file, [&] {
+          return SMDF::rotation_compensated_field(*carrier, N, vertex_angles, angles, np.generator_turning_numbers(turning));
+        });
+      };
+      SMDF::Rotation_compensation_status cs = compensate({});
+      if(!opt.turning.empty() && cs.success) {
+        // the given turning numbers; the others as chosen by default (the least compensation)
+        std::vector<double> t;
+        for(std::size_t i = 0; i < cs.periods.size(); ++i) t.push_back((cs.periods[i] + cs.holonomy[i]) / (2 * CGAL_PI));
+        for(const auto& g : opt.turning) {
+          if(g.first >= t.size())
+            throw Error("--turning: handle loop " + std::to_string(g.first) + " does not exist (there are " + std::to_string(t.size()) + ")");
+          if(!multiple_of(2 * CGAL_PI * g.second, N))
+            throw Error("--turning: the turning number of handle loop " + std::to_string(g.first) + " must be a multiple of 1/" + std::to_string(N));
+          t[g.first] = g.second;
+        }
+        for(double& x : t) x = std::round(x * N) / N;
+        cs = compensate(t);
+      }
+      Json c = Json::object();
+      Json periods = Json::array(), turning = Json::array();
+      for(std::size_t i = 0; i < cs.periods.size(); ++i) {
+        periods.push_back(cs.periods[i]);
+        turning.push_back(std::round((cs.periods[i] + cs.holonomy[i]) / (2 * CGAL_PI) * N) / N);
+      }
+      c["periods"] = std::move(periods);
+      c["handle_turning_numbers"] = std::move(turning);
+      c["max_harmonic_residual"] = cs.max_harmonic_residual;
+      c["max_inconsistency"] = cs.max_inconsistency;
+      out["rotation_compensation"] = std::move(c);
+      if(!cs.success) failure = cs.message;
+      timings["compensation_s"] = clock.lap();
+    } else if(method == TRIVIAL_CONNECTION) {
+      SMDF::Trivial_connection<Mesh> tc = on_file(file, [&] {
+        return SMDF::Trivial_connection<Mesh>(*carrier, SMDF::parameters::symmetry_order(N).edge_length_map(flat));
+      });
+      for(const auto& c : cones)
+        if(!is_border(c.first, mesh)) tc.set_singularity(c.first, std::round(c.second / (2 * CGAL_PI) * N) / N);
+      for(const auto& g : opt.turning) on_file(file, [&] { tc.set_generator_turning_number(g.first, g.second); return 0; });
+      const SMDF::Trivial_connection_status ts = tc.solve();
+      Json t = Json::object();
+      t["energy"] = ts.energy;
+      t["max_rotation"] = ts.max_rotation;
+      t["max_holonomy_error"] = ts.max_holonomy_error;
+      t["scaled_residual"] = ts.scaled_residual;
+      out["trivial_connection"] = std::move(t);
+      if(!ts.success) failure = "trivial connection solve failed: " + ts.message;
+      else {
+        tc.field_angles(angles);
+        tc.field_matching(angles, matching);
+        have_matching = true;
+        for(std::size_t g = 0; g < tc.generators().size(); ++g) prescribed_turning.push_back(tc.generator_turning_number(g));
+      }
+      timings["compensation_s"] = clock.lap();
+    } else if(method == PARALLEL) {
+      const SMDF::Parallel_rosy_status ps = SMDF::parallel_rosy_field(*carrier, N, angles, np);
+      if(!rc.compatible)
+        failure = "no parallel " + std::to_string(N) + "-RoSy field: " + std::to_string(rc.failing_loops.size()) +
+                  " loops of the holonomy group turn by angles that are no multiple of 2 pi / " + std::to_string(N) +
+                  (open ? "" : " (try --method rotation-compensation)");
+      else if(!ps.success) failure = ps.message;
+      timings["compensation_s"] = clock.lap();
+    } else {
+      Json a = Json::object();
+      a["max_boundary_deviation"] = aligned.max_boundary_deviation;
+      a["rotation_compensation"] = aligned.rotation_compensation;
+      out["boundary_aligned"] = std::move(a);
+      if(!aligned.success) failure = aligned.message;
+      timings["compensation_s"] = 0.;
+    }
+  }
+
+  // 6. editing (Lai et al. 4.2): direction and length constraints at vertices
+  if(failure.empty() && editing) {
+    SMDF::Rosy_vertex_field_editor<Mesh> editor(mesh, N, vertex_angles, SMDF::parameters::edge_length_map(flat));
+    Json e = Json::object();
+    if(args.has("edit")) {
+      const Constraint_lines c = read_constraint_file(args.value("edit"), mesh, false);
+      auto vectors = mesh.add_property_map<vertex_descriptor, K::Vector_3>("v:smdf_rosy_edit", K::Vector_3(0, 0, 0)).first;
+      for(const auto& d : c.directions) vectors[d.first] = d.second;
+      auto constraint_angles = mesh.add_property_map<vertex_descriptor, double>("v:smdf_rosy_edit_angle", 0.).first;
+      SMDF::vertex_vectors_to_angles(mesh, vectors, constraint_angles, SMDF::parameters::edge_length_map(flat));
+      std::vector<std::pair<vertex_descriptor, double>> pairs;
+      for(const auto& d : c.directions) pairs.emplace_back(d.first, constraint_angles[d.first]);
+      on_file(args.value("edit"), [&] { editor.set_direction_constraints(pairs, c.weight); return 0; });
+      e["directions"] = pairs.size();
+      e["direction_weight"] = c.weight;
+    }
+    if(args.has("length")) {
+      const Constraint_lines c = read_constraint_file(args.value("length"), mesh, true);
+      on_file(args.value("length"), [&] { editor.set_length_constraints(c.lengths, c.weight); return 0; });
+      e["lengths"] = c.lengths.size();
+      e["length_weight"] = c.weight;
+    }
+    clock.lap();
+    const SMDF::Field_edit_status es = editor.edit();
+    editor.vertex_angles(vertex_angles);
+    editor.face_angles(angles);
+    editor.vertex_lengths(vertex_lengths);
+    timings["edit_s"] = clock.lap();
+    e["max_direction_error"] = es.max_direction_error;
+    e["max_length_error"] = es.max_length_error;
+    double lo = 1e300, hi = -1e300;
+    for(vertex_descriptor v : vertices(mesh)) { lo = (std::min)(lo, vertex_lengths[v]); hi = (std::max)(hi, vertex_lengths[v]); }
+    e["length_range"] = Json::pair(lo, hi);
+    out["edit"] = std::move(e);
+    if(!es.success) failure = "editing failed: " + es.message;
+  }
+
+  // 7. the read-back with the field's matching: the trivial connection's, else the principal one
+  // on the metric (these fields turn by less than pi / N per edge relative to Levi-Civita)
+  const SMDF::Field_topology<Mesh> found = [&] {
+    if(!failure.empty()) return SMDF::Field_topology<Mesh>();
+    const auto np = SMDF::parameters::symmetry_order(N).edge_length_map(flat);
+    if(!have_matching) {
+      const double widest = SMDF::principal_matching(*carrier, angles, matching, np);
+      out["max_rotation_over_pi_over_N"] = widest / (CGAL_PI / N);
+    }
+    return SMDF::field_singularities(*carrier, angles, np.matching(matching));
+  }();
+  out["prescribed"] = [&] {
+    Json a = Json::array();
+    std::vector<std::pair<std::size_t, double>> p;
+    for(const auto& c : cones)
+      if(!is_border(c.first, mesh)) p.emplace_back(index(c.first), std::round(c.second / (2 * CGAL_PI) * N) / N);
+    std::sort(p.begin(), p.end());
+    for(const auto& x : p) {
+      if(x.second == 0) continue;
+      Json o = Json::object();
+      o["vertex"] = x.first;
+      o["index"] = x.second;
+      a.push_back(std::move(o));
+    }
+    return a;
+  }();
   out["found"] = found_list(found);
-  std::map<vertex_descriptor, double> want, got(found.singularities.begin(), found.singularities.end());
-  bool cones_on_lattice = true;
-  for(const auto& c : cones) {
-    const double k = c.second / (2 * CGAL_PI) * N;
-    cones_on_lattice = cones_on_lattice && std::abs(k - std::round(k)) < 1e-6;
-    if(std::round(k) != 0) want[c.first] = std::round(k) / N;
+  out["generator_turning_numbers"] = turning_numbers(found);
+  if(failure.empty()) {
+    std::map<vertex_descriptor, double> want, got(found.singularities.begin(), found.singularities.end());
+    for(const auto& c : cones) {
+      const double k = std::round(c.second / (2 * CGAL_PI) * N) / N;
+      if(!is_border(c.first, mesh) && k != 0) want[c.first] = k;
+    }
+    if(got != want) failure = "the field read back with its matching has other singularities than the cones";
+    else if(!prescribed_turning.empty() && found.generator_turning_numbers != prescribed_turning)
+      failure = "the field read back with its matching has other generator turning numbers than the prescribed ones";
   }
-  std::string failure = field_failure;
-  if(failure.empty() && (!cones_on_lattice || got != want))
-    failure = "the field read back on the metric has other singularities than the cones";
   out["success"] = failure.empty();
+  out["timings"] = std::move(timings);
   if(!failure.empty()) throw Failed_result{out, file + ": " + failure, 3};
 
-  // 5. the field in 3D (on the input faces only)
-  if(args.has("field-out") || args.has("svg")) {
-    if(cm.triangulation_changed)
-      throw Failed_result{out, file + ": the metric lives on an intrinsic triangulation (edge flips): --field-out and --svg "
-                                      "need it on the input faces", 3};
+  // 8. the files: vertex and face fields in 3D, the matching, the pictures
+  need_input_faces({"field-out", "face-field-out", "matching-out", "svg", "hatching-svg"});
+  if(args.has("field-out")) {
+    auto vv = mesh.add_property_map<vertex_descriptor, K::Vector_3>("v:smdf_rosy_vector").first;
+    SMDF::vertex_field_to_vectors(mesh, vertex_angles, vv, SMDF::parameters::edge_length_map(flat));
+    std::vector<K::Vector_3> v;
+    for(vertex_descriptor x : vertices(mesh)) v.push_back(vv[x] * vertex_lengths[x]);
+    write_vectors(args.value("field-out"), v);
+  }
+  if(args.has("face-field-out") || args.has("svg") || args.has("hatching-svg")) {
     const Face_vector_property vectors = mesh.add_property_map<face_descriptor, K::Vector_3>("f:smdf_rosy_vector").first;
     SMDF::field_angles_to_vectors(mesh, angles, vectors, SMDF::parameters::edge_length_map(flat));
-    write_field_files(args, mesh, vectors, N, found, svg);
+    if(args.has("face-field-out")) {
+      std::vector<K::Vector_3> v;
+      for(face_descriptor f : faces(mesh)) v.push_back(vectors[f]);
+      write_vectors(args.value("face-field-out"), v);
+    }
+    if(args.has("svg")) {
+      Args picture = args;   // the picture only: --field-out is the vertex field, written above
+      picture.options.erase("field-out");
+      write_field_files(picture, mesh, vectors, N, found, svg);
+    }
+    if(args.has("hatching-svg")) {
+      SMDF::Svg_options view = svg;
+      if(!args.has("view")) view.up_axis = default_up_axis(mesh);
+      view.edge_stroke_width = 0;
+      view.face_color = "#f4f4f4";
+      view.glyph_stroke_width = 0.7;
+      const auto lines = on_file(file, [&] { return SMDF::trace_streamlines(mesh, vectors, N); });
+      std::ostringstream os;
+      SMDF::write_streamlines_svg(os, mesh, lines, view);
+      write_lines_file(args.value("hatching-svg"), os.str());
+      double total = 0;
+      for(const auto& l : lines) total += l.length;
+      Json hj = Json::object();
+      hj["strokes"] = lines.size();
+      hj["total_length"] = total;
+      out["hatching"] = std::move(hj);
+    }
   }
+  if(args.has("matching-out")) write_matching(args.value("matching-out"), mesh, matching);
   return out;
 }
 
 Command rosy_command()
 {
   return {"rosy", {"MESH"},
-          {{"cones", "LIST", "cone curvatures 'v:K,...' of interior vertices, K in radians (pi/2, -pi, 2*pi/3, ...)"},
+          {{"cones", "LIST", "cone curvatures 'v:K,...', K in radians (pi/2, -pi, 2*pi/3, ...); at boundary vertices the boundary's turning angle"},
            {"cone-indices", "LIST", "the same as indices 'v:k,...', K = 2 pi k (k below 1)"},
-           {"N", "n", "symmetry order of the field (default: the smallest the holonomy group allows, up to 24)"},
-           {"field-out", "FILE", "write one unit direction 'x y z' per face (input triangulation only)"},
+           {"N", "n", "symmetry order (default: the smallest N for which every cone curvature is a multiple of 2 pi / N)"},
+           {"method", "M", "rotation-compensation (default on closed meshes), parallel (default on open ones) or trivial-connection"},
+           {"turning", "LIST", "turning numbers 'g:t,...' (multiples of 1/N): of the handle loops (rotation-compensation) or generators (trivial-connection)"},
+           {"boundary", "B", "open meshes: free (default), parallel or orthogonal (the field follows the boundary)"},
+           {"edit", "FILE", "direction constraints, lines 'vertex x y z [weight]' (no weight: hard)"},
+           {"length", "FILE", "length constraints, lines 'vertex length [weight]'"},
+           {"field-out", "FILE", "write one 'x y z' per vertex (rotation compensation; scaled by the edited lengths)"},
+           {"face-field-out", "FILE", "write one unit direction 'x y z' per face"},
+           {"matching-out", "FILE", "write 'i j k' per interior edge (period jump of the field)"},
+           {"holonomy", "", "print the basis-loop table: kind, cone, rotation, translation, compatible"},
            {"svg", "FILE", "write an SVG picture of the field and its singularities"},
-           {"view", "A,E[,UP]", "view of --svg: azimuth,elevation in degrees, up axis x|y|z"},
-           {"width", "PX", "width of the --svg picture in pixels (default 800)"}},
-          "metric-driven N-RoSy field design: cone metric, holonomy group, parallel field",
+           {"hatching-svg", "FILE", "write a pen-and-ink SVG: streamlines of the field traced on the surface"},
+           {"view", "A,E[,UP]", "view of the pictures: azimuth,elevation in degrees, up axis x|y|z"},
+           {"width", "PX", "width of the pictures in pixels (default 800)"}},
+          "metric-driven N-RoSy field design: cone metric, holonomy group, field, editing",
           "Lai et al. 2010: computes the flat cone metric with the given cone curvatures (Ricci flow,\n"
-          "as cone-metric; they must sum to 2 pi chi), a basis of the fundamental group of the mesh\n"
-          "minus its cones (handle loops, boundary loops, a loop around every cone but one, all\n"
-          "through one base face), the generalised holonomy of every loop, and the compatibility\n"
-          "tests: the smallest N for which a parallel N-RoSy field exists (Theorem 3.2; on a sphere\n"
-          "the cone curvatures must be multiples of 2 pi / N), and whether a square or triangular\n"
-          "grid fits (Theorem 3.5). Then it builds the parallel N-RoSy field and reads it back on the\n"
-          "metric: its singularities must be exactly the cones, with index K / 2 pi. When the group\n"
-          "allows no parallel field but the cone curvatures are multiples of 2 pi / N (closed\n"
-          "surfaces of any genus), the field is made by rotation compensation (Lai et al. 4.1.3.1:\n"
-          "a harmonic 1-form cancels the holonomy of the handle loops); without --N, N is the\n"
-          "smallest order of the group, else the smallest the cone curvatures allow.\n"
-          "Prints {metric: {converged, iterations, max_curvature_error, triangulation_changed},\n"
-          "holonomy: [{kind, cone, rotation_over_pi, translation}], smallest_parallel_order (0: none\n"
-          "up to 24), square_grid and triangular_grid: {compatible, spacing, orientation,\n"
-          "max_rotation_deviation, max_translation_deviation, failing_loops}, N, parallel_rosy:\n"
-          "{compatible, max_deviation, failing_loops}, method (parallel | rotation compensation),\n"
-          "rotation_compensation: {periods, max_harmonic_residual, max_inconsistency},\n"
-          "found: [{vertex, index}], success}.\n"
-          "Exit code 3 (JSON printed) when the metric does not converge, no parallel field exists for\n"
-          "N, or the read-back differs from the cones. Field vectors are mapped to 3D by the linear\n"
-          "map from each metric triangle to the embedded one.\n",
+          "as cone-metric; with the boundary's turning angles they must sum to 2 pi chi), a basis of\n"
+          "the fundamental group of the mesh minus its cones (handle loops, boundary loops, a loop\n"
+          "around every cone but one, all through one base face), the generalised holonomy of every\n"
+          "loop and the compatibility tests (Theorem 3.2: the N for which a parallel N-RoSy field\n"
+          "exists; Theorem 3.5: square and triangular grids), then the field:\n"
+          "  rotation-compensation  closed meshes (default): a harmonic 1-form cancels the holonomy of\n"
+          "                         the handle loops (4.1.3.1), a direction per vertex propagated from\n"
+          "                         one vertex; --turning sets the handle loops' turning numbers\n"
+          "  parallel               parallel transport by the metric; needs a compatible group (open\n"
+          "                         meshes: the default)\n"
+          "  trivial-connection     Crane et al. on the same metric, with index K / 2 pi at the cones\n"
+          "Open meshes: --boundary free gives the boundary vertices not named in --cones the input's\n"
+          "turning angle, changed so that each boundary loop turns by a multiple of 2 pi / N and\n"
+          "Gauss-Bonnet holds; --boundary parallel|orthogonal rounds each boundary vertex's turning\n"
+          "angle to a multiple of 2 pi / N (pi / N for odd N) and builds the field on the double cover\n"
+          "(4.3), parallel or orthogonal to every boundary edge.\n"
+          "--edit and --length edit the vertex field (4.2): harmonic interpolation of the rotation\n"
+          "and the log-length with the cotan Laplacian; all lines of a file hard, or soft with one\n"
+          "weight lambda. Directions are projected on the vertex tangent plane (mean face normal).\n"
+          "Prints {N, N_from, method, boundary, metric: {converged, iterations, max_curvature_error,\n"
+          "triangulation_changed}, boundary_turning_over_pi (per loop), holonomy (with --holonomy):\n"
+          "[{kind, cone, rotation_over_pi, translation, compatible}], compatible_N,\n"
+          "smallest_parallel_order, square_grid and triangular_grid: {compatible, spacing,\n"
+          "orientation, max_rotation_deviation, max_translation_deviation, failing_loops},\n"
+          "parallel_rosy: {compatible, max_deviation, failing_loops}, rotation_compensation:\n"
+          "{periods, handle_turning_numbers, max_harmonic_residual, max_inconsistency} or\n"
+          "trivial_connection: {energy, max_rotation, ...} or boundary_aligned, edit: {directions,\n"
+          "lengths, max_direction_error, max_length_error, length_range}, prescribed and found:\n"
+          "[{vertex, index}] (found: read back from the face field with its matching),\n"
+          "generator_turning_numbers, max_rotation_over_pi_over_N, success, timings: {metric_s,\n"
+          "compensation_s, edit_s}, hatching: {strokes, total_length}}.\n"
+          "The matching (--matching-out, 'i j k' per interior edge as for connection) is the\n"
+          "trivial connection's, else the principal one on the metric: these fields turn by less\n"
+          "than pi / N per edge relative to the metric's transport. Exit code 3 (JSON printed)\n"
+          "when the metric does not converge, the cones are no multiples of 2 pi / N, no parallel\n"
+          "field exists, an edit fails, or the read-back differs from the cones. Face vectors are\n"
+          "mapped to 3D by the linear map from each metric triangle to the embedded one; the files\n"
+          "and pictures need the metric on the input triangulation (no edge flips).\n",
           run_rosy};
 }
 

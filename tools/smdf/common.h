@@ -151,6 +151,9 @@ Json found_list(const SMDF::Field_topology<Mesh>& topo);
 // The generator turning numbers of `topo` as an array.
 Json turning_numbers(const SMDF::Field_topology<Mesh>& topo);
 
+// The axis drawn pointing up in a picture when --view does not say (0 x, 1 y, 2 z).
+int default_up_axis(const Mesh& mesh);
+
 // The picture options of --svg: --view and --width (usage errors without --svg).
 SMDF::Svg_options svg_options(const Args& args);
 

@@ -132,6 +132,46 @@ Field_topology<TriangleMesh> field_singularities(const TriangleMesh& tm, const F
 }
 
 /// \ingroup PkgSurfaceMeshDirectionFieldsTrivialConnections
+/// The principal matching of a face field: for every interior edge \f$e\f$, the period jump
+/// \f$k_e\f$ (in the convention of the `matching` parameter of field_singularities(), for
+/// `halfedge(e)`) that makes the field's rotation across the edge relative to Levi-Civita the
+/// smallest one modulo \f$2\pi/N\f$; 0 on border edges. field_singularities() with this
+/// matching reads what it reads without one. This is the matching to hand on with a field whose
+/// rotation relative to Levi-Civita stays below \f$\pi/N\f$ on every edge (parallel and
+/// rotation-compensated fields, whose read-back then shows only their cones). Returns the
+/// largest \f$|\Delta_e|\f$ over the interior edges, to compare with \f$\pi/N\f$. Named
+/// parameters: `symmetry_order`, `edge_length_map` or `intrinsic_mesh`, and the index maps, as
+/// for field_singularities().
+template <typename TriangleMesh, typename FaceAngleMap, typename EdgeMatchingMap,
+          typename NamedParameters = parameters::Default_named_parameters>
+double principal_matching(const TriangleMesh& tm, const FaceAngleMap& angles, EdgeMatchingMap matching,
+                          const NamedParameters& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const int N = choose_parameter(get_parameter(np, internal_np::symmetry_order), 1);
+  if(N < 1)
+    throw Input_error(Input_error::INVALID_ARGUMENT, "symmetry order N must be at least 1");
+  const Intrinsic_mesh<TriangleMesh> im = internal::get_intrinsic_mesh(tm, np);
+  const internal::Mesh_arrays<TriangleMesh>& m = im.arrays();
+  const double period = 2 * CGAL_PI / N;
+  double largest = 0;
+  for(std::size_t e = 0; e < m.number_of_edges(); ++e) {
+    const int h = int(2 * e);
+    if(m.face[std::size_t(h)] < 0 || m.face[std::size_t(h ^ 1)] < 0) { put(matching, m.edges[e], 0); continue; }
+    const double bl = double(get(angles, m.faces[std::size_t(m.face[std::size_t(h)])]));
+    const double br = double(get(angles, m.faces[std::size_t(m.face[std::size_t(h ^ 1)])]));
+    if(!std::isfinite(bl) || !std::isfinite(br))
+      throw Input_error(Input_error::INVALID_ARGUMENT, "field angle of a face next to edge " + std::to_string(e) + " is not finite");
+    const double raw = bl - br - internal::transport_increment(m, h);
+    const double d = std::remainder(raw, period);
+    largest = (std::max)(largest, std::abs(d));
+    put(matching, m.edges[e], int(std::lround((d - internal::wrap_angle(raw)) / period)));
+  }
+  return largest;
+}
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsTrivialConnections
 /// Converts 3D tangent vectors (one per face) to angles in the face frames: the angle of the
 /// projection of the vector on the face plane, counterclockwise from `halfedge(f)`, in
 /// \f$[0, 2\pi)\f$. Named parameter `vertex_point_map` (default: the mesh's points).

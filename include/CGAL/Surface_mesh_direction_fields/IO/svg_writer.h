@@ -6,6 +6,7 @@
 
 #include <CGAL/Surface_mesh_direction_fields/errors.h>
 #include <CGAL/Surface_mesh_direction_fields/parameters.h>
+#include <CGAL/Surface_mesh_direction_fields/streamlines.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -14,6 +15,7 @@
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -57,6 +59,13 @@ namespace internal {
 // Tag standing for "no field" in write_field_svg().
 struct No_face_field {};
 
+// Instead of a field: line segments (x0 y0 z0 x1 y1 z1) per face index, drawn with the face so
+// that the faces in front hide them (write_streamlines_svg()).
+struct Svg_face_strokes
+{
+  std::vector<std::vector<std::array<double, 6>>> segments;
+};
+
 template <typename FaceVectorMap, typename Face>
 bool svg_field_vector(const FaceVectorMap& map, const Face& f, double v[3])
 {
@@ -74,6 +83,12 @@ bool svg_field_vector(const No_face_field&, const Face&, double*)
 }
 
 // A pixel coordinate with one decimal, locale-independent, without a trailing ".0".
+template <typename Face>
+bool svg_field_vector(const Svg_face_strokes&, const Face&, double*)
+{
+  return false;
+}
+
 inline void svg_write_coordinate(std::string& out, double x)
 {
   long long t = std::llround(x * 10);
@@ -350,7 +365,8 @@ void write_field_svg(std::ostream& os, const TriangleMesh& tm, const FaceVectorM
   const std::size_t stride = (o.max_glyphs == 0 || items.size() <= o.max_glyphs)
                                ? 1 : (items.size() + o.max_glyphs - 1) / o.max_glyphs;
   std::vector<char> has_glyph(num_faces(tm), 0);
-  if(!std::is_same<FaceVectorMap, internal::No_face_field>::value) {
+  if(!std::is_same<FaceVectorMap, internal::No_face_field>::value &&
+     !std::is_same<FaceVectorMap, internal::Svg_face_strokes>::value) {
     std::size_t rank = 0;
     for(face_descriptor f : faces(tm)) {
       const std::size_t fi = std::size_t(get(fim, f));
@@ -452,6 +468,12 @@ void write_field_svg(std::ostream& os, const TriangleMesh& tm, const FaceVectorM
     }
     out += "\"/>\n";
 
+    if constexpr(std::is_same<FaceVectorMap, internal::Svg_face_strokes>::value) {
+      for(const auto& g : field.segments[std::size_t(get(fim, it.f))]) {
+        out += "<line x1=\""; num(sx(&g[0])); out += "\" y1=\""; num(sy(&g[0]));
+        out += "\" x2=\""; num(sx(&g[3])); out += "\" y2=\""; num(sy(&g[3])); out += "\"/>\n";
+      }
+    }
     double v[3];
     if(has_glyph[std::size_t(get(fim, it.f))] && glyph_half > 0 && internal::svg_field_vector(field, it.f, v)) {
       const double e1[3] = {p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]};
@@ -521,6 +543,33 @@ void write_field_svg(std::ostream& os, const TriangleMesh& tm, int N,
                      const NamedParameters& np = parameters::default_values())
 {
   write_field_svg(os, tm, internal::No_face_field(), N, singularities, options, np);
+}
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsIO
+/// Writes a pen-and-ink SVG picture of streamlines on a mesh (Lai et al. 2010, Figs. 14 and
+/// 15: hatching along a cross field): the mesh as write_field_svg() draws it (culled, painted
+/// back to front, so that nearer parts of the surface hide the strokes behind them), each
+/// streamline drawn as strokes of `options.glyph_color` and width
+/// `options.glyph_stroke_width`, with the face it lies in. For a drawing without the mesh's
+/// lines set `options.edge_stroke_width` to 0 and a light `options.face_color`.
+/// `streamlines` are those of trace_streamlines() on the same mesh. Throws as
+/// write_field_svg().
+template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
+void write_streamlines_svg(std::ostream& os, const TriangleMesh& tm, const std::vector<Streamline<TriangleMesh>>& streamlines,
+                           const Svg_options& options = Svg_options(), const NamedParameters& np = parameters::default_values())
+{
+  auto fim = CGAL::get_initialized_face_index_map(tm);
+  internal::Svg_face_strokes strokes;
+  strokes.segments.resize(num_faces(tm));
+  for(const auto& s : streamlines)
+    for(std::size_t i = 0; i + 1 < s.points.size() && i < s.faces.size(); ++i) {
+      const auto& a = s.points[i];
+      const auto& b = s.points[i + 1];
+      strokes.segments[std::size_t(get(fim, s.faces[i]))].push_back(std::array<double, 6>{{a[0], a[1], a[2], b[0], b[1], b[2]}});
+    }
+  // (N = 2: strokes are lines, without the arrow heads of N = 1)
+  write_field_svg(os, tm, strokes, 2, std::vector<std::pair<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, double>>(),
+                  options, np);
 }
 
 } // namespace Surface_mesh_direction_fields
