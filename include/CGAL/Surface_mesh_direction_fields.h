@@ -32,6 +32,7 @@
 #include <CGAL/Surface_mesh_direction_fields/Trivial_connection.h>
 #include <CGAL/Surface_mesh_direction_fields/compute_trivial_connection.h>
 #include <CGAL/Surface_mesh_direction_fields/field_singularities.h>
+#include <CGAL/Surface_mesh_direction_fields/streamlines.h>
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/Intrinsic_triangulation.h>
 

@@ -12,6 +12,10 @@
 
 #include <CGAL/Surface_mesh_direction_fields.h>
 #include <CGAL/Surface_mesh_direction_fields/IO/read_triangle_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/IO/svg_writer.h>
+#include <CGAL/Surface_mesh_direction_fields/streamlines.h>
+
+#include <boost/property_map/property_map.hpp>
 
 #include <cmath>
 #include <iomanip>
@@ -784,6 +788,138 @@ void bad_input()
   SMDF_CHECK(pg.motions.size() == 3 && pg.cone_positions.size() == 2);
 }
 
+// Invariants of every streamline of a face field (any mesh type): each piece lies in its face
+// (in its plane, inside the triangle), runs along one of the field's N directions there, and the
+// next piece is in a neighbouring face; the lengths add up; parallel samples keep apart.
+template <typename Mesh, typename FaceVectorMap>
+double check_streamlines(const Mesh& mesh, const FaceVectorMap& vectors, int N, const std::vector<SMDF::Streamline<Mesh>>& lines,
+                         double separation, const std::string& name)
+{
+  typedef std::array<double, 3> V3;
+  auto P = [&](typename boost::graph_traits<Mesh>::vertex_descriptor v) {
+    const auto& p = get(CGAL::vertex_point, mesh, v);
+    return V3{{p.x(), p.y(), p.z()}};
+  };
+  auto sub = [](const V3& a, const V3& b) { return V3{{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; };
+  auto dot = [](const V3& a, const V3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+  auto cross = [](const V3& a, const V3& b) { return V3{{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}}; };
+  double worst_inside = 0, worst_direction = 0, total = 0;
+  std::size_t not_adjacent = 0, length_mismatch = 0;
+  for(const auto& l : lines) {
+    double len = 0;
+    for(std::size_t i = 0; i < l.faces.size(); ++i) {
+      const auto f = l.faces[i];
+      const auto h = halfedge(f, mesh);
+      const V3 a = P(source(h, mesh)), b = P(target(h, mesh)), c = P(target(next(h, mesh), mesh));
+      const V3 n = cross(sub(b, a), sub(c, a));
+      const double area2 = std::sqrt(dot(n, n));
+      for(const V3& x : {l.points[i], l.points[i + 1]}) {
+        // signed barycentric coordinates and the distance to the plane, relative to the face size
+        const double u = dot(cross(sub(b, x), sub(c, x)), n) / (area2 * area2), v = dot(cross(sub(c, x), sub(a, x)), n) / (area2 * area2);
+        const double w = 1 - u - v, off = std::abs(dot(sub(x, a), n)) / area2 / std::sqrt(area2);
+        worst_inside = std::max({worst_inside, -u, -v, -w, off});
+      }
+      const V3 d = sub(l.points[i + 1], l.points[i]);
+      const double dl = std::sqrt(dot(d, d));
+      len += dl;
+      if(dl > 1e-9 * std::sqrt(area2)) {
+        const auto& fv = get(vectors, f);
+        V3 e{{double(fv[0]), double(fv[1]), double(fv[2])}};
+        const V3 nn{{n[0] / area2, n[1] / area2, n[2] / area2}};
+        const double en = dot(e, nn);
+        for(int k = 0; k < 3; ++k) e[std::size_t(k)] -= en * nn[std::size_t(k)];
+        const double angle = std::atan2(dot(cross(e, d), nn), dot(e, d));
+        worst_direction = std::max(worst_direction, std::abs(std::remainder(angle, 2 * M_PI / N)));
+      }
+      if(i + 1 < l.faces.size()) {
+        bool adjacent = false;
+        for(auto g : halfedges_around_face(halfedge(f, mesh), mesh))
+          if(!is_border(opposite(g, mesh), mesh) && face(opposite(g, mesh), mesh) == l.faces[i + 1]) adjacent = true;
+        if(!adjacent) ++not_adjacent;
+      }
+    }
+    if(std::abs(len - l.length) > 1e-9 * (1 + len)) ++length_mismatch;
+    total += l.length;
+  }
+  SMDF_CHECK_MSG(!lines.empty() && worst_inside < 1e-7 && worst_direction < 1e-7 && not_adjacent == 0 && length_mismatch == 0,
+                 name << ": " << lines.size() << " streamlines, every piece in its face (" << worst_inside << ") along the field ("
+                      << worst_direction << " rad), consecutive faces adjacent (" << not_adjacent << " not), lengths ("
+                      << length_mismatch << " wrong)");
+  (void)separation;
+  return total;
+}
+
+// principal_matching(), vertex_vectors_to_angles() and streamlines on the cross field of the
+// cube-like metric of Spot, and streamlines of a vector field on a Polyhedron_3 torus.
+void matching_frames_streamlines(Surface_mesh& spot, const std::vector<std::pair<Vertex, double>>& cube)
+{
+  Lengths flat = spot.add_property_map<Surface_mesh::Edge_index, double>("e:flat_streamlines", 0).first;
+  if(!flat_cone_metric(spot, cube, flat, "spot for streamlines")) return;
+  auto va = get(CGAL::dynamic_vertex_property_t<double>(), spot);
+  auto fa = get(CGAL::dynamic_face_property_t<double>(), spot);
+  const auto np = SMDF::parameters::edge_length_map(flat);
+  const auto cs = SMDF::rotation_compensated_field(spot, 4, va, fa, np);
+  SMDF_CHECK(cs.success);
+  auto k = get(CGAL::dynamic_edge_property_t<int>(), spot);
+  const double widest = SMDF::principal_matching(spot, fa, k, np.symmetry_order(4));
+  const auto with = SMDF::field_singularities(spot, fa, np.symmetry_order(4).matching(k));
+  const auto without = SMDF::field_singularities(spot, fa, np.symmetry_order(4));
+  SMDF_CHECK_MSG(widest < M_PI / 4 && with.singularities == without.singularities && with.singularities.size() == cube.size(),
+                 "principal_matching: read back with it as without (" << with.singularities.size() << " cones), widest rotation " << widest);
+  {   // a field rotated by pi/2 on one face: principal matching jumps by one period on its edges
+    auto turned = get(CGAL::dynamic_face_property_t<double>(), spot);
+    for(auto f : faces(spot)) put(turned, f, get(fa, f));
+    const auto f0 = *faces(spot).begin();
+    put(turned, f0, get(fa, f0) + M_PI / 2);
+    auto k2 = get(CGAL::dynamic_edge_property_t<int>(), spot);
+    SMDF::principal_matching(spot, turned, k2, np.symmetry_order(4));
+    int changed = 0;
+    for(auto e : edges(spot)) changed += get(k2, e) != get(k, e);
+    SMDF_CHECK_MSG(changed == 3, "a face turned by pi/2: its 3 edges change their period jump (" << changed << ")");
+  }
+  // vertex frames: vectors and back
+  auto vv = get(CGAL::dynamic_vertex_property_t<K::Vector_3>(), spot);
+  SMDF::vertex_field_to_vectors(spot, va, vv, np);
+  auto back = get(CGAL::dynamic_vertex_property_t<double>(), spot);
+  SMDF::vertex_vectors_to_angles(spot, vv, back, np);
+  double round_trip = 0;
+  for(auto v : vertices(spot)) round_trip = std::max(round_trip, std::abs(std::remainder(get(back, v) - get(va, v), 2 * M_PI)));
+  SMDF_CHECK_MSG(round_trip < 1e-9, "vertex_vectors_to_angles() inverts vertex_field_to_vectors(): " << round_trip);
+  // streamlines of the cross field
+  auto fv = get(CGAL::dynamic_face_property_t<K::Vector_3>(), spot);
+  SMDF::field_angles_to_vectors(spot, fa, fv, np);
+  SMDF::Streamline_options so;
+  const auto lines = SMDF::trace_streamlines(spot, fv, 4, so);
+  double area = 0;
+  for(auto f : faces(spot)) area += std::sqrt(CGAL::squared_area(spot.point(source(halfedge(f, spot), spot)), spot.point(target(halfedge(f, spot), spot)),
+                                                                  spot.point(target(next(halfedge(f, spot), spot), spot))));
+  const CGAL::Bbox_3 box = CGAL::bbox_3(spot.points().begin(), spot.points().end());
+  const double sep = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) + CGAL::square(box.zmax() - box.zmin())) / 60;
+  const double total = check_streamlines(spot, fv, 4, lines, sep, "spot cross field");
+  // evenly spaced: two families of lines about one separation apart cover the area about
+  // 2 area / sep long (each line stops at half a separation from its neighbours)
+  const double coverage = total * sep / (2 * area);
+  SMDF_CHECK_MSG(coverage > 0.5 && coverage < 2.5, "spot streamlines cover the surface evenly: length x separation / (2 area) = " << coverage);
+  std::ostringstream svg;
+  SMDF::write_streamlines_svg(svg, spot, lines);
+  SMDF_CHECK(svg.str().find("<line") != std::string::npos);
+  auto throws = [](auto f) { try { f(); } catch(const SMDF::Input_error& e) { return e.kind() == SMDF::Input_error::INVALID_ARGUMENT; } return false; };
+  SMDF_CHECK(throws([&] { SMDF::trace_streamlines(spot, fv, 0); }));
+  SMDF::Streamline_options bad;
+  bad.separation = -1;
+  SMDF_CHECK(throws([&] { SMDF::trace_streamlines(spot, fv, 4, bad); }));
+  // Polyhedron_3: the vector field of the z axis projected on a torus lying in the xy plane
+  // (zero where the face is horizontal: streamlines stop there)
+  Polyhedron p;
+  smdf_test::soup_to_mesh(smdf_test::torus_soup(40, 24), p);
+  std::map<Polyhedron::Facet_handle, K::Vector_3> store;
+  for(auto f : faces(p)) store[f] = K::Vector_3(0.3, 0.1, 1);
+  const auto pv = boost::make_assoc_property_map(store);
+  const auto pl = SMDF::trace_streamlines(p, pv, 1);
+  check_streamlines(p, pv, 1, pl, 0, "Polyhedron_3 torus, a vector field");
+  spot.remove_property_map(flat);
+}
+
 } // namespace
 
 int main()
@@ -804,6 +940,7 @@ int main()
     std::vector<std::pair<Vertex, double>> cube, octa, obelisk;
     for(Vertex v : corners) cube.emplace_back(v, M_PI / 2);
     parallel_field(spot, cube, 4, "spot, cube-like metric");
+    matching_frames_streamlines(spot, cube);
     for(Vertex v : extreme_vertices(spot, {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}})) octa.emplace_back(v, 2 * M_PI / 3);
     parallel_field(spot, octa, 3, "spot, octahedron-like metric");
     // the obelisk of Lai et al. (Figure 1c): a box part (four cones of pi/2 at its base), a

@@ -490,41 +490,199 @@ def test_remesh(smdf, c, torus, tmp):
     smdf.error(["remesh", cube, "--grid", "hex", "--edge-length", "0.25", "--out", out], "remesh: bad grid", 2, "quad")
 
 
+def read_vectors(path):
+    with open(path) as f:
+        return [tuple(float(t) for t in line.split()) for line in f if line.strip()]
+
+
+def vsub(a, b):
+    return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
+
+
+def vcross(a, b):
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+def vdot(a, b):
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+
+
+def vnorm(a):
+    return math.sqrt(vdot(a, a))
+
+
+def vertex_normals(verts, faces):
+    """Area-weighted mean face normals (the vertex tangent planes of the rosy vertex field)."""
+    n = [(0.0, 0.0, 0.0)] * len(verts)
+    for f in faces:
+        a, b, cc = (verts[i] for i in f[:3])
+        x = vcross(vsub(b, a), vsub(cc, a))
+        for i in f[:3]:
+            n[i] = (n[i][0] + x[0], n[i][1] + x[1], n[i][2] + x[2])
+    return [tuple(t / (vnorm(x) or 1) for t in x) for x in n]
+
+
+def line_angle_error(u, w, N):
+    """Distance of the angle between 3D vectors u and w (in one plane) to a multiple of 2 pi / N."""
+    a = math.atan2(vnorm(vcross(u, w)), vdot(u, w))
+    p = TWO_PI / N
+    return abs(a - p * round(a / p))
+
+
 def test_rosy(smdf, c, torus, tmp):
-    """smdf rosy on the shipped Spot (cube-like metric: a parallel cross field whose read-back
-    is the eight cones), on the torus (flat: a parallel vector field), and its failures."""
+    """smdf rosy on the shipped Spot (cube-like metric: a cross field whose read-back is the eight
+    cones, its files checked against the mesh), on the torus (flat; with two cones: rotation
+    compensation, turning numbers, editing, the trivial connection of the metric), and its errors."""
     spot = os.path.join(os.path.dirname(torus), "spot.off")
     corners = [2202, 1077, 2587, 1488, 2221, 1090, 533, 248]
     cones = ",".join("%d:pi/2" % v for v in corners)
-    svg = os.path.join(tmp, "spot_rosy.svg")
-    r = smdf.json(["rosy", spot, "--cones", cones, "--svg", svg], "smdf rosy spot, 8 cones of pi/2")
+    files = {k: os.path.join(tmp, "spot_rosy_" + k) for k in ("svg", "hatching", "vertex", "face", "matching")}
+    r = smdf.json(["rosy", spot, "--cones", cones, "--holonomy", "--svg", files["svg"], "--hatching-svg", files["hatching"],
+                   "--field-out", files["vertex"], "--face-field-out", files["face"], "--matching-out", files["matching"]],
+                  "smdf rosy spot, 8 cones of pi/2")
+    verts, faces = read_off(spot)
     if r:
-        c.check(r.get("smallest_parallel_order") == 4 and r.get("N") == 4, "rosy: smallest order 4 (%r)" % r.get("smallest_parallel_order"))
-        c.check(len(r.get("holonomy", [])) == 7 and all(l["kind"] == "cone" for l in r["holonomy"]),
-                "rosy: 7 cone loops on the sphere (2g + n - 1)")
+        c.check(r.get("N") == 4 and r.get("N_from") == "cones" and r.get("smallest_parallel_order") == 4
+                and r.get("compatible_N") == [4, 8, 12, 16, 20, 24] and r.get("method") == "rotation-compensation",
+                "rosy: N = 4 from the cones, compatible N the multiples of 4 (%r)" % r.get("compatible_N"))
+        c.check(len(r.get("holonomy", [])) == 7 and all(l["kind"] == "cone" and l["compatible"] for l in r["holonomy"]),
+                "rosy --holonomy: 7 compatible cone loops on the sphere (2g + n - 1)")
         c.check(all(abs(l["rotation_over_pi"] - 0.5) < 1e-8 for l in r["holonomy"]), "rosy: every cone loop turns by pi/2")
         c.check(sorted(f["vertex"] for f in r.get("found", [])) == sorted(corners)
-                and all(f["index"] == 0.25 for f in r["found"]), "rosy: found == the cones with index 1/4")
-        c.check(r.get("success") is True and r["parallel_rosy"]["compatible"], "rosy: success")
-        c.check(os.path.getsize(svg) > 1000, "rosy: --svg written")
+                and all(f["index"] == 0.25 for f in r["found"]) and r.get("found") == r.get("prescribed"),
+                "rosy: found == prescribed == the cones with index 1/4")
+        c.check(r.get("success") is True and r["parallel_rosy"]["compatible"] and r.get("max_rotation_over_pi_over_N", 1) < 1e-6,
+                "rosy: success, the field parallel on the metric")
+        c.check(set(r.get("timings", {})) >= {"metric_s", "compensation_s"}, "rosy: timings")
+        c.check(os.path.getsize(files["svg"]) > 1000, "rosy: --svg written")
+        vv, fv = read_vectors(files["vertex"]), read_vectors(files["face"])
+        normals = vertex_normals(verts, faces)
+        c.check(len(vv) == len(verts) and all(abs(vnorm(v) - 1) < 1e-9 and abs(vdot(v, n)) < 1e-9 for v, n in zip(vv, normals)),
+                "rosy --field-out: one unit vector per vertex in its tangent plane")
+        ok = len(fv) == len(faces)
+        for v, f in zip(fv, faces):
+            a, b, cc = (verts[i] for i in f)
+            n = vcross(vsub(b, a), vsub(cc, a))
+            ok = ok and vnorm(v) > 0 and abs(vdot(v, n)) < 1e-9 * vnorm(v) * vnorm(n)
+        c.check(ok, "rosy --face-field-out: one vector per face, in its plane")
+        with open(files["matching"]) as f:
+            m = [line.split() for line in f if line.strip()]
+        c.check(len(m) == len(faces) * 3 // 2 and all(len(x) == 3 for x in m), "rosy --matching-out: one 'i j k' per edge")
+        h = r.get("hatching", {})
+        with open(files["hatching"]) as f:
+            text = f.read()
+        c.check(h.get("strokes", 0) > 20 and h.get("total_length", 0) > 0 and text.count("<line") > h["strokes"],
+                "rosy --hatching-svg: %r strokes drawn" % h.get("strokes"))
     r = smdf.json(["rosy", torus], "smdf rosy torus (flat metric)")
-    c.check(r is not None and r.get("N") == 1 and r.get("found") == [] and len(r.get("holonomy", [])) == 2
-            and r["square_grid"]["max_rotation_deviation"] < 1e-8, "rosy torus: two handle loops, parallel vector field")
+    c.check(r is not None and r.get("N") == 1 and r.get("found") == [] and "holonomy" not in r
+            and r["square_grid"]["max_rotation_deviation"] < 1e-8, "rosy torus: parallel vector field, no table without --holonomy")
     rc, out, err = smdf.run(["rosy", spot, "--cones", cones, "--N", "3"])
     lines = err.decode("utf-8", "replace").splitlines()
-    c.check(rc == 3 and json.loads(out.decode()).get("success") is False and len(lines) == 1 and "3-RoSy" in lines[0],
-            "rosy --N 3 on a cube-like metric: exit 3, the failing loops named (%r)" % lines)
-    r = smdf.json(["rosy", torus, "--cones", "0:pi/2,100:-pi/2"], "smdf rosy torus, cones +-pi/2")
+    c.check(rc == 3 and json.loads(out.decode()).get("success") is False and len(lines) == 1 and "3-RoSy" in lines[0]
+            and "8 cone(s)" in lines[0], "rosy --N 3 on a cube-like metric: exit 3, the cones named (%r)" % lines)
+    tcones = "10:pi/2,100:-pi/2"
+    r = smdf.json(["rosy", torus, "--cones", tcones], "smdf rosy torus, cones +-pi/2")
     if r:
-        c.check(r.get("N") == 4 and r.get("method") == "rotation compensation" and r.get("success") is True
+        c.check(r.get("N") == 4 and r.get("method") == "rotation-compensation" and r.get("success") is True
                 and len(r["rotation_compensation"]["periods"]) == 2
-                and sorted((f["vertex"], f["index"]) for f in r.get("found", [])) == [(0, 0.25), (100, -0.25)],
+                and sorted((f["vertex"], f["index"]) for f in r.get("found", [])) == [(10, 0.25), (100, -0.25)],
                 "rosy torus with two cones: a cross field by rotation compensation, found == the cones (%r)"
-                % {k: r.get(k) for k in ("N", "method", "found", "smallest_parallel_order")})
+                % {k: r.get(k) for k in ("N", "method", "found")})
+        default_turning = r["rotation_compensation"]["handle_turning_numbers"]
+        want = [0.25 if default_turning[0] != 0.25 else 0.5] + default_turning[1:]
+        t = smdf.json(["rosy", torus, "--cones", tcones, "--turning", "0:%r" % want[0]], "rosy --turning")
+        c.check(t is not None and t["rotation_compensation"]["handle_turning_numbers"] == want and t.get("success") is True
+                and t["found"] == r["found"], "rosy --turning 0:%r: the handle loop turns so, the cones unchanged (%r)"
+                % (want[0], t and t["rotation_compensation"]["handle_turning_numbers"]))
+    tc = smdf.json(["rosy", torus, "--cones", tcones, "--method", "trivial-connection", "--turning", "1:1/4"],
+                   "rosy --method trivial-connection")
+    c.check(tc is not None and tc.get("success") is True and len(tc.get("generator_turning_numbers", [])) == 2
+            and tc["generator_turning_numbers"][1] == 0.25 and tc.get("found") == (r or {}).get("found"),
+            "rosy trivial-connection: found == the cones, generator 1 turns by 1/4 (%r)" % (tc and tc.get("generator_turning_numbers")))
+    # editing: hard direction and length constraints met at their vertices, the cones unchanged
+    tverts, tfaces = read_off(torus)
+    edit, length, vout = (os.path.join(tmp, n) for n in ("edit.txt", "length.txt", "edited.txt"))
+    with open(edit, "w") as f:
+        f.write("# vertex x y z\n0 1 0 0\n200 0 1 0\n")
+    with open(length, "w") as f:
+        f.write("0 2\n200 0.5\n")
+    e = smdf.json(["rosy", torus, "--cones", tcones, "--edit", edit, "--length", length, "--field-out", vout], "rosy --edit --length")
+    if e:
+        vv = read_vectors(vout)
+        normals = vertex_normals(tverts, tfaces)
+        errs = []
+        for v, d, l in ((0, (1, 0, 0), 2.0), (200, (0, 1, 0), 0.5)):
+            n = normals[v]
+            p = vsub(d, tuple(vdot(d, n) * x for x in n))   # the constraint projected on the tangent plane
+            errs.append((line_angle_error(vv[v], p, 4), abs(vnorm(vv[v]) - l)))
+        c.check(e.get("success") is True and e.get("found") == (r or {}).get("found") and all(a < 1e-9 and b < 1e-9 for a, b in errs)
+                and e["edit"]["length_range"][0] > 0.5 - 1e-9 and e["edit"]["length_range"][1] < 2 + 1e-9 and "edit_s" in e["timings"],
+                "rosy --edit (hard): the field at the constrained vertices along the constraints up to pi/2, lengths 2 and 0.5, the cones kept (%r)" % errs)
+    soft = []
+    for w in ("0.5", "50"):
+        with open(edit, "w") as f:
+            f.write("0 1 0 0 %s\n200 0 1 0 %s\n" % (w, w))
+        x = smdf.json(["rosy", torus, "--cones", tcones, "--edit", edit], "rosy --edit soft " + w)
+        soft.append(x["edit"]["max_direction_error"] if x else None)
+    c.check(None not in soft and soft[1] < soft[0], "rosy soft edits: closer with a larger weight (%r)" % soft)
+    with open(edit, "w") as f:
+        f.write("0 1 0 0 2\n200 0 1 0\n")
+    smdf.error(["rosy", torus, "--cones", tcones, "--edit", edit], "rosy --edit: two weights", 1, ["line 2", "one weight"])
+    with open(edit, "w") as f:
+        f.write("10 1 0 0\n")
+    smdf.error(["rosy", torus, "--cones", tcones, "--edit", edit], "rosy --edit at a cone", 1, "cone")
+    with open(edit, "w") as f:
+        f.write("0 0 0 0\n")
+    smdf.error(["rosy", torus, "--edit", edit], "rosy --edit: zero vector", 1, "zero vector")
+    smdf.error(["rosy", torus, "--method", "parallel", "--edit", edit], "rosy --edit on a parallel field", 2, "rotation compensation")
+    smdf.error(["rosy", torus, "--method", "bogus"], "rosy --method bogus", 2, "--method")
+    smdf.error(["rosy", torus, "--boundary", "free"], "rosy --boundary on a closed mesh", 2, "no boundary")
+    smdf.error(["rosy", torus, "--cones", tcones, "--turning", "5:1/4"], "rosy --turning: no such loop", 1, "does not exist")
+    smdf.error(["rosy", torus, "--cones", tcones, "--turning", "0:1/3"], "rosy --turning: not a multiple of 1/N", 1, "multiple of 1/4")
     smdf.error(["rosy", spot, "--cones", "99999:pi/2"], "rosy: cone out of range", 1, "does not exist")
     smdf.error(["rosy", spot, "--cones", "0:2pi,1:0"], "rosy: cone of index 1", 1, "index 1 or more")
     smdf.error(["rosy", spot, "--cones", "0:pi/2"], "rosy: Gauss-Bonnet", 1, "[inconsistent_indices]")
     smdf.error(["rosy", spot, "--cones", "0:pi/2,0:pi/2"], "rosy: cone given twice", 1, "twice")
+
+
+def test_shared_rosy(smdf, c, meshes, tmp):
+    """smdf rosy on open shared meshes (free boundary, fields parallel and orthogonal to the
+    boundary, checked edge by edge from --face-field-out) and one singularity on genus 2."""
+    mushroom = os.path.join(meshes, "mushroom_cgal.off")
+    if os.path.isfile(mushroom):
+        verts, faces = read_off(mushroom)
+        edge_faces = {}
+        for fi, f in enumerate(faces):
+            for k in range(3):
+                a, b = f[k], f[(k + 1) % 3]
+                edge_faces.setdefault((min(a, b), max(a, b)), []).append(fi)
+        border = [(e, fs[0]) for e, fs in edge_faces.items() if len(fs) == 1]
+        for mode in ("free", "parallel", "orthogonal"):
+            ff = os.path.join(tmp, "mushroom_%s.txt" % mode)
+            r = smdf.json(["rosy", mushroom, "--N", "4", "--boundary", mode, "--face-field-out", ff], "rosy mushroom --boundary " + mode)
+            if not r:
+                continue
+            ok = r.get("success") is True and r.get("found") == [] and r.get("boundary") == mode
+            ok = ok and all(abs(t * 2 - round(t * 2)) < 1e-9 for t in r.get("boundary_turning_over_pi", [0.1]))
+            c.check(ok, "rosy mushroom --boundary %s: success, no singularity, the boundary turns by multiples of pi/2 (%r)"
+                    % (mode, r.get("boundary_turning_over_pi")))
+            if mode != "free":
+                fv = read_vectors(ff)
+                worst = max(line_angle_error(fv[f], vsub(verts[e[1]], verts[e[0]]), 4) for e, f in border)
+                c.check(worst < 1e-6, "rosy mushroom --boundary %s: on each of the %d boundary faces one direction is %s to the edge (%.3g)"
+                        % (mode, len(border), mode, worst))
+    annulus = os.path.join(meshes, "annulus_igltest.obj")
+    if os.path.isfile(annulus):
+        r = smdf.json(["rosy", annulus, "--N", "4"], "rosy annulus, free boundary")
+        c.check(r is not None and r.get("success") is True and len(r.get("boundary_turning_over_pi", [])) == 2
+                and abs(sum(r["boundary_turning_over_pi"])) < 1e-9, "rosy annulus: two boundary loops turning by +-2 pi (%r)"
+                % (r and r.get("boundary_turning_over_pi")))
+    eight = os.path.join(meshes, "eight_directional.off")
+    if os.path.isfile(eight):
+        for method in ("rotation-compensation", "trivial-connection"):
+            r = smdf.json(["rosy", eight, "--cones", "0:-4pi", "--method", method], "rosy eight, one cone of -4 pi, " + method)
+            c.check(r is not None and r.get("success") is True and r.get("found") == [{"vertex": 0, "index": -2}],
+                    "rosy genus 2 (%s): one singularity of index -2, read back (%r)" % (method, r and r.get("found")))
 
 
 # ---- connection / singularities ---------------------------------------------------------------
@@ -1082,6 +1240,8 @@ def test_shared(smdf, c, shared):
         test_shared_robustness(smdf, c, meshes, tmp)
     test_shared_svg(smdf, c, meshes)
     test_shared_cone_metric(smdf, c, meshes)
+    with tempfile.TemporaryDirectory(prefix="smdf_rosy_") as tmp:
+        test_shared_rosy(smdf, c, meshes, tmp)
 
 
 def test_shared_svg(smdf, c, meshes):

@@ -108,13 +108,39 @@ Parallel_rosy_status parallel_rosy_field(const TriangleMesh& tm, int N, FaceAngl
   return st;
 }
 
+namespace internal {
+
+// The embedded direction e of side k of a face map (0: corner 0 -> 1, 1: 1 -> 2, 2: 2 -> 0) and
+// t = n x e, n the face normal.
+struct Face_map_axes
+{
+  double e[3], t[3];
+  Face_map_axes(const Face_map& fm, int k)
+  {
+    double s[3];
+    for(int i = 0; i < 3; ++i) s[i] = k == 0 ? fm.E1[i] : k == 1 ? fm.E2[i] - fm.E1[i] : -fm.E2[i];
+    const double n[3] = {fm.E1[1] * fm.E2[2] - fm.E1[2] * fm.E2[1], fm.E1[2] * fm.E2[0] - fm.E1[0] * fm.E2[2],
+                         fm.E1[0] * fm.E2[1] - fm.E1[1] * fm.E2[0]};
+    const double sl = std::sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]), nl = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for(int i = 0; i < 3; ++i) e[i] = sl > 0 ? s[i] / sl : 0;
+    const double c[3] = {n[1] * e[2] - n[2] * e[1], n[2] * e[0] - n[0] * e[2], n[0] * e[1] - n[1] * e[0]};
+    for(int i = 0; i < 3; ++i) t[i] = nl > 0 ? c[i] / nl : 0;
+  }
+};
+
+} // namespace internal
+
 /// \ingroup PkgSurfaceMeshDirectionFieldsFieldDesign
 /// Maps a face field given by angles in the face frames of a metric (counterclockwise from
 /// `halfedge(f)`, measured in the metric's triangle, as parallel_rosy_field() and
 /// `Trivial_connection` on an `edge_length_map` produce them) to unit 3D vectors in the
 /// embedded faces, by the linear map from each metric triangle to the embedded one (the identity
-/// when the metric is the embedding's). Named parameters: `edge_length_map` or `intrinsic_mesh`
-/// (the metric of the angles), `vertex_point_map` (the embedding) and the index maps.
+/// when the metric is the embedding's). A face with a border edge is mapped instead by the
+/// similarity that keeps the direction of its (first) border edge: directions along or across
+/// the boundary stay so (the fields of boundary_aligned_rosy_field()), and the N directions
+/// stay \f$2\pi/N\f$ apart in 3D, which the linear map of a triangle that is not similar to
+/// its image does not keep. Named parameters: `edge_length_map` or `intrinsic_mesh` (the metric
+/// of the angles), `vertex_point_map` (the embedding) and the index maps.
 template <typename TriangleMesh, typename FaceAngleMap, typename FaceVectorMap,
           typename NamedParameters = parameters::Default_named_parameters>
 void field_angles_to_vectors(const TriangleMesh& tm, const FaceAngleMap& angles, FaceVectorMap vectors,
@@ -130,7 +156,16 @@ void field_angles_to_vectors(const TriangleMesh& tm, const FaceAngleMap& angles,
   std::vector<internal::Face_map> frames;
   internal::face_maps(m, vpm, frames);
   for(std::size_t f = 0; f < m.number_of_faces(); ++f) {
-    const std::array<double, 3> v = internal::embedded_direction(frames[f], double(get(angles, m.faces[f])));
+    const double beta = double(get(angles, m.faces[f]));
+    std::array<double, 3> v = internal::embedded_direction(frames[f], beta);
+    int h = m.face_halfedge[f];
+    for(int k = 0; k < 3 && m.face[std::size_t(h ^ 1)] >= 0; ++k) h = m.next[std::size_t(h)];
+    if(m.face[std::size_t(h ^ 1)] < 0) {
+      // the unit border edge e and n x e in the face plane, turned by the angle to the edge
+      const internal::Face_map_axes axes(frames[f], h == m.face_halfedge[f] ? 0 : h == m.next[std::size_t(m.face_halfedge[f])] ? 1 : 2);
+      const double a = beta - internal::halfedge_direction(m, h);
+      for(int i = 0; i < 3; ++i) v[std::size_t(i)] = std::cos(a) * axes.e[i] + std::sin(a) * axes.t[i];
+    }
     put(vectors, m.faces[f], Vector(v[0], v[1], v[2]));
   }
 }

@@ -234,6 +234,10 @@ std::vector<Streamline<TriangleMesh>> trace_streamlines(const TriangleMesh& tm, 
       if(dot(nd, nd) == 0 || dot(nd, unfolded) < 0.5) break;   // no field, or a turn of more than 60 degrees
       entry = -1;
       for(int k = 0; k < 3; ++k) if(side[g][std::size_t(k)] == out) entry = k;
+      if(entry < 0) break;
+      // a direction grazing the edge may snap to one that leaves g where it came in: stop there
+      const V3 in = cross(normal[g], sub(corner[g][std::size_t((entry + 1) % 3)], corner[g][std::size_t(entry)]));
+      if(!(dot(nd, in) > 0)) break;
       f = g;
       d = nd;
     }
