@@ -265,8 +265,9 @@ Json turning_numbers(const SMDF::Field_topology<Mesh>& topo)
 SMDF::Svg_options svg_options(const Args& args)
 {
   SMDF::Svg_options svg;
-  if(!args.has("svg") && (args.has("view") || args.has("width")))
-    throw Usage_error(std::string("option --") + (args.has("view") ? "view" : "width") + " needs --svg FILE");
+  if(!args.has("svg") && !args.has("hatching-svg") && (args.has("view") || args.has("width")))
+    throw Usage_error(std::string("option --") + (args.has("view") ? "view" : "width") + " needs --svg FILE" +
+                      (args.command == "rosy" ? " or --hatching-svg FILE" : ""));
   if(args.has("view")) {
     const std::string view = args.value("view");
     const std::size_t comma = view.find(',');

@@ -186,25 +186,26 @@ Rotation_compensation_status rotation_compensated_field(const TriangleMesh& tm, 
   const double period = 2 * CGAL_PI / N;
   const internal::Vertex_frames<TriangleMesh> frames(m);
 
-  // cotan weights of the metric (raised to 1e-3 of their mean) and the Laplacian, factored once
-  const std::vector<double> w = internal::floored_cotan_edge_weights(m);
-  // vertex 0 is held at 0 (the Laplacian of a closed surface has the constants as kernel)
-  std::vector<Eigen::Triplet<double>> t;
-  for(std::size_t e = 0; e < ne; ++e) {
-    const int a = m.target[2 * e + 1], b = m.target[2 * e];
-    for(int v : {a, b}) if(v > 0) t.emplace_back(v - 1, v - 1, w[e]);
-    if(a > 0 && b > 0) t.emplace_back((std::max)(a, b) - 1, (std::min)(a, b) - 1, -w[e]);
-  }
-  Cholmod_cholesky::Matrix L(Eigen::Index(nv - 1), Eigen::Index(nv - 1));
-  L.setFromTriplets(t.begin(), t.end());
-  L.makeCompressed();
-  Cholmod_cholesky chol;
-  if(nv > 1 && !chol.factor(L, st.message)) return st;
-
   // one harmonic form per handle loop; a 1-form is a value per edge for halfedge 2e (-value for 2e + 1)
   std::vector<const internal::Generator_arrays*> loops;
   for(const auto& g : im.generator_arrays()) if(g.handle) loops.push_back(&g);
   const std::size_t k = loops.size();
+  // cotan weights of the metric (raised to 1e-3 of their mean) and the Laplacian, factored once;
+  // vertex 0 is held at 0 (the Laplacian of a closed surface has the constants as kernel)
+  const std::vector<double> w = k > 0 ? internal::floored_cotan_edge_weights(m) : std::vector<double>();
+  Cholmod_cholesky chol;
+  if(k > 0 && nv > 1) {   // (genus 0: no handle loop, no form: the field is the parallel one, no factorisation)
+    std::vector<Eigen::Triplet<double>> t;
+    for(std::size_t e = 0; e < ne; ++e) {
+      const int a = m.target[2 * e + 1], b = m.target[2 * e];
+      for(int v : {a, b}) if(v > 0) t.emplace_back(v - 1, v - 1, w[e]);
+      if(a > 0 && b > 0) t.emplace_back((std::max)(a, b) - 1, (std::min)(a, b) - 1, -w[e]);
+    }
+    Cholmod_cholesky::Matrix L(Eigen::Index(nv - 1), Eigen::Index(nv - 1));
+    L.setFromTriplets(t.begin(), t.end());
+    L.makeCompressed();
+    if(!chol.factor(L, st.message)) return st;
+  }
   if(!turning.empty() && turning.size() != k)
     throw Input_error(Input_error::INVALID_ARGUMENT, "generator_turning_numbers: " + std::to_string(turning.size()) +
                                                      " values for " + std::to_string(k) + " handle loops");
@@ -282,13 +283,13 @@ Rotation_compensation_status rotation_compensated_field(const TriangleMesh& tm, 
   std::vector<double> om(ne, 0.);
   for(std::size_t j = 0; j < k; ++j)
     for(std::size_t e = 0; e < ne; ++e) om[e] += weights[Eigen::Index(j)] * omega[j][e];
-  // residuals: closed on faces, co-closed at vertices
-  for(std::size_t f = 0; f < m.number_of_faces(); ++f) {
+  // residuals: closed on faces, co-closed at vertices (the zero form when there is no handle)
+  for(std::size_t f = 0; k > 0 && f < m.number_of_faces(); ++f) {
     const int h0 = m.face_halfedge[f];
     const double r = form_at(om, h0) + form_at(om, m.next[std::size_t(h0)]) + form_at(om, m.next[std::size_t(m.next[std::size_t(h0)])]);
     st.max_harmonic_residual = (std::max)(st.max_harmonic_residual, std::abs(r));
   }
-  {
+  if(k > 0) {
     std::vector<double> d(nv, 0.);
     for(std::size_t e = 0; e < ne; ++e) { d[std::size_t(m.target[2 * e + 1])] += w[e] * om[e]; d[std::size_t(m.target[2 * e])] -= w[e] * om[e]; }
     double wmax = 0;
