@@ -18,19 +18,41 @@ run() { echo "smdf $*"; "$smdf" "$@" > /dev/null; }
 # Lai et al. Fig. 10: a 3-RoSy field (six cones of 2 pi/3) and a 4-RoSy field (eight of pi/2)
 run rosy "$spot" --cones "$octahedron" --hatching-svg "$here/spot_3rosy_hatching.svg" "${view[@]}"
 run rosy "$spot" --cones "$cube" --svg "$here/spot_4rosy.svg" "${view[@]}"
-# Fig. 11: the cross field edited by two hard direction constraints
-cat > /tmp/smdf_spot_edit.txt <<'EOF'
-# vertex  x y z   (a direction at a vertex of the back and one of the neck)
-1500 1 1 0
-700 0 1 1
-EOF
-run rosy "$spot" --cones "$cube" --edit /tmp/smdf_spot_edit.txt --svg "$here/spot_4rosy_edited.svg" "${view[@]}"
+# Fig. 11: the cross field edited by hard direction constraints on two patches (the vertices
+# within 0.12 of vertex 1500 on the back, and of 700 on the rump): on the first the field turned
+# by 45 degrees about the vertex normals, on the second kept as it is; hatching, to compare with
+# spot_hatching.svg
+"$smdf" rosy "$spot" --cones "$cube" --field-out /tmp/smdf_spot_field.txt > /dev/null
+python3 - "$spot" /tmp/smdf_spot_field.txt /tmp/smdf_spot_edit.txt 1500:45 700:0 <<'PY'
+import math, sys
+mesh, field, out, *chosen = sys.argv[1:]
+tok = [t for line in open(mesh) for t in line.split("#")[0].split()]
+nv, nf = int(tok[1]), int(tok[2])
+P = [tuple(map(float, tok[4 + 3 * i:7 + 3 * i])) for i in range(nv)]
+F = [tuple(map(int, tok[4 + 3 * nv + 4 * i + 1:4 + 3 * nv + 4 * i + 4])) for i in range(nf)]
+V = [tuple(map(float, line.split())) for line in open(field)]
+n = [[0.0, 0.0, 0.0] for _ in range(nv)]
+for a, b, c in F:
+    u = [P[b][k] - P[a][k] for k in range(3)]; w = [P[c][k] - P[a][k] for k in range(3)]
+    x = (u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0])
+    for v in (a, b, c):
+        for k in range(3): n[v][k] += x[k]
+with open(out, "w") as f:
+    f.write("# vertex x y z: the field at the vertex turned about its normal\n")
+    patches = [(int(x.split(":")[0]), float(x.split(":")[1])) for x in chosen]
+    near = lambda a, b: sum((P[a][k] - P[b][k]) ** 2 for k in range(3)) < 0.12 ** 2
+    for v, degrees in [(v, d) for v in range(nv) for c, d in patches if near(v, c)]:
+        l = math.sqrt(sum(x * x for x in n[v])); m = [x / l for x in n[v]]; d = V[v]
+        t = (m[1] * d[2] - m[2] * d[1], m[2] * d[0] - m[0] * d[2], m[0] * d[1] - m[1] * d[0])
+        c, s = math.cos(math.radians(degrees)), math.sin(math.radians(degrees))
+        f.write("%d %.17g %.17g %.17g\n" % ((v,) + tuple(c * d[k] + s * t[k] for k in range(3))))
+PY
+run rosy "$spot" --cones "$cube" --edit /tmp/smdf_spot_edit.txt --hatching-svg "$here/spot_hatching_edited.svg" --view 60,20,y --width 600
 # Figs. 14-15: pen-and-ink hatching along the cross field
 run rosy "$spot" --cones "$cube" --hatching-svg "$here/spot_hatching.svg" --view 60,20,y --width 600
-# a field parallel to the boundary of an open mesh (the face of boundary-first flattening)
-if [ -f "$meshes/face_bff.obj" ]; then
-  run rosy "$meshes/face_bff.obj" --N 4 --boundary parallel --hatching-svg "$here/face_boundary_parallel.svg" \
-      --view 20,10,y --width 500
+# a field parallel to the boundary of an open mesh (CGAL's mushroom: one boundary loop)
+if [ -f "$meshes/mushroom_cgal.off" ]; then
+  run rosy "$meshes/mushroom_cgal.off" --N 4 --boundary parallel --hatching-svg "$here/mushroom_boundary_parallel.svg" --width 500
 fi
 # Fig. 8: one singularity of index +2 on a genus-0 surface; Fig. 2: one of index -2 on genus 2.
 # A cone of index 1 or more has no flat cone metric (it would be a hole) and the single cone of
