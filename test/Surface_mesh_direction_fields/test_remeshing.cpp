@@ -22,7 +22,11 @@
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/IO/read_triangle_mesh.h>
 
+#include <CGAL/boost/graph/IO/OFF.h>
+#include <CGAL/boost/graph/IO/OBJ.h>
+
 #include <cmath>
+#include <sstream>
 #include <iostream>
 #include <map>
 #include <random>
@@ -112,6 +116,18 @@ smdf_test::Soup octahedron_soup(int n)
   return s;
 }
 
+// Area of a polygon mesh, its faces fanned into triangles.
+double polygon_area(const Surface_mesh& m)
+{
+  double a = 0;
+  for(auto f : faces(m)) {
+    std::vector<K::Point_3> p;
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, m), m)) p.push_back(m.point(target(h, m)));
+    for(std::size_t i = 1; i + 1 < p.size(); ++i) a += std::sqrt(CGAL::squared_area(p[0], p[i], p[i + 1]));
+  }
+  return a;
+}
+
 double surface_area(const Surface_mesh& m)
 {
   double a = 0;
@@ -170,6 +186,24 @@ void check_remesh(const InputMesh& input, const Surface_mesh& in_sm, const Surfa
     }
     flipped += n * under <= 0;
   }
+  // the output read back by CGAL's own readers (OFF and OBJ, Surface_mesh and Polyhedron_3)
+  for(const char* format : {"off", "obj"}) {
+    std::stringstream file;
+    const bool written = std::string(format) == "off" ? CGAL::IO::write_OFF(file, out, CGAL::parameters::stream_precision(17))
+                                                      : CGAL::IO::write_OBJ(file, out, CGAL::parameters::stream_precision(17));
+    Surface_mesh back;
+    Polyhedron pback;
+    std::stringstream copy(file.str());
+    const bool read = std::string(format) == "off" ? CGAL::IO::read_OFF(file, back) && CGAL::IO::read_OFF(copy, pback)
+                                                   : CGAL::IO::read_OBJ(file, back) && CGAL::IO::read_OBJ(copy, pback);
+    double moved = 0;
+    if(read && num_vertices(back) == num_vertices(out))
+      for(auto v : vertices(out)) moved = std::max(moved, std::sqrt(CGAL::squared_distance(out.point(v), back.point(v))));
+    SMDF_CHECK_MSG(written && read && CGAL::is_valid_polygon_mesh(back) && CGAL::is_valid_polygon_mesh(pback) &&
+                       num_vertices(back) == num_vertices(out) && num_faces(back) == num_faces(out) && num_edges(back) == num_edges(out) &&
+                       num_faces(pback) == num_faces(out) && CGAL::is_closed(back) == CGAL::is_closed(out) && moved == 0,
+                   what << ": written as " << format << " and read back by CGAL (Surface_mesh and Polyhedron_3): the same mesh");
+  }
   SMDF_CHECK_MSG(far < 1e-12, what << ": every output vertex lies on the input surface (farthest " << far << ")");
   SMDF_CHECK_MSG(flipped == 0, what << ": no face flipped against the input surface (" << flipped << " are)");
   std::cout << what << ": " << num_vertices(out) << " vertices, " << num_faces(out) << " faces, spacing of the metric "
@@ -184,10 +218,14 @@ void cube()
     const auto dev = SMDF::develop_flat_metric(mesh);
     SMDF_CHECK_MSG(dev.cones().size() == 8 && dev.max_flatness_error() < 1e-12 && dev.max_pruned_motion() < 1e-9,
                    "cube: eight cones, flat elsewhere (" << dev.max_flatness_error() << "), pruned motions trivial");
-    for(double h : {0.25, 0.125}) {
+    // 0.1: the metric's lattice is spanned by (1, 1) (spacing sqrt 2), and |10 + 10i| = |2 + 14i|:
+    // the grid must follow the cube's edges (area exact), not cross them at an angle
+    for(double h : {0.25, 0.125, 0.1}) {
       Surface_mesh out;
       const auto st = SMDF::tessellate_flat_metric(mesh, dev, SMDF::SQUARE_GRID, h, out);
       check_remesh(mesh, mesh, out, st, 4, {{3, 8}}, 6 / (h * h), "cube n=" + std::to_string(n) + ", quads of " + std::to_string(h));
+      const double ratio = polygon_area(out) / surface_area(mesh);
+      SMDF_CHECK_MSG(std::abs(ratio - 1) < 1e-9, "cube n=" << n << ", quads of " << h << ": the remesh has the input's area (ratio " << ratio << ")");
     }
     Surface_mesh out;
     const auto bad = SMDF::tessellate_flat_metric(mesh, dev, SMDF::SQUARE_GRID, 0.3, out);

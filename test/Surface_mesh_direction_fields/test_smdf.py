@@ -488,6 +488,82 @@ def test_remesh(smdf, c, torus, tmp):
     smdf.error(["remesh", cube, "--edge-length", "0.25"], "remesh without --out", 2, "--out")
     smdf.error(["remesh", cube, "--edge-length", "0.25", "--faces", "10", "--out", out], "remesh: both sizes", 2, "one of")
     smdf.error(["remesh", cube, "--grid", "hex", "--edge-length", "0.25", "--out", out], "remesh: bad grid", 2, "quad")
+    test_remesh_cones_and_files(smdf, c, torus, tmp, cube, spot)
+
+
+def test_remesh_cones_and_files(smdf, c, torus, tmp, cube, spot):
+    """smdf remesh --cones (the metric of the cones, the corners of a box or an octahedron, a
+    polyhedron file checked against them), --svg, --progress, the area and the bad input."""
+    out = os.path.join(tmp, "cones_remesh.off")
+    cverts, _ = read_off(cube)
+    corners = [i for i, p in enumerate(cverts) if all(x in (0.0, 1.0) for x in p)]
+    cones = ",".join("%d:pi/2" % v for v in corners)
+    # the cube's own metric, recomputed by Ricci flow from its 8 cones: exact squares, area 1
+    r = smdf.json(["remesh", cube, "--cones", cones, "--edge-length", "0.25", "--out", out], "remesh cube --cones (8 x pi/2)")
+    c.check(r is not None and r.get("success") is True and r["metric"]["source"] == "cones" and r.get("faces_by_size") == {"4": 96}
+            and abs(r.get("area_ratio", 0) - 1) < 1e-9, "remesh cube --cones: the cones' flat metric, 96 quads, area ratio 1 (%r)"
+            % (r and r.get("area_ratio")))
+    fine = smdf.json(["remesh", cube, "--edge-length", "0.05", "--out", out], "remesh cube, fine")
+    c.check(fine is not None and fine.get("success") is True and abs(fine.get("area_ratio", 0) - 1) < 0.01,
+            "remesh cube at edge length 0.05: area within 1%% of the input's (%r)" % (fine and fine.get("area_ratio")))
+    spot_corners = [2202, 1077, 2587, 1488, 2221, 1090, 533, 248]
+    spot_cones = ",".join("%d:pi/2" % v for v in reversed(spot_corners))   # any order: assigned by direction
+    svg = os.path.join(tmp, "spot_remesh.svg")
+    rc, o, err = smdf.run(["remesh", spot, "--polycube", "box", "--cones", spot_cones, "--faces", "2000",
+                           "--out", os.path.join(tmp, "spot_box.obj"), "--svg", svg, "--progress"])
+    doc = json.loads(o.decode()) if o else {}
+    stages = [l for l in err.decode().splitlines() if l.startswith("smdf remesh: ")]
+    c.check(rc == 0 and doc.get("success") is True and sorted(doc["metric"]["corners"]) == sorted(spot_corners)
+            and 0.9 < doc.get("area_ratio", 0) <= 1.0 + 1e-9, "remesh spot --polycube box --cones: the given corners, area ratio %r"
+            % doc.get("area_ratio"))
+    c.check(len(stages) >= 3 and stages[-1].startswith("smdf remesh: done"), "remesh --progress: the stages on stderr (%r)" % stages)
+    if os.path.isfile(svg):
+        with open(svg) as f:
+            text = f.read()
+        c.check(text.count("<line") > 2000 and text.count("<circle") >= 5 and "+1/4" in text,
+                "remesh --svg: the remesh's edges and its visible cones of index 1/4 drawn")
+    else:
+        c.check(False, "remesh --svg written")
+    # bad input
+    smdf.error(["remesh", torus, "--polycube", "box", "--faces", "500", "--out", out], "remesh --polycube on a torus", 1,
+               ["genus-0", "genus 1"])
+    smdf.error(["remesh", spot, "--cones", "2202:pi/2,1077:pi/2", "--faces", "500", "--out", out], "remesh: cones not summing to 4 pi", 1,
+               ["sum to 3.14159", "12.566", "[inconsistent_indices]"])
+    smdf.error(["remesh", spot, "--polycube", "box", "--cones", "2202:pi/2", "--faces", "500", "--out", out], "remesh: box with one cone", 1,
+               "8 corners")
+    smdf.error(["remesh", spot, "--polycube", "box", "--cones", spot_cones.replace("248:pi/2", "248:pi/3"), "--faces", "500", "--out", out],
+               "remesh: box with a cone of pi/3", 1, "curvature pi/2")
+    octa = os.path.join(tmp, "octahedron.txt")
+    axis = [1239, 2369, 1490, 289, 1855, 1453]   # Spot's vertices extreme along +x, -x, +y, -y, +z, -z
+    with open(octa, "w") as f:
+        for sx in (0, 1):
+            for sy in (2, 3):
+                for sz in (4, 5):
+                    tri = (axis[sx], axis[sy], axis[sz])
+                    if ((sx == 1) + (sy == 3) + (sz == 5)) % 2 == 1:   # an odd number of negative axes: reversed
+                        tri = (tri[0], tri[2], tri[1])
+                    f.write("%d %d %d\n" % tri)
+    wrong = ",".join("%d:2pi/3" % v for v in axis[:5]) + ",%d:pi/2" % axis[5]
+    smdf.error(["remesh", spot, "--polycube", octa, "--cones", wrong, "--faces", "500", "--out", out], "remesh: P does not match the cones", 1,
+               ["does not match the cones", str(axis[5])])
+    right = ",".join("%d:2pi/3" % v for v in axis)
+    docs = []
+    for p in (octa, "octahedron"):
+        rc, o, err = smdf.run(["remesh", spot, "--polycube", p, "--cones", right, "--faces", "1500", "--out", out])
+        doc = json.loads(o.decode()) if o else {}
+        docs.append(doc)
+        c.check(rc in (0, 3) and doc.get("grid") == "triangle" and doc.get("valences", {}).get("4") == 6
+                and (rc == 0) == (doc.get("success") is True), "remesh spot, octahedron (%s) with its cones: triangles, 6 vertices of valence 4 (%r)"
+                % (p, doc.get("valences")))
+    c.check(all(docs[0].get(k) == docs[1].get(k) for k in ("faces_by_size", "valences", "inverted_faces")),
+            "remesh spot: the octahedron file and the preset with the same cones give the same remesh")
+    smdf.error(["remesh", spot, "--cones", spot_cones, "--lengths", octa, "--faces", "500", "--out", out], "remesh --cones with --lengths", 2,
+               "at most one")
+    smdf.error(["remesh", spot, "--cones", spot_cones, "--polycube", "obelisk", "--grid", "mixed", "--faces", "500", "--out", out],
+               "remesh --cones with obelisk", 2, "obelisk")
+    rc, o, err = smdf.run(["remesh", spot, "--cones", spot_cones, "--faces", "2000", "--out", out])
+    c.check(rc == 3 and b"not symmetries of the square grid" in err,
+            "remesh spot --cones without a polycube: the cone metric fails Theorem 3.5, exit 3, named (%r)" % err[:120])
 
 
 def read_vectors(path):

@@ -10,6 +10,8 @@
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/flat_development.h>
 #include <CGAL/Surface_mesh_direction_fields/grid_tessellation.h>
+#include <CGAL/Surface_mesh_direction_fields/intrinsic_geometry.h>
+#include <CGAL/Surface_mesh_direction_fields/topology.h>
 #include <CGAL/Surface_mesh_direction_fields/polycube_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/polyhedron_remeshing.h>
 
@@ -19,6 +21,10 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <array>
+#include <iomanip>
+#include <iostream>
+#include <locale>
+#include <sstream>
 #include <map>
 #include <cmath>
 #include <string>
@@ -180,6 +186,90 @@ Json distances(const Mesh& input, const Mesh& out, double h)
   return d;
 }
 
+// Area of the remesh (its faces fanned into triangles) over that of the input.
+double area_ratio(const Mesh& input, const Mesh& out)
+{
+  double a = 0, b = 0;
+  for(face_descriptor f : faces(input)) {
+    const halfedge_descriptor h = halfedge(f, input);
+    a += std::sqrt(CGAL::squared_area(input.point(source(h, input)), input.point(target(h, input)), input.point(target(next(h, input), input))));
+  }
+  for(face_descriptor f : faces(out)) {
+    std::vector<K::Point_3> p;
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, out), out)) p.push_back(out.point(target(h, out)));
+    for(std::size_t i = 1; i + 1 < p.size(); ++i) b += std::sqrt(CGAL::squared_area(p[0], p[i], p[i + 1]));
+  }
+  return a > 0 ? b / a : 0;
+}
+
+// --svg: the remesh drawn (its faces fanned into triangles for the shading, its own edges as
+// strokes, each with the triangle it bounds, so that nearer faces hide it) and its cones marked:
+// the vertices whose faces' corner angles of the grid (pi/2 in a quad, pi/3 in a triangle) do not
+// sum to 2 pi, with index K / 2 pi. Its vertices lie on the input surface.
+void write_remesh_svg(const Args& args, const Mesh& input, const Mesh& remesh, int N)
+{
+  Mesh tri;
+  for(vertex_descriptor v : vertices(remesh)) tri.add_vertex(remesh.point(v));
+  std::vector<SMDF::Svg_stroke<Mesh>> strokes;
+  std::vector<double> K(num_vertices(remesh), 2 * CGAL_PI);
+  auto P = [&](vertex_descriptor v) { const K::Point_3& p = remesh.point(v); return std::array<double, 3>{{p.x(), p.y(), p.z()}}; };
+  for(face_descriptor f : faces(remesh)) {
+    std::vector<vertex_descriptor> vs;
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, remesh), remesh)) vs.push_back(target(h, remesh));
+    for(vertex_descriptor v : vs) K[index(v)] -= vs.size() == 4 ? CGAL_PI / 2 : vs.size() == 3 ? CGAL_PI / 3 : 0.;
+    for(std::size_t i = 1; i + 1 < vs.size(); ++i) {
+      const face_descriptor t = tri.add_face(vs[0], vs[i], vs[i + 1]);
+      if(t == Mesh::null_face()) continue;
+      if(i == 1) strokes.push_back(SMDF::Svg_stroke<Mesh>{t, P(vs[0]), P(vs[1])});
+      strokes.push_back(SMDF::Svg_stroke<Mesh>{t, P(vs[i]), P(vs[i + 1])});
+      if(i + 2 == vs.size()) strokes.push_back(SMDF::Svg_stroke<Mesh>{t, P(vs[i + 1]), P(vs[0])});
+    }
+  }
+  std::vector<std::pair<vertex_descriptor, double>> marks;
+  for(vertex_descriptor v : vertices(remesh))
+    if(!CGAL::is_border(v, remesh) && std::abs(K[index(v)]) > 1e-9) marks.emplace_back(v, std::round(K[index(v)] / (2 * CGAL_PI) * N) / N);
+  SMDF::Svg_options view = svg_options(args);
+  if(!args.has("view")) view.up_axis = default_up_axis(input);
+  view.edge_stroke_width = 0;
+  view.glyph_stroke_width = 0.6;
+  std::ostringstream os;
+  SMDF::write_strokes_svg(os, tri, strokes, N, marks, view);
+  write_lines_file(args.value("svg"), os.str());
+}
+
+// The cones of --cones assigned to the corners of a preset polyhedron: corner i takes the cone
+// farthest from the centroid along direction i. All must have curvature K; each must lie on the
+// side of its direction (positive dot product), else the assignment is ambiguous.
+std::vector<vertex_descriptor> assign_cones(const std::string& preset, const Mesh& mesh, const std::vector<std::pair<vertex_descriptor, double>>& cones,
+                                            const std::vector<K::Vector_3>& directions, double K, const char* K_name)
+{
+  if(cones.size() != directions.size())
+    throw Error("--polycube " + preset + " has " + std::to_string(directions.size()) + " corners of curvature " + K_name + "; --cones gives " +
+                std::to_string(cones.size()) + " cones");
+  for(const auto& c : cones)
+    if(std::abs(c.second - K) > 1e-9)
+      throw Error("--polycube " + preset + ": its corners have curvature " + K_name + "; --cones gives " + format_real(c.second) + " at vertex " +
+                  std::to_string(index(c.first)));
+  K::Vector_3 centre(0, 0, 0);
+  for(vertex_descriptor v : vertices(mesh)) centre = centre + (mesh.point(v) - CGAL::ORIGIN) / double(num_vertices(mesh));
+  std::vector<vertex_descriptor> out;
+  std::vector<char> used(cones.size(), 0);
+  for(const K::Vector_3& d : directions) {
+    std::size_t best = cones.size();
+    double best_dot = -1e300;
+    for(std::size_t i = 0; i < cones.size(); ++i) {
+      const double x = (mesh.point(cones[i].first) - (CGAL::ORIGIN + centre)) * d;
+      if(!used[i] && x > best_dot) { best_dot = x; best = i; }
+    }
+    if(!(best_dot > 0))
+      throw Error("--polycube " + preset + ": no cone lies towards corner direction (" + format_real(d.x()) + ", " + format_real(d.y()) + ", " +
+                  format_real(d.z()) + ") from the centroid; place one cone near each corner, or give the polyhedron as a file");
+    used[best] = 1;
+    out.push_back(cones[best].first);
+  }
+  return out;
+}
+
 } // namespace
 
 Json run_remesh(const Args& args)
@@ -204,10 +294,32 @@ Json run_remesh(const Args& args)
     throw Usage_error("--grid mixed needs a polyhedron of squares and triangles: --polycube obelisk or --polycube FILE");
   if(!args.has("out")) throw Usage_error("option --out FILE is required (.off or .obj)");
   const std::string out_file = args.value("out");
+  if((args.has("cones") || args.has("cone-indices")) && args.has("lengths"))
+    throw Usage_error("give at most one of --cones and --lengths (the lengths file is the metric)");
+  if((args.has("cones") || args.has("cone-indices")) && polycube == "obelisk")
+    throw Usage_error("--polycube obelisk places its own nine cones; with --cones give the polyhedron as a file");
+  const SMDF::Svg_options svg_check = svg_options(args);   // usage errors of --view and --width
+  (void)svg_check;
 
   Mesh mesh;
   load_mesh(file, mesh);
   Stopwatch clock;
+  const bool progress = args.has("progress");
+  auto stage = [&](const char* what) {
+    if(!progress) return;
+    std::ostringstream os;
+    os.imbue(std::locale::classic());
+    os << "smdf remesh: " << what << " (" << std::fixed << std::setprecision(3) << clock.total() << " s)";
+    std::cerr << os.str() << std::endl;
+  };
+  const std::vector<std::pair<vertex_descriptor, double>> cones = cone_option(args, mesh);
+  if(args.has("polycube")) {
+    const SMDF::Mesh_topology<Mesh> topo = SMDF::mesh_topology(mesh);
+    if(topo.components.size() != 1 || !topo.is_closed() || topo.components[0].genus != 0)
+      throw Error(file + ": --polycube needs a closed genus-0 mesh of one component (a sphere); this one has " +
+                  std::to_string(topo.components.size()) + " component(s), genus " + std::to_string(topo.components.empty() ? 0 : topo.components[0].genus) +
+                  " and " + std::to_string(topo.boundary_loops.size()) + " boundary loop(s) [invalid_input]");
+  }
   Json out = Json::object();
   out["grid"] = grid_name;
   const double unit_area = grid == SMDF::SQUARE_GRID ? 1. : std::sqrt(3.) / 4;
@@ -216,7 +328,26 @@ Json run_remesh(const Args& args)
   double metric_s = 0, compensation_s = 0;
   Json metric = Json::object();
   if(args.has("lengths")) { lengths = read_edge_lengths(args.value("lengths"), mesh); metric["source"] = "lengths"; }
-  else {
+  else if(!cones.empty() && !args.has("polycube")) {
+    // the flat cone metric with the given cones, on the input triangulation (the remesh is
+    // pulled back through it: no intrinsic flips)
+    stage("flat cone metric");
+    auto targets = mesh.add_property_map<vertex_descriptor, double>("v:smdf_remesh_target", 0.).first;
+    for(const auto& c : cones) targets[c.first] = c.second;
+    lengths = mesh.add_property_map<edge_descriptor, double>("e:smdf_remesh_length", 0.).first;
+    const SMDF::Cone_metric_status cm = on_file(file, [&] {
+      return SMDF::compute_cone_metric(mesh, targets, lengths, SMDF::parameters::intrinsic_edge_flips(false));
+    });
+    metric["source"] = "cones";
+    metric["converged"] = cm.converged;
+    metric["iterations"] = cm.iterations;
+    metric["max_curvature_error"] = cm.max_curvature_error;
+    if(!cm.converged) {
+      out["metric"] = metric;
+      out["success"] = false;
+      throw Failed_result{out, file + ": the flat cone metric with these cones does not converge on the input triangulation: " + cm.message, 3};
+    }
+  } else {
     lengths = mesh.add_property_map<edge_descriptor, double>("e:smdf_remesh_length", 0.).first;
     for(edge_descriptor e : edges(mesh)) lengths[e] = std::sqrt(CGAL::squared_distance(mesh.point(source(e, mesh)), mesh.point(target(e, mesh))));
     metric["source"] = args.has("polycube") ? "box polycube" : "embedding";
@@ -257,6 +388,29 @@ Json run_remesh(const Args& args)
       grid = quads ? SMDF::SQUARE_GRID : SMDF::TRIANGULAR_GRID;
       out["grid"] = mixed ? "mixed" : quads ? "quad" : "triangle";
     }
+    if(!cones.empty() && polycube == "octahedron")
+      corners = assign_cones("octahedron", mesh, cones, {K::Vector_3(1, 0, 0), K::Vector_3(-1, 0, 0), K::Vector_3(0, 1, 0), K::Vector_3(0, -1, 0),
+                                                         K::Vector_3(0, 0, 1), K::Vector_3(0, 0, -1)}, 2 * CGAL_PI / 3, "2 pi/3");
+    {
+      // P's cones: 2 pi minus the angles of its faces at each corner; --cones must say the same
+      std::vector<double> K_of(corners.size(), 2 * CGAL_PI);
+      for(const auto& f : pfaces) for(int c : f) K_of[std::size_t(c)] -= f.size() == 4 ? CGAL_PI / 2 : CGAL_PI / 3;
+      if(!cones.empty() && polycube != "octahedron") {
+        std::map<vertex_descriptor, double> given(cones.begin(), cones.end());
+        for(std::size_t i = 0; i < corners.size(); ++i) {
+          auto it = given.find(corners[i]);
+          if(it == given.end() || std::abs(it->second - K_of[i]) > 1e-9)
+            throw Error(polycube + ": the polyhedron does not match the cones: its corner " + std::to_string(index(corners[i])) +
+                        " has curvature " + format_real(K_of[i]) + " (2 pi minus its face angles), --cones gives " +
+                        (it == given.end() ? std::string("none") : format_real(it->second)));
+          given.erase(it);
+        }
+        if(!given.empty())
+          throw Error(polycube + ": the polyhedron does not match the cones: vertex " + std::to_string(index(given.begin()->first)) +
+                      " of --cones is no corner of the polyhedron");
+      }
+    }
+    stage("flat cone metric and paths");
     std::size_t nq = 0;
     for(const auto& f : pfaces) nq += f.size() == 4;
     const double polygon_area = double(nq) + double(pfaces.size() - nq) * std::sqrt(3.) / 4;
@@ -299,9 +453,12 @@ Json run_remesh(const Args& args)
         out["inverted_faces"] = rs.inverted_faces;
         out["quality"] = quality(remesh);
         out["distance_over_edge_length"] = distances(mesh, remesh, side / n);
+        out["area_ratio"] = area_ratio(mesh, remesh);
         if(!CGAL::IO::write_polygon_mesh(out_file, remesh, CGAL::parameters::stream_precision(17)))
           throw file_error(out_file, "cannot write the remesh (the extension must be .off or .obj)", "output");
+        if(args.has("svg")) write_remesh_svg(args, mesh, remesh, 12);
       }
+      stage("done");
       out["timings"] = std::move(timings);
       out["success"] = rs.success;
       if(!rs.success) throw Failed_result{out, file + ": " + rs.message, 3};
@@ -320,7 +477,14 @@ Json run_remesh(const Args& args)
     out["metric"] = metric;
     if(!ps.success) throw Failed_result{out, file + ": polyhedron metric: " + ps.message, 3};
   } else if(args.has("polycube")) {
-    const auto corners = box_corners(mesh);
+    std::array<vertex_descriptor, 8> corners = box_corners(mesh);
+    if(!cones.empty()) {
+      std::vector<K::Vector_3> d;
+      for(int i = 0; i < 8; ++i) d.push_back(K::Vector_3((i & 1) ? 1 : -1, (i & 2) ? 1 : -1, (i & 4) ? 1 : -1));
+      const std::vector<vertex_descriptor> a = assign_cones("box", mesh, cones, d, CGAL_PI / 2, "pi/2");
+      std::copy(a.begin(), a.end(), corners.begin());
+    }
+    stage("flat cone metric, paths and box metric");
     // Lai et al.: the paths under the flat cone metric with cones of pi/2 at the corners
     auto targets = mesh.add_property_map<vertex_descriptor, double>("v:smdf_remesh_target", 0.).first;
     for(vertex_descriptor v : corners) targets[v] = CGAL_PI / 2;
@@ -345,6 +509,7 @@ Json run_remesh(const Args& args)
   }
   out["metric"] = metric;
   // 2. develop and tessellate; with --faces, the admissible edge length nearest to the request
+  stage("development and tessellation");
   const auto dev = on_file(file, [&] { return SMDF::develop_flat_metric(mesh, SMDF::parameters::edge_length_map(lengths)); });
   Mesh remesh;
   SMDF::Grid_tessellation_status st = SMDF::tessellate_flat_metric(mesh, dev, grid, h, remesh);
@@ -396,9 +561,12 @@ Json run_remesh(const Args& args)
     out["inverted_faces"] = st.inverted_faces;
     out["quality"] = quality(remesh);
     out["distance_over_edge_length"] = distances(mesh, remesh, h);
+    out["area_ratio"] = area_ratio(mesh, remesh);
     if(!CGAL::IO::write_polygon_mesh(out_file, remesh, CGAL::parameters::stream_precision(17)))
       throw file_error(out_file, "cannot write the remesh (the extension must be .off or .obj)", "output");
+    if(args.has("svg")) write_remesh_svg(args, mesh, remesh, grid == SMDF::SQUARE_GRID ? 4 : 6);
   }
+  stage("done");
   out["timings"] = std::move(timings);
   out["success"] = st.success;
   if(!st.success) throw Failed_result{out, file + ": " + st.message, 3};
@@ -413,11 +581,19 @@ Command remesh_command()
            {"faces", "N", "about N faces instead (the admissible edge length nearest to area / N)"},
            {"polycube", "P", "metric compensation with a polyhedron: 'box' (corners: the 8 vertices extreme in the diagonal directions from the centroid), 'octahedron' (the 6 extreme along the axes; triangles), 'obelisk' (Lai et al. Fig. 1c, y up: mixed), or a file: one face per line, its 3 or 4 vertex ids counterclockwise from outside (squares or triangles)"},
            {"lengths", "FILE", "the flat cone metric: one line 'i j length' per edge (e.g. cone-metric --no-flips --lengths-out)"},
-           {"out", "FILE", "write the remesh (.off or .obj)"}},
+           {"cones", "LIST", "cone curvatures 'v:K,...' (K radians: pi/2, 2pi/3, ...): the flat cone metric to tessellate, or the corners of --polycube"},
+           {"cone-indices", "LIST", "the same as indices 'v:k,...', K = 2 pi k"},
+           {"out", "FILE", "write the remesh (.off or .obj)"},
+           {"svg", "FILE", "write an SVG picture of the remesh (on the input surface), its cones marked"},
+           {"view", "A,E[,UP]", "view of --svg: azimuth,elevation in degrees, up axis x|y|z"},
+           {"width", "PX", "width of the --svg picture in pixels (default 800)"},
+           {"progress", "", "report each stage on stderr with the elapsed time"}},
           "regular quad or triangle remesh from a flat cone metric",
           "Lai et al. 2010, section 5: develops a flat cone metric of the mesh (its own edge lengths,\n"
-          "--lengths, or the metric of a polyhedron: --polycube box | octahedron | FILE) and carries the\n"
-          "square (quad)\n"
+          "--lengths, the metric with --cones computed on the input triangulation, or the metric of a\n"
+          "polyhedron: --polycube box | octahedron | obelisk | FILE, genus 0 only; with --cones the box's\n"
+          "or octahedron's corners are the given cones, by direction from the centroid, and a FILE's\n"
+          "corners must carry exactly the given curvatures) and carries the square (quad)\n"
           "or triangular grid onto the surface. The cut graph's motions must be symmetries of the\n"
           "grid (Theorem 3.5) and the cones grid points; otherwise the failing edges are reported.\n"
           "Output vertices lie on the input triangles (barycentric placement); every interior\n"
@@ -427,7 +603,8 @@ Command remesh_command()
           "failing_cut_edge_count, vertices, faces_by_size, valences (interior vertices),\n"
           "irregular_vertices: [{vertex, cone, valence}], inverted_faces, quality:\n"
           "{min_corner_angle_deg, max_corner_angle_deg, min_scaled_jacobian, mean_scaled_jacobian},\n"
-          "distance_over_edge_length: {remesh_to_input, input_to_remesh}, timings: {metric_s,\n"
+          "distance_over_edge_length: {remesh_to_input, input_to_remesh}, area_ratio (remesh over\n"
+          "input), timings: {metric_s,\n"
           "compensation_s, tessellation_s}, success}. Exit code 3 (JSON printed) when the metric is\n"
           "incompatible with the grid, the edge length does not fit its lattice, or the read-back\n"
           "fails (valences, inverted faces); the remesh is still written when its faces exist.\n",

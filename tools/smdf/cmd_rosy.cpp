@@ -109,35 +109,6 @@ Rosy_options rosy_options(const Args& args)
   return o;
 }
 
-// The cones of the options: vertices with K < 2 pi (index below 1) inside, K < pi on the
-// boundary (the boundary's turning angle there), each once.
-std::vector<std::pair<vertex_descriptor, double>> rosy_cones(const Args& args, const Mesh& mesh)
-{
-  const Indexed_values cones = pairs_option(args, "cones", parse_angle, "'v:K,v:K,...' (K radians: decimal, p/q, pi/2, -4pi, ...)");
-  const Indexed_values indices = pairs_option(args, "cone-indices", parse_number, "'v:k,...' (index k, K = 2 pi k)");
-  std::vector<std::pair<vertex_descriptor, double>> out;
-  std::vector<char> given(num_vertices(mesh), 0);
-  auto add = [&](const char* option, std::size_t v, double K) {
-    const std::string where = std::string("--") + option + ": vertex " + std::to_string(v);
-    if(v >= num_vertices(mesh))
-      throw Error(where + " does not exist (the mesh has " + std::to_string(num_vertices(mesh)) + " vertices)");
-    const vertex_descriptor vd(static_cast<Mesh::size_type>(v));
-    if(given[v]++) throw Error(where + " is given twice");
-    if(halfedge(vd, mesh) == boost::graph_traits<Mesh>::null_halfedge())
-      throw Error(where + " is isolated (no face)");
-    if(CGAL::is_border(vd, mesh)) {
-      if(!(K < CGAL_PI && K > -CGAL_PI))
-        throw Error(where + " is on the boundary, where K is the boundary's turning angle and must lie in (-pi, pi), got " + format_real(K));
-    } else if(!(K < 2 * CGAL_PI)) {
-      throw Error(where + ": cones of index 1 or more (punched holes) are not supported by rosy");
-    }
-    out.emplace_back(vd, K);
-  };
-  for(const auto& c : cones) add("cones", c.first, c.second);
-  for(const auto& c : indices) add("cone-indices", c.first, 2 * CGAL_PI * c.second);
-  return out;
-}
-
 bool multiple_of(double K, int N) { const double k = K / (2 * CGAL_PI) * N; return std::abs(k - std::round(k)) < 1e-6; }
 
 // The input's turning angle pi - sum(theta) at every boundary vertex, and the boundary loops.
@@ -308,7 +279,7 @@ Json run_rosy(const Args& args)
   const SMDF::Svg_options svg = svg_options(args);
   Mesh mesh;
   load_mesh(file, mesh);
-  const std::vector<std::pair<vertex_descriptor, double>> cones = rosy_cones(args, mesh);
+  const std::vector<std::pair<vertex_descriptor, double>> cones = cone_option(args, mesh);
   const bool open = !SMDF::mesh_topology(mesh).is_closed();
   if(opt.boundary_given && !open) throw Usage_error("--boundary: " + file + " has no boundary");
   const bool editing = args.has("edit") || args.has("length");

@@ -329,4 +329,33 @@ void write_field_files(const Args& args, const Mesh& mesh, Face_vector_property 
   }
 }
 
+// The cones of the options: vertices with K < 2 pi (index below 1) inside, K < pi on the
+// boundary (the boundary's turning angle there), each once.
+std::vector<std::pair<vertex_descriptor, double>> cone_option(const Args& args, const Mesh& mesh)
+{
+  const Indexed_values cones = pairs_option(args, "cones", parse_angle, "'v:K,v:K,...' (K radians: decimal, p/q, pi/2, -4pi, ...)");
+  const Indexed_values indices = pairs_option(args, "cone-indices", parse_number, "'v:k,...' (index k, K = 2 pi k)");
+  std::vector<std::pair<vertex_descriptor, double>> out;
+  std::vector<char> given(num_vertices(mesh), 0);
+  auto add = [&](const char* option, std::size_t v, double K) {
+    const std::string where = std::string("--") + option + ": vertex " + std::to_string(v);
+    if(v >= num_vertices(mesh))
+      throw Error(where + " does not exist (the mesh has " + std::to_string(num_vertices(mesh)) + " vertices)");
+    const vertex_descriptor vd(static_cast<Mesh::size_type>(v));
+    if(given[v]++) throw Error(where + " is given twice");
+    if(halfedge(vd, mesh) == boost::graph_traits<Mesh>::null_halfedge())
+      throw Error(where + " is isolated (no face)");
+    if(CGAL::is_border(vd, mesh)) {
+      if(!(K < CGAL_PI && K > -CGAL_PI))
+        throw Error(where + " is on the boundary, where K is the boundary's turning angle and must lie in (-pi, pi), got " + format_real(K));
+    } else if(!(K < 2 * CGAL_PI)) {
+      throw Error(where + ": cones of index 1 or more (punched holes) are not supported");
+    }
+    out.emplace_back(vd, K);
+  };
+  for(const auto& c : cones) add("cones", c.first, c.second);
+  for(const auto& c : indices) add("cone-indices", c.first, 2 * CGAL_PI * c.second);
+  return out;
+}
+
 } // namespace smdf_cli

@@ -151,6 +151,11 @@ Json found_list(const SMDF::Field_topology<Mesh>& topo);
 // The generator turning numbers of `topo` as an array.
 Json turning_numbers(const SMDF::Field_topology<Mesh>& topo);
 
+// --cones 'v:K,...' and --cone-indices 'v:k,...' (K = 2 pi k): vertices with K < 2 pi inside,
+// K in (-pi, pi) on the boundary (the boundary's turning angle there), each once; Errors name
+// the option and the vertex.
+std::vector<std::pair<vertex_descriptor, double>> cone_option(const Args& args, const Mesh& mesh);
+
 // The axis drawn pointing up in a picture when --view does not say (0 x, 1 y, 2 z).
 int default_up_axis(const Mesh& mesh);
 

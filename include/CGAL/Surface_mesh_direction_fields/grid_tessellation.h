@@ -183,16 +183,24 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
   const double wx0 = square ? 0. : 0.5, wy0 = square ? 1. : std::sqrt(3.) / 2;
   if(spacing > 0) {
     const double ratio = spacing / h;
+    // several lattice vectors may have that norm (|10 + 10i| = |2 + 14i|): take the multiple of
+    // the shortest primitive vector (largest gcd), whose grid lines follow the metric's lattice
+    // (a cube's edges) instead of crossing it at an angle
     bool found = false;
+    long best_gcd = 0;
+    double best_angle = 0;
+    auto gcd = [](long x, long y) { while(y) { const long t = x % y; x = y; y = t; } return x; };
     const long bound = long(std::ceil(ratio)) + 1;
-    for(long a = 0; a <= bound && !found; ++a)
-      for(long b = 0; b <= bound && !found; ++b) {
+    for(long a = 0; a <= bound; ++a)
+      for(long b = 0; b <= bound; ++b) {
         const double gx = double(a) + double(b) * wx0, gy = double(b) * wy0;
-        if(std::abs(std::sqrt(gx * gx + gy * gy) - ratio) <= 1e-7 * ratio) {
-          orientation -= std::atan2(gy, gx);
+        if(std::abs(std::sqrt(gx * gx + gy * gy) - ratio) <= 1e-7 * ratio && gcd(a, b) > best_gcd) {
+          best_gcd = gcd(a, b);
+          best_angle = std::atan2(gy, gx);
           found = true;
         }
       }
+    if(found) orientation -= best_angle;
     if(!found) {
       std::ostringstream os;
       os << "edge length " << h << " does not divide the lattice of the metric (spacing " << spacing

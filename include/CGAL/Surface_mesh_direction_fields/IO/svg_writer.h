@@ -546,30 +546,53 @@ void write_field_svg(std::ostream& os, const TriangleMesh& tm, int N,
 }
 
 /// \ingroup PkgSurfaceMeshDirectionFieldsIO
+/// A line segment drawn on a face of a mesh by write_strokes_svg(): from `a` to `b`, in 3D, on or
+/// near the face.
+template <typename TriangleMesh>
+struct Svg_stroke
+{
+  typename boost::graph_traits<TriangleMesh>::face_descriptor face;   ///< the face it is drawn with
+  std::array<double, 3> a, b;                                            ///< its ends
+};
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsIO
+/// Writes an SVG picture of a triangle mesh with line segments drawn on its faces: the mesh as
+/// write_field_svg() draws it (culled, painted back to front), each segment drawn right after
+/// its face, so that nearer parts of the surface hide the segments behind them, with
+/// `options.glyph_color` and width `options.glyph_stroke_width`; and the singularities (or
+/// cones, or any marked vertices with an index) as write_field_svg() draws them. `N` only
+/// labels the indices in the legend (as fractions \f$k/N\f$). Used for hatching
+/// (write_streamlines_svg()) and for a remesh drawn over its input (`smdf remesh --svg`).
+/// Throws as write_field_svg().
+template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
+void write_strokes_svg(std::ostream& os, const TriangleMesh& tm, const std::vector<Svg_stroke<TriangleMesh>>& strokes, int N,
+                       const std::vector<std::pair<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, double>>& singularities,
+                       const Svg_options& options = Svg_options(), const NamedParameters& np = parameters::default_values())
+{
+  auto fim = CGAL::get_initialized_face_index_map(tm);
+  internal::Svg_face_strokes per_face;
+  per_face.segments.resize(num_faces(tm));
+  for(const auto& s : strokes)
+    per_face.segments[std::size_t(get(fim, s.face))].push_back(std::array<double, 6>{{s.a[0], s.a[1], s.a[2], s.b[0], s.b[1], s.b[2]}});
+  // (at least 2: strokes are lines, without the arrow heads of N = 1)
+  write_field_svg(os, tm, per_face, (std::max)(N, 2), singularities, options, np);
+}
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsIO
 /// Writes a pen-and-ink SVG picture of streamlines on a mesh (Lai et al. 2010, Figs. 14 and
-/// 15: hatching along a cross field): the mesh as write_field_svg() draws it (culled, painted
-/// back to front, so that nearer parts of the surface hide the strokes behind them), each
-/// streamline drawn as strokes of `options.glyph_color` and width
-/// `options.glyph_stroke_width`, with the face it lies in. For a drawing without the mesh's
-/// lines set `options.edge_stroke_width` to 0 and a light `options.face_color`.
-/// `streamlines` are those of trace_streamlines() on the same mesh. Throws as
-/// write_field_svg().
+/// 15: hatching along a cross field): write_strokes_svg() with every piece of every streamline
+/// (those of trace_streamlines() on the same mesh) drawn with the face it lies in. For a drawing
+/// without the mesh's lines set `options.edge_stroke_width` to 0 and a light
+/// `options.face_color`. Throws as write_field_svg().
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
 void write_streamlines_svg(std::ostream& os, const TriangleMesh& tm, const std::vector<Streamline<TriangleMesh>>& streamlines,
                            const Svg_options& options = Svg_options(), const NamedParameters& np = parameters::default_values())
 {
-  auto fim = CGAL::get_initialized_face_index_map(tm);
-  internal::Svg_face_strokes strokes;
-  strokes.segments.resize(num_faces(tm));
+  std::vector<Svg_stroke<TriangleMesh>> strokes;
   for(const auto& s : streamlines)
-    for(std::size_t i = 0; i + 1 < s.points.size() && i < s.faces.size(); ++i) {
-      const auto& a = s.points[i];
-      const auto& b = s.points[i + 1];
-      strokes.segments[std::size_t(get(fim, s.faces[i]))].push_back(std::array<double, 6>{{a[0], a[1], a[2], b[0], b[1], b[2]}});
-    }
-  // (N = 2: strokes are lines, without the arrow heads of N = 1)
-  write_field_svg(os, tm, strokes, 2, std::vector<std::pair<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, double>>(),
-                  options, np);
+    for(std::size_t i = 0; i + 1 < s.points.size() && i < s.faces.size(); ++i)
+      strokes.push_back(Svg_stroke<TriangleMesh>{s.faces[i], s.points[i], s.points[i + 1]});
+  write_strokes_svg(os, tm, strokes, 2, {}, options, np);
 }
 
 } // namespace Surface_mesh_direction_fields
