@@ -524,6 +524,18 @@ def test_remesh_cones_and_files(smdf, c, torus, tmp, cube, spot):
                 "remesh --svg: the remesh's edges and its visible cones of index 1/4 drawn")
     else:
         c.check(False, "remesh --svg written")
+    knot = os.path.join(tmp, "spot_knot.svg")
+    r = smdf.json(["remesh", spot, "--polycube", "box", "--faces", "700", "--out", out, "--knot-svg", knot], "remesh --knot-svg")
+    if r and os.path.isfile(knot):
+        with open(knot) as f:
+            lines = f.read().count("<line")
+        quads = r["faces_by_size"]["4"]
+        # 4 curves per quad, 6 of 8 pieces drawn each (the gap where it passes under); back faces culled
+        c.check(quads * 6 < lines <= quads * 24, "remesh --knot-svg: %d strand pieces for %d quads" % (lines, quads))
+    else:
+        c.check(False, "remesh --knot-svg written")
+    smdf.error(["remesh", spot, "--polycube", "octahedron", "--faces", "700", "--out", out, "--knot-svg", knot], "remesh --knot-svg on triangles", 2,
+               "quad")
     # bad input
     smdf.error(["remesh", torus, "--polycube", "box", "--faces", "500", "--out", out], "remesh --polycube on a torus", 1,
                ["genus-0", "genus 1"])

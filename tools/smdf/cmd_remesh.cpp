@@ -237,6 +237,64 @@ void write_remesh_svg(const Args& args, const Mesh& input, const Mesh& remesh, i
   write_lines_file(args.value("svg"), os.str());
 }
 
+// --knot-svg: a woven Celtic knot on a quad remesh (Lai et al. Fig. 13): the strands follow the
+// medial graph (in each quad, a curve from the midpoint of each edge to that of the next one,
+// bent towards their shared corner) and cross at every edge midpoint. Each curve passes over at
+// the crossing where it starts (counterclockwise in its quad) and under where it ends, which
+// alternates along every strand (the two curves of one strand at a crossing both end there or
+// both start there); "under" is drawn as a gap. Drawn on the remesh fanned into triangles.
+void write_knot_svg(const Args& args, const Mesh& input, const Mesh& remesh)
+{
+  Mesh tri;
+  for(vertex_descriptor v : vertices(remesh)) tri.add_vertex(remesh.point(v));
+  std::vector<SMDF::Svg_stroke<Mesh>> strokes;
+  auto mid = [&](halfedge_descriptor h) { return CGAL::midpoint(remesh.point(source(h, remesh)), remesh.point(target(h, remesh))); };
+  auto arr = [](const K::Point_3& p) { return std::array<double, 3>{{p.x(), p.y(), p.z()}}; };
+  for(face_descriptor f : faces(remesh)) {
+    std::vector<halfedge_descriptor> hs;
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, remesh), remesh)) hs.push_back(h);
+    std::vector<face_descriptor> fan;   // triangle i: corners 0, i + 1, i + 2
+    for(std::size_t i = 1; i + 1 < hs.size(); ++i)
+      fan.push_back(tri.add_face(target(hs[0], remesh), target(hs[i], remesh), target(hs[i + 1], remesh)));
+    K::Vector_3 c(0, 0, 0);
+    for(halfedge_descriptor h : hs) c = c + (remesh.point(target(h, remesh)) - CGAL::ORIGIN) / double(hs.size());
+    const K::Point_3 centre = CGAL::ORIGIN + c;
+    for(std::size_t i = 0; i < hs.size(); ++i) {
+      const halfedge_descriptor a = hs[i], b = hs[(i + 1) % hs.size()];   // they share target(a)
+      const K::Point_3 p0 = mid(a), p2 = mid(b), corner = remesh.point(target(a, remesh));
+      const K::Point_3 p1 = CGAL::midpoint(corner, centre);
+      const int pieces = 8, drawn = 6;   // the last quarter is the gap where the curve passes under
+      for(int k = 0; k < drawn; ++k) {
+        auto at = [&](double t) {
+          return CGAL::ORIGIN + ((p0 - CGAL::ORIGIN) * ((1 - t) * (1 - t)) + (p1 - CGAL::ORIGIN) * (2 * t * (1 - t)) + (p2 - CGAL::ORIGIN) * (t * t));
+        };
+        const K::Point_3 x = at(double(k) / pieces), y = at(double(k + 1) / pieces);
+        // the fan triangle nearest to the piece's midpoint
+        const K::Point_3 m = CGAL::midpoint(x, y);
+        face_descriptor best = Mesh::null_face();
+        double best_d = 1e300;
+        for(std::size_t t = 0; t < fan.size(); ++t) {
+          if(fan[t] == Mesh::null_face()) continue;
+          const halfedge_descriptor th = halfedge(fan[t], tri);
+          const K::Point_3 g = CGAL::centroid(tri.point(source(th, tri)), tri.point(target(th, tri)), tri.point(target(next(th, tri), tri)));
+          const double d = CGAL::squared_distance(g, m);
+          if(d < best_d) { best_d = d; best = fan[t]; }
+        }
+        if(best != Mesh::null_face()) strokes.push_back(SMDF::Svg_stroke<Mesh>{best, arr(x), arr(y)});
+      }
+    }
+  }
+  SMDF::Svg_options view = svg_options(args);
+  if(!args.has("view")) view.up_axis = default_up_axis(input);
+  view.edge_stroke_width = 0;
+  view.face_color = "#f2ead8";
+  view.glyph_color = "#6b3a1f";
+  view.glyph_stroke_width = 2.2;
+  std::ostringstream os;
+  SMDF::write_strokes_svg(os, tri, strokes, 4, {}, view);
+  write_lines_file(args.value("knot-svg"), os.str());
+}
+
 // The cones of --cones assigned to the corners of a preset polyhedron: corner i takes the cone
 // farthest from the centroid along direction i. All must have curvature K; each must lie on the
 // side of its direction (positive dot product), else the assignment is ambiguous.
@@ -294,6 +352,8 @@ Json run_remesh(const Args& args)
     throw Usage_error("--grid mixed needs a polyhedron of squares and triangles: --polycube obelisk or --polycube FILE");
   if(!args.has("out")) throw Usage_error("option --out FILE is required (.off or .obj)");
   const std::string out_file = args.value("out");
+  if(args.has("knot-svg") && (grid_name != "quad" || polycube == "octahedron" || polycube == "obelisk"))
+    throw Usage_error("--knot-svg draws a Celtic knot on a quad remesh: use --grid quad");
   if((args.has("cones") || args.has("cone-indices")) && args.has("lengths"))
     throw Usage_error("give at most one of --cones and --lengths (the lengths file is the metric)");
   if((args.has("cones") || args.has("cone-indices")) && polycube == "obelisk")
@@ -565,6 +625,7 @@ Json run_remesh(const Args& args)
     if(!CGAL::IO::write_polygon_mesh(out_file, remesh, CGAL::parameters::stream_precision(17)))
       throw file_error(out_file, "cannot write the remesh (the extension must be .off or .obj)", "output");
     if(args.has("svg")) write_remesh_svg(args, mesh, remesh, grid == SMDF::SQUARE_GRID ? 4 : 6);
+    if(args.has("knot-svg")) write_knot_svg(args, mesh, remesh);
   }
   stage("done");
   out["timings"] = std::move(timings);
@@ -587,6 +648,7 @@ Command remesh_command()
            {"svg", "FILE", "write an SVG picture of the remesh (on the input surface), its cones marked"},
            {"view", "A,E[,UP]", "view of --svg: azimuth,elevation in degrees, up axis x|y|z"},
            {"width", "PX", "width of the --svg picture in pixels (default 800)"},
+           {"knot-svg", "FILE", "write a woven Celtic knot along the quad remesh's medial graph (Lai et al. Fig. 13)"},
            {"progress", "", "report each stage on stderr with the elapsed time"}},
           "regular quad or triangle remesh from a flat cone metric",
           "Lai et al. 2010, section 5: develops a flat cone metric of the mesh (its own edge lengths,\n"

@@ -265,7 +265,7 @@ Json turning_numbers(const SMDF::Field_topology<Mesh>& topo)
 SMDF::Svg_options svg_options(const Args& args)
 {
   SMDF::Svg_options svg;
-  if(!args.has("svg") && !args.has("hatching-svg") && (args.has("view") || args.has("width")))
+  if(!args.has("svg") && !args.has("hatching-svg") && !args.has("knot-svg") && (args.has("view") || args.has("width")))
     throw Usage_error(std::string("option --") + (args.has("view") ? "view" : "width") + " needs --svg FILE" +
                       (args.command == "rosy" ? " or --hatching-svg FILE" : ""));
   if(args.has("view")) {

@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Regenerates the remeshing pictures of the manual (section "Pictures of Remeshing") with the smdf
+# tool: ./make_remeshing_figures.sh [path/to/smdf]. Spot ships in data/.
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+root=$(cd "$here/../../.." && pwd)
+smdf=${1:-$root/build/tools/smdf/smdf}
+spot=$root/data/spot.off
+view=(--view 60,20,y --width 500)
+run() { echo "smdf $*"; "$smdf" "$@" > /dev/null || echo "  (exit $?: see the caption)"; }
+# quads through the box polycube: eight cones of valence 3
+run remesh "$spot" --polycube box --faces 2000 --out /tmp/smdf_spot_quads.obj --svg "$here/spot_remesh_box.svg" "${view[@]}"
+# triangles through the octahedron: six cones of valence 4
+run remesh "$spot" --polycube octahedron --faces 1200 --out /tmp/smdf_spot_triangles.obj --svg "$here/spot_remesh_octahedron.svg" "${view[@]}"
+# quads and triangles through the obelisk of Lai et al. Fig. 1c (one face comes out inverted:
+# the tool exits 3 and still writes the remesh)
+run remesh "$spot" --polycube obelisk --grid mixed --faces 1500 --out /tmp/smdf_spot_obelisk.obj --svg "$here/spot_remesh_obelisk.svg" "${view[@]}"
+# a woven Celtic knot along the box remesh's medial graph (Lai et al. Fig. 13)
+run remesh "$spot" --polycube box --faces 700 --out /tmp/smdf_spot_knot.obj --knot-svg "$here/spot_celtic_knot.svg" "${view[@]}"
