@@ -444,6 +444,7 @@ void vertex_editing(const Surface_mesh& mesh, const LengthMap& flat, const Verte
     SMDF_CHECK_MSG(got == want, name << ", vertex editing " << what << ": the read-back is the cones (" << got.size() << " found)");
   };
   read_back("before");
+  auto field_after = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
   std::vector<Vertex> picks;   // three vertices away from the cones, spread over the index range
   const std::size_t nv = num_vertices(mesh);
   for(std::size_t i = 1; picks.size() < 3 && i < nv; i += nv / 4)
@@ -469,6 +470,26 @@ void vertex_editing(const Surface_mesh& mesh, const LengthMap& flat, const Verte
     read_back("after a soft edit");
   }
   SMDF_CHECK_MSG(monotone, name << ", vertex editing: soft constraints approached monotonically (" << last << " at weight 100)");
+  {   // hard and soft mixed: the first met exactly, the others approached as their weight grows
+    double previous = 1e300;
+    bool mixed_ok = true;
+    for(double lambda : {0.01, 1.}) {
+      editor.set_direction_constraints(c, std::vector<double>{0., lambda, lambda});
+      const SMDF::Field_edit_status st = editor.edit();
+      editor.vertex_angles(field_after);
+      const double hard = std::abs(std::remainder(get(field_after, c[0].first) - c[0].second, 2 * M_PI / N));
+      double soft = 0;
+      for(std::size_t i = 1; i < c.size(); ++i) soft = std::max(soft, std::abs(std::remainder(get(field_after, c[i].first) - c[i].second, 2 * M_PI / N)));
+      mixed_ok = mixed_ok && st.success && hard <= 1e-12 && soft < previous && soft > 1e-9;
+      previous = soft;
+      read_back("after a mixed edit");
+    }
+    SMDF_CHECK_MSG(mixed_ok, name << ", vertex editing: one hard and two soft constraints, the hard one met exactly, the soft ones approached");
+    bool count_refused = false;
+    try { editor.set_direction_constraints(c, std::vector<double>{0., 1.}); }
+    catch(const SMDF::Input_error& e) { count_refused = std::string(e.what()).find("weights for") != std::string::npos; }
+    SMDF_CHECK_MSG(count_refused, name << ", vertex editing: a weight count that is not the constraint count is refused");
+  }
   const std::vector<std::pair<Vertex, double>> lc = {{picks[0], 0.5}, {picks[1], 2.0}};
   editor.set_length_constraints(lc);
   const SMDF::Field_edit_status ls = editor.edit();

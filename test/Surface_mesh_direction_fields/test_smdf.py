@@ -715,7 +715,16 @@ def test_rosy(smdf, c, torus, tmp):
     c.check(None not in soft and soft[1] < soft[0], "rosy soft edits: closer with a larger weight (%r)" % soft)
     with open(edit, "w") as f:
         f.write("0 1 0 0 2\n200 0 1 0\n")
-    smdf.error(["rosy", torus, "--cones", tcones, "--edit", edit], "rosy --edit: two weights", 1, ["line 2", "one weight"])
+    x = smdf.json(["rosy", torus, "--cones", tcones, "--edit", edit, "--field-out", vout], "rosy --edit: hard and soft mixed")
+    if x:
+        vv = read_vectors(vout)
+        n = vertex_normals(tverts, tfaces)[200]
+        p = vsub((0, 1, 0), tuple(vdot((0, 1, 0), n) * t for t in n))
+        c.check(x.get("success") is True and x["edit"]["hard_directions"] == 1 and line_angle_error(vv[200], p, 4) < 1e-9
+                and x["edit"]["max_direction_error"] > 1e-9, "rosy --edit mixed: the hard line met exactly, the soft one approached")
+    with open(edit, "w") as f:
+        f.write("0 1 0 0 -2\n")
+    smdf.error(["rosy", torus, "--cones", tcones, "--edit", edit], "rosy --edit: a negative weight", 1, ["line 1", "positive"])
     with open(edit, "w") as f:
         f.write("10 1 0 0\n")
     smdf.error(["rosy", torus, "--cones", tcones, "--edit", edit], "rosy --edit at a cone", 1, "cone")

@@ -224,19 +224,19 @@ void open_mesh_targets(const Mesh& mesh, const Boundary_geometry& b, int N, Boun
 }
 
 // --edit FILE ('vertex x y z [weight]') and --length FILE ('vertex length [weight]'): the pairs
-// and the one weight of the file (0: hard).
+// and the weight of each (0, no weight given: hard).
 struct Constraint_lines
 {
   std::vector<std::pair<vertex_descriptor, K::Vector_3>> directions;
   std::vector<std::pair<vertex_descriptor, double>> lengths;
-  double weight = 0;
+  std::vector<double> weights;
+  std::size_t hard() const { return std::size_t(std::count(weights.begin(), weights.end(), 0.)); }
 };
 
 Constraint_lines read_constraint_file(const std::string& file, const Mesh& mesh, bool lengths)
 {
   Constraint_lines c;
   const std::size_t values = lengths ? 1 : 3;
-  std::size_t first_line = 0;
   std::vector<char> seen(num_vertices(mesh), 0);
   for_each_data_line(file, [&](std::size_t line, const std::vector<std::string>& f) {
     if(f.size() != 1 + values && f.size() != 2 + values)
@@ -247,10 +247,7 @@ Constraint_lines read_constraint_file(const std::string& file, const Mesh& mesh,
     for(std::size_t i = 0; i < values; ++i) x[i] = finite_field(file, line, f[1 + i]);
     const double w = f.size() == 2 + values ? finite_field(file, line, f[1 + values]) : 0.;
     if(f.size() == 2 + values && !(w > 0)) throw line_error(file, line, "the weight must be positive (no weight: a hard constraint)");
-    if(first_line == 0) { first_line = line; c.weight = w; }
-    else if(w != c.weight)
-      throw line_error(file, line, "weight " + format_real(w) + " differs from that of line " + std::to_string(first_line) + " (" +
-                                       format_real(c.weight) + "): all constraints of a file are hard, or soft with one weight");
+    c.weights.push_back(w);
     const vertex_descriptor vd(static_cast<Mesh::size_type>(v));
     if(lengths) {
       if(!(x[0] > 0)) throw line_error(file, line, "the length must be positive");
@@ -517,15 +514,15 @@ Json run_rosy(const Args& args)
       SMDF::vertex_vectors_to_angles(mesh, vectors, constraint_angles, SMDF::parameters::edge_length_map(flat));
       std::vector<std::pair<vertex_descriptor, double>> pairs;
       for(const auto& d : c.directions) pairs.emplace_back(d.first, constraint_angles[d.first]);
-      on_file(args.value("edit"), [&] { editor.set_direction_constraints(pairs, c.weight); return 0; });
+      on_file(args.value("edit"), [&] { editor.set_direction_constraints(pairs, c.weights); return 0; });
       e["directions"] = pairs.size();
-      e["direction_weight"] = c.weight;
+      e["hard_directions"] = c.hard();
     }
     if(args.has("length")) {
       const Constraint_lines c = read_constraint_file(args.value("length"), mesh, true);
-      on_file(args.value("length"), [&] { editor.set_length_constraints(c.lengths, c.weight); return 0; });
+      on_file(args.value("length"), [&] { editor.set_length_constraints(c.lengths, c.weights); return 0; });
       e["lengths"] = c.lengths.size();
-      e["length_weight"] = c.weight;
+      e["hard_lengths"] = c.hard();
     }
     clock.lap();
     const SMDF::Field_edit_status es = editor.edit();
@@ -637,7 +634,7 @@ Command rosy_command()
            {"method", "M", "rotation-compensation (default on closed meshes), parallel (default on open ones) or trivial-connection"},
            {"turning", "LIST", "turning numbers 'g:t,...' (multiples of 1/N): of the handle loops (rotation-compensation) or generators (trivial-connection)"},
            {"boundary", "B", "open meshes: free (default), parallel or orthogonal (the field follows the boundary)"},
-           {"edit", "FILE", "direction constraints, lines 'vertex x y z [weight]' (no weight: hard)"},
+           {"edit", "FILE", "direction constraints, lines 'vertex x y z [weight]' (no weight: hard; hard and soft may be mixed)"},
            {"length", "FILE", "length constraints, lines 'vertex length [weight]'"},
            {"field-out", "FILE", "write one 'x y z' per vertex (rotation compensation; scaled by the edited lengths)"},
            {"face-field-out", "FILE", "write one unit direction 'x y z' per face"},
@@ -666,8 +663,8 @@ Command rosy_command()
           "angle to a multiple of 2 pi / N (pi / N for odd N) and builds the field on the double cover\n"
           "(4.3), parallel or orthogonal to every boundary edge.\n"
           "--edit and --length edit the vertex field (4.2): harmonic interpolation of the rotation\n"
-          "and the log-length with the cotan Laplacian; all lines of a file hard, or soft with one\n"
-          "weight lambda. Directions are projected on the vertex tangent plane (mean face normal).\n"
+          "and the log-length with the cotan Laplacian; a line without weight is a hard constraint,\n"
+          "one with weight lambda a soft one. Directions are projected on the vertex tangent plane.\n"
           "Prints {N, N_from, method, boundary, metric: {converged, iterations, max_curvature_error,\n"
           "triangulation_changed}, boundary_turning_over_pi (per loop), holonomy (with --holonomy):\n"
           "[{kind, cone, rotation_over_pi, translation, compatible}], compatible_N,\n"
@@ -676,7 +673,8 @@ Command rosy_command()
           "parallel_rosy: {compatible, max_deviation, failing_loops}, rotation_compensation:\n"
           "{periods, handle_turning_numbers, max_harmonic_residual, max_inconsistency} or\n"
           "trivial_connection: {energy, max_rotation, ...} or boundary_aligned, edit: {directions,\n"
-          "lengths, max_direction_error, max_length_error, length_range}, prescribed and found:\n"
+          "hard_directions, lengths, hard_lengths, max_direction_error, max_length_error,\n"
+          "length_range}, prescribed and found:\n"
           "[{vertex, index}] (found: read back from the face field with its matching),\n"
           "generator_turning_numbers, max_rotation_over_pi_over_N, success, timings: {metric_s,\n"
           "compensation_s, edit_s}, hatching: {strokes, total_length}}.\n"

@@ -78,12 +78,15 @@ public:
     factored_ = false;
   }
 
-  // The constrained nodes (distinct) and the soft weight (0: hard); refactors on change.
-  void set_constraints(const std::vector<int>& nodes, double soft_weight)
+  // The constrained nodes (distinct) and their soft weights (0: hard), one per node or one for
+  // all; refactors on change.
+  void set_constraints(const std::vector<int>& nodes, const std::vector<double>& soft_weights)
   {
-    if(nodes != nodes_ || soft_weight != weight_) factored_ = false;
+    std::vector<double> w(nodes.size(), soft_weights.empty() ? 0. : soft_weights.front());
+    if(soft_weights.size() == nodes.size()) w = soft_weights;
+    if(nodes != nodes_ || w != weights_) factored_ = false;
     nodes_ = nodes;
-    weight_ = soft_weight;
+    weights_.swap(w);
   }
 
   // s for the values of the constrained nodes (in set_constraints() order)
@@ -97,12 +100,13 @@ public:
       factor_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     }
     Eigen::VectorXd b = Eigen::VectorXd::Zero(Eigen::Index(unknowns_.size()));
+    bool hard = false;
     for(std::size_t k = 0; k < nodes_.size(); ++k) {
       const int i = nodes_[k];
-      if(weight_ > 0) b[column_[std::size_t(i)]] += weight_ * values[k];
-      else s[std::size_t(i)] = values[k];
+      if(weights_[k] > 0) b[column_[std::size_t(i)]] += weights_[k] * values[k];
+      else { s[std::size_t(i)] = values[k]; hard = true; }
     }
-    if(weight_ <= 0)   // move the Dirichlet values to the right-hand side
+    if(hard)   // move the Dirichlet values to the right-hand side
       for(const Link& l : links_) {
         const int ca = column_[std::size_t(l.a)], cb = column_[std::size_t(l.b)];
         if(ca >= 0 && cb < 0 && is_fixed_[std::size_t(l.b)]) b[ca] += l.w * s[std::size_t(l.b)];
@@ -121,9 +125,10 @@ private:
   {
     std::vector<char> constrained_component(std::size_t(components_), 0);
     is_fixed_.assign(n_, 0);
-    for(int i : nodes_) {
+    for(std::size_t k = 0; k < nodes_.size(); ++k) {
+      const int i = nodes_[k];
       constrained_component[std::size_t(component_[std::size_t(i)])] = 1;
-      if(weight_ <= 0) is_fixed_[std::size_t(i)] = 1;
+      if(!(weights_[k] > 0)) is_fixed_[std::size_t(i)] = 1;
     }
     // unknowns: nodes of constrained components, minus the Dirichlet nodes
     column_.assign(n_, -1);
@@ -140,8 +145,8 @@ private:
       if(cb >= 0) t.emplace_back(cb, cb, l.w);
       if(ca >= 0 && cb >= 0) t.emplace_back((std::max)(ca, cb), (std::min)(ca, cb), -l.w);
     }
-    if(weight_ > 0)
-      for(int i : nodes_) t.emplace_back(column_[std::size_t(i)], column_[std::size_t(i)], weight_);
+    for(std::size_t k = 0; k < nodes_.size(); ++k)
+      if(weights_[k] > 0) t.emplace_back(column_[std::size_t(nodes_[k])], column_[std::size_t(nodes_[k])], weights_[k]);
     Cholmod_cholesky::Matrix L(Eigen::Index(unknowns_.size()), Eigen::Index(unknowns_.size()));
     L.setFromTriplets(t.begin(), t.end());
     L.makeCompressed();
@@ -155,7 +160,7 @@ private:
   std::vector<int> component_;
   int components_ = 0;
   std::vector<int> nodes_;
-  double weight_ = 0;
+  std::vector<double> weights_;
   bool factored_ = false;
   std::vector<char> is_fixed_;
   std::vector<int> column_, unknowns_;
@@ -179,11 +184,12 @@ public:
   // (node, value) pairs checked; `node_of` maps the user's descriptor to a node (-1: not in the
   // mesh), `forbidden` names a node that cannot carry a constraint (or returns empty)
   template <typename Range, typename NodeOf, typename Forbidden>
-  static void read(const Range& r, double weight, const char* what, const char* element, std::size_t n, NodeOf node_of,
+  static void read(const Range& r, const std::vector<double>& weights, const char* what, const char* element, std::size_t n, NodeOf node_of,
                    Forbidden forbidden, std::vector<int>& nodes, std::vector<double>& values)
   {
-    if(!(weight >= 0) || !std::isfinite(weight))
-      throw Input_error(Input_error::INVALID_ARGUMENT, std::string(what) + " constraint weight must be a non-negative number");
+    for(double weight : weights)
+      if(!(weight >= 0) || !std::isfinite(weight))
+        throw Input_error(Input_error::INVALID_ARGUMENT, std::string(what) + " constraint weight must be a non-negative number");
     std::vector<int> idx;
     std::vector<double> v;
     std::vector<char> seen(n, 0);
@@ -201,24 +207,28 @@ public:
       idx.push_back(i);
       v.push_back(double(c.second));
     }
+    if(weights.size() != 1 && weights.size() != idx.size())
+      throw Input_error(Input_error::INVALID_ARGUMENT, std::string(what) + " constraints: " + std::to_string(weights.size()) +
+                                                           " weights for " + std::to_string(idx.size()) + " constraints (give one per constraint)");
     nodes.swap(idx);
     values.swap(v);
   }
 
-  void set_directions(std::vector<int> nodes, std::vector<double> values, double weight)
+  // weights: one per constraint, or one for all (0: hard)
+  void set_directions(std::vector<int> nodes, std::vector<double> values, const std::vector<double>& weights)
   {
     direction_nodes_.swap(nodes);
     direction_values_.swap(values);
-    rotation_.set_constraints(direction_nodes_, weight);
+    rotation_.set_constraints(direction_nodes_, weights);
   }
 
-  void set_lengths(std::vector<int> nodes, std::vector<double> values, double weight)
+  void set_lengths(std::vector<int> nodes, std::vector<double> values, const std::vector<double>& weights)
   {
     for(double v : values)
       if(!(v > 0)) throw Input_error(Input_error::INVALID_ARGUMENT, "length constraints must be positive, got " + std::to_string(v));
     length_nodes_.swap(nodes);
     length_values_.swap(values);
-    length_.set_constraints(length_nodes_, weight);
+    length_.set_constraints(length_nodes_, weights);
   }
 
   Field_edit_status edit()
@@ -321,10 +331,19 @@ public:
   template <typename FaceAngleRange>
   void set_direction_constraints(const FaceAngleRange& constraints, double soft_weight = 0)
   {
+    set_direction_constraints(constraints, std::vector<double>(1, soft_weight));
+  }
+
+  /// As above, with one weight per constraint, in the order of `constraints` (0: that one is
+  /// hard), so that hard and soft constraints can be mixed. Throws `Input_error` also when the
+  /// number of weights is not that of the constraints.
+  template <typename FaceAngleRange>
+  void set_direction_constraints(const FaceAngleRange& constraints, const std::vector<double>& soft_weights)
+  {
     std::vector<int> nodes;
     std::vector<double> values;
-    read(constraints, soft_weight, "direction", nodes, values);
-    core_.set_directions(std::move(nodes), std::move(values), soft_weight);
+    read(constraints, soft_weights, "direction", nodes, values);
+    core_.set_directions(std::move(nodes), std::move(values), soft_weights);
   }
 
   /// Replaces the length constraints: pairs (face, length > 0); `soft_weight` as for the
@@ -332,10 +351,17 @@ public:
   template <typename FaceLengthRange>
   void set_length_constraints(const FaceLengthRange& constraints, double soft_weight = 0)
   {
+    set_length_constraints(constraints, std::vector<double>(1, soft_weight));
+  }
+
+  /// As above, with one weight per constraint (0: that one is hard).
+  template <typename FaceLengthRange>
+  void set_length_constraints(const FaceLengthRange& constraints, const std::vector<double>& soft_weights)
+  {
     std::vector<int> nodes;
     std::vector<double> values;
-    read(constraints, soft_weight, "length", nodes, values);
-    core_.set_lengths(std::move(nodes), std::move(values), soft_weight);
+    read(constraints, soft_weights, "length", nodes, values);
+    core_.set_lengths(std::move(nodes), std::move(values), soft_weights);
   }
 
   /// Solves for \f$\psi\f$ and \f$\rho\f$ with the current constraints (factoring only when the
@@ -363,7 +389,7 @@ public:
 
 private:
   template <typename Range>
-  void read(const Range& r, double weight, const char* what, std::vector<int>& nodes, std::vector<double>& values) const
+  void read(const Range& r, const std::vector<double>& weight, const char* what, std::vector<int>& nodes, std::vector<double>& values) const
   {
     const internal::Mesh_arrays<TriangleMesh>& m = im_.arrays();
     internal::Rosy_edit_core::read(r, weight, what, "face", m.number_of_faces(), [&](face_descriptor f) { return m.face_index(f); },
@@ -421,10 +447,19 @@ public:
   template <typename VertexAngleRange>
   void set_direction_constraints(const VertexAngleRange& constraints, double soft_weight = 0)
   {
+    set_direction_constraints(constraints, std::vector<double>(1, soft_weight));
+  }
+
+  /// As above, with one weight per constraint, in the order of `constraints` (0: that one is
+  /// hard), so that hard and soft constraints can be mixed. Throws `Input_error` also when the
+  /// number of weights is not that of the constraints.
+  template <typename VertexAngleRange>
+  void set_direction_constraints(const VertexAngleRange& constraints, const std::vector<double>& soft_weights)
+  {
     std::vector<int> nodes;
     std::vector<double> values;
-    read(constraints, soft_weight, "direction", nodes, values);
-    core_.set_directions(std::move(nodes), std::move(values), soft_weight);
+    read(constraints, soft_weights, "direction", nodes, values);
+    core_.set_directions(std::move(nodes), std::move(values), soft_weights);
   }
 
   /// Replaces the length constraints: pairs (vertex, length > 0); `soft_weight` as for the
@@ -432,10 +467,17 @@ public:
   template <typename VertexLengthRange>
   void set_length_constraints(const VertexLengthRange& constraints, double soft_weight = 0)
   {
+    set_length_constraints(constraints, std::vector<double>(1, soft_weight));
+  }
+
+  /// As above, with one weight per constraint (0: that one is hard).
+  template <typename VertexLengthRange>
+  void set_length_constraints(const VertexLengthRange& constraints, const std::vector<double>& soft_weights)
+  {
     std::vector<int> nodes;
     std::vector<double> values;
-    read(constraints, soft_weight, "length", nodes, values);
-    core_.set_lengths(std::move(nodes), std::move(values), soft_weight);
+    read(constraints, soft_weights, "length", nodes, values);
+    core_.set_lengths(std::move(nodes), std::move(values), soft_weights);
   }
 
   /// Solves for \f$\psi\f$ and \f$\rho\f$ (factoring only when the constrained vertices or the
@@ -473,7 +515,7 @@ public:
 
 private:
   template <typename Range>
-  void read(const Range& r, double weight, const char* what, std::vector<int>& nodes, std::vector<double>& values) const
+  void read(const Range& r, const std::vector<double>& weight, const char* what, std::vector<int>& nodes, std::vector<double>& values) const
   {
     const internal::Mesh_arrays<TriangleMesh>& m = im_.arrays();
     const std::vector<double>& K = im_.curvatures();

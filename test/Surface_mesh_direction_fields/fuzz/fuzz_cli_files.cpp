@@ -2,7 +2,7 @@
 // compiled with main renamed): the bytes after the first one are written to a file that is
 // passed, on data/torus.off, as --singularities-file or --constraints (connection), --lengths
 // (holonomy, connection, remesh), --field or --matching (singularities), --polycube (remesh),
-// chosen by the first byte.
+// --edit or --length (rosy), chosen by the first byte.
 // Every input must end with an exit code of 0 to 3; a crash or an escaping exception is a bug.
 #include <cstdint>
 #include <cstdio>
@@ -44,7 +44,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string file = write_temp("input", data + 1, size - 1);
   std::vector<std::string> args;
   const std::string out = "/tmp/smdf_fuzz_remesh_" + std::to_string(getpid()) + ".off";
-  switch(data[0] % 8) {
+  switch(data[0] % 10) {
+    case 8: args = {"rosy", mesh, "--cones", "10:pi/2,100:-pi/2", "--edit", file}; break;
+    case 9: args = {"rosy", mesh, "--cones", "10:pi/2,100:-pi/2", "--length", file}; break;
     case 6: args = {"remesh", mesh, "--lengths", file, "--faces", "200", "--out", out}; break;
     case 7: args = {"remesh", mesh, "--polycube", file, "--faces", "200", "--out", out}; break;
     case 0: args = {"connection", mesh, "--singularities-file", file}; break;
