@@ -80,11 +80,14 @@ run_example() {
   show cone-metric "$mesh" --cones "$cones" --no-flips --lengths-out "$out/spot_cone_metric.txt"
   show connection "$mesh" --lengths "$out/spot_cone_metric.txt" --N 4 --singularities "$sing" \
     --svg "$out/spot_parallel_cross_field.svg"
-  show remesh "$mesh" --polycube box --faces 2000 --out "$out/spot_quads.obj"
+  show rosy "$mesh" --cones "$cones" --hatching-svg "$out/spot_hatching.svg" --view 60,20,y
+  show remesh "$mesh" --polycube box --faces 2000 --out "$out/spot_quads.obj" --svg "$out/spot_quads.svg"
   echo "Ran smdf on $mesh: a cross field with 8 singularities of index 1/4, a flat cone metric with"
-  echo "8 cones of pi/2, the parallel cross field of that metric (max_rotation 0), and a quad remesh"
+  echo "8 cones of pi/2, the parallel cross field of that metric (max_rotation 0), the same field by"
+  echo "Lai et al.'s pipeline (rosy: read back with its matching, found == prescribed), and a quad remesh"
   echo "through the box polycube metric ($out/spot_quads.obj: 8 vertices of valence 3, all others 4)."
-  echo "Pictures: $out/spot_cross_field.svg and $out/spot_parallel_cross_field.svg"
+  echo "Pictures: $out/spot_cross_field.svg, $out/spot_parallel_cross_field.svg, $out/spot_hatching.svg"
+  echo "(pen-and-ink hatching along the field) and $out/spot_quads.svg (the remesh)"
   echo "(build: $BUILD_DIR, Release)."
 }
 
