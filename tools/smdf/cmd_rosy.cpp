@@ -7,6 +7,7 @@
 
 #include "commands.h"
 #include "common.h"
+#include "rosy_inputs.h"
 
 #include <CGAL/Surface_mesh_direction_fields/Intrinsic_triangulation.h>
 #include <CGAL/Surface_mesh_direction_fields/Trivial_connection.h>
@@ -32,10 +33,7 @@ namespace smdf_cli {
 
 namespace {
 
-typedef Mesh::Property_map<vertex_descriptor, double> Vertex_double_property;
-
 enum Rosy_method { AUTOMATIC, ROTATION_COMPENSATION, TRIVIAL_CONNECTION, PARALLEL, BOUNDARY_ALIGNED };
-enum Boundary_mode { FREE_BOUNDARY, PARALLEL_BOUNDARY, ORTHOGONAL_BOUNDARY };
 
 const char* method_name(Rosy_method m)
 {
@@ -110,162 +108,6 @@ Rosy_options rosy_options(const Args& args)
 }
 
 bool multiple_of(double K, int N) { const double k = K / (2 * CGAL_PI) * N; return std::abs(k - std::round(k)) < 1e-6; }
-
-// The input's turning angle pi - sum(theta) at every boundary vertex, and the boundary loops.
-struct Boundary_geometry
-{
-  std::vector<double> kappa;                            // per vertex (0 inside)
-  std::vector<std::vector<vertex_descriptor>> loops;    // per boundary loop, in order
-  std::vector<double> dual_length;                      // per vertex: half its two boundary edges
-};
-
-Boundary_geometry boundary_geometry(const Mesh& mesh)
-{
-  Boundary_geometry b;
-  b.kappa.assign(num_vertices(mesh), 0.);
-  b.dual_length.assign(num_vertices(mesh), 0.);
-  std::vector<char> done(num_halfedges(mesh), 0);
-  for(halfedge_descriptor h : halfedges(mesh)) {
-    if(!is_border(h, mesh) || done[std::size_t(h)]) continue;
-    std::vector<vertex_descriptor> loop;
-    for(halfedge_descriptor g = h; !done[std::size_t(g)]; g = next(g, mesh)) {
-      done[std::size_t(g)] = 1;
-      loop.push_back(target(g, mesh));
-      const double l = std::sqrt(CGAL::squared_distance(mesh.point(source(g, mesh)), mesh.point(target(g, mesh))));
-      b.dual_length[index(source(g, mesh))] += l / 2;
-      b.dual_length[index(target(g, mesh))] += l / 2;
-    }
-    b.loops.push_back(std::move(loop));
-  }
-  for(vertex_descriptor v : vertices(mesh)) {
-    if(!is_border(v, mesh)) continue;
-    double sum = 0;
-    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, mesh), mesh)) {
-      if(is_border(h, mesh)) continue;
-      const K::Vector_3 a = mesh.point(source(h, mesh)) - mesh.point(v);
-      const K::Vector_3 c = mesh.point(target(next(h, mesh), mesh)) - mesh.point(v);
-      sum += std::atan2(std::sqrt(CGAL::cross_product(a, c).squared_length()), a * c);
-    }
-    b.kappa[index(v)] = CGAL_PI - sum;
-  }
-  return b;
-}
-
-// The target curvatures of an open mesh: the cones inside and at the given boundary vertices;
-// at the other boundary vertices the input's turning angle, changed so that Gauss-Bonnet holds
-// and the field can exist:
-//  - free boundary: every boundary loop turns in total by a multiple of 2 pi / N (so that the
-//    loop's holonomy allows a parallel field), the change spread in proportion to boundary length;
-//  - boundary-aligned fields: every boundary vertex turns by a multiple of the field's step
-//    (2 pi / N; pi / N for odd N, whose directions are lines along the boundary): the input's
-//    turning rounded, then moved by a step where the rounding cut most until Gauss-Bonnet holds.
-void open_mesh_targets(const Mesh& mesh, const Boundary_geometry& b, int N, Boundary_mode mode,
-                       const std::vector<std::pair<vertex_descriptor, double>>& cones, Vertex_double_property targets)
-{
-  std::vector<char> fixed(num_vertices(mesh), 0);
-  double fixed_total = 0;
-  for(const auto& c : cones) { fixed[index(c.first)] = 1; fixed_total += c.second; targets[c.first] = c.second; }
-  const double chi = double(SMDF::mesh_topology(mesh).euler_characteristic());
-  const double required = 2 * CGAL_PI * chi - fixed_total;   // over the free boundary vertices
-  const double step = mode == FREE_BOUNDARY ? 2 * CGAL_PI / N : (N % 2 ? CGAL_PI / N : 2 * CGAL_PI / N);
-  std::vector<vertex_descriptor> free_vertices;
-  for(const auto& loop : b.loops) for(vertex_descriptor v : loop) if(!fixed[index(v)]) free_vertices.push_back(v);
-  if(free_vertices.empty()) {
-    if(std::abs(required) > 1e-9)
-      throw Error("the cones sum to " + format_real(fixed_total) + " with every boundary vertex given; Gauss-Bonnet needs 2 pi chi = " +
-                  format_real(2 * CGAL_PI * chi) + " [inconsistent_indices]");
-    return;
-  }
-  if(mode == FREE_BOUNDARY) {
-    // per loop: the input total over its free vertices, rounded to a multiple of the step with
-    // the loop's fixed part; the rounding error of the sum goes to the longest loop
-    std::vector<double> have(b.loops.size(), 0.), fixed_part(b.loops.size(), 0.), want(b.loops.size(), 0.), length(b.loops.size(), 0.);
-    std::size_t longest = 0;
-    for(std::size_t l = 0; l < b.loops.size(); ++l) {
-      for(vertex_descriptor v : b.loops[l]) {
-        (fixed[index(v)] ? fixed_part[l] : have[l]) += fixed[index(v)] ? targets[v] : b.kappa[index(v)];
-        if(!fixed[index(v)]) length[l] += b.dual_length[index(v)];
-      }
-      want[l] = step * std::round((have[l] + fixed_part[l]) / step) - fixed_part[l];
-      if(length[l] > length[longest]) longest = l;
-    }
-    double sum = 0;
-    for(double w : want) sum += w;
-    want[longest] += required - sum;
-    for(std::size_t l = 0; l < b.loops.size(); ++l) {
-      if(length[l] <= 0) continue;
-      for(vertex_descriptor v : b.loops[l])
-        if(!fixed[index(v)]) targets[v] = b.kappa[index(v)] + (want[l] - have[l]) * b.dual_length[index(v)] / length[l];
-    }
-  } else {
-    double sum = 0;
-    for(vertex_descriptor v : free_vertices) { targets[v] = step * std::round(b.kappa[index(v)] / step); sum += targets[v]; }
-    long moves = std::lround((required - sum) / step);
-    while(moves != 0) {
-      const double dir = moves > 0 ? 1. : -1.;
-      vertex_descriptor best = free_vertices.front();
-      double best_cut = -1e300;
-      for(vertex_descriptor v : free_vertices) {
-        const double next = targets[v] + dir * step;
-        if(!(next < CGAL_PI - 1e-9 && next > -CGAL_PI + 1e-9)) continue;
-        const double cut = dir * (b.kappa[index(v)] - targets[v]);
-        if(cut > best_cut) { best_cut = cut; best = v; }
-      }
-      if(best_cut == -1e300)
-        throw Error("no boundary turning angles that are multiples of " + format_real(step) + " below pi satisfy Gauss-Bonnet; give the corners with --cones");
-      targets[best] += dir * step;
-      moves -= long(dir);
-    }
-  }
-  for(vertex_descriptor v : free_vertices)
-    if(!(targets[v] < CGAL_PI && targets[v] > -CGAL_PI))
-      throw Error("boundary vertex " + std::to_string(index(v)) + " would have to turn by " + format_real(targets[v]) +
-                  " (not in (-pi, pi)); give the boundary's turning angles with --cones");
-}
-
-// --edit FILE ('vertex x y z [weight]') and --length FILE ('vertex length [weight]'): the pairs
-// and the weight of each (0, no weight given: hard).
-struct Constraint_lines
-{
-  std::vector<std::pair<vertex_descriptor, K::Vector_3>> directions;
-  std::vector<std::pair<vertex_descriptor, double>> lengths;
-  std::vector<double> weights;
-  std::size_t hard() const { return std::size_t(std::count(weights.begin(), weights.end(), 0.)); }
-};
-
-Constraint_lines read_constraint_file(const std::string& file, const Mesh& mesh, bool lengths)
-{
-  Constraint_lines c;
-  const std::size_t values = lengths ? 1 : 3;
-  std::vector<char> seen(num_vertices(mesh), 0);
-  for_each_data_line(file, [&](std::size_t line, const std::vector<std::string>& f) {
-    if(f.size() != 1 + values && f.size() != 2 + values)
-      throw line_error(file, line, lengths ? "expected 'vertex length [weight]'" : "expected 'vertex x y z [weight]'");
-    const std::size_t v = vertex_field(file, line, f[0], num_vertices(mesh));
-    if(seen[v]++) throw line_error(file, line, "vertex " + std::to_string(v) + " is constrained twice");
-    double x[3] = {0, 0, 0};
-    for(std::size_t i = 0; i < values; ++i) x[i] = finite_field(file, line, f[1 + i]);
-    const double w = f.size() == 2 + values ? finite_field(file, line, f[1 + values]) : 0.;
-    if(f.size() == 2 + values && !(w > 0)) throw line_error(file, line, "the weight must be positive (no weight: a hard constraint)");
-    c.weights.push_back(w);
-    const vertex_descriptor vd(static_cast<Mesh::size_type>(v));
-    if(lengths) {
-      if(!(x[0] > 0)) throw line_error(file, line, "the length must be positive");
-      c.lengths.emplace_back(vd, x[0]);
-    } else {
-      if(x[0] == 0 && x[1] == 0 && x[2] == 0) throw line_error(file, line, "the direction is the zero vector");
-      c.directions.emplace_back(vd, K::Vector_3(x[0], x[1], x[2]));
-    }
-  });
-  return c;
-}
-
-void write_vectors(const std::string& file, const std::vector<K::Vector_3>& v)
-{
-  std::ostringstream os = number_stream();
-  for(const K::Vector_3& x : v) os << x.x() << ' ' << x.y() << ' ' << x.z() << '\n';
-  write_lines_file(file, os.str());
-}
 
 } // namespace
 
@@ -598,11 +440,7 @@ Json run_rosy(const Args& args)
       for(face_descriptor f : faces(mesh)) v.push_back(vectors[f]);
       write_vectors(args.value("face-field-out"), v);
     }
-    if(args.has("svg")) {
-      Args picture = args;   // the picture only: --field-out is the vertex field, written above
-      picture.options.erase("field-out");
-      write_field_files(picture, mesh, vectors, N, found, svg);
-    }
+    if(args.has("svg")) write_field_svg_file(args, mesh, vectors, N, found, svg);
     if(args.has("hatching-svg")) {
       SMDF::Svg_options view = svg;
       if(!args.has("view")) view.up_axis = default_up_axis(mesh);

@@ -305,27 +305,35 @@ int default_up_axis(const Mesh& mesh)
   return extent[order[0]] < 0.5 * extent[order[1]] ? order[0] : 1;
 }
 
+void write_vectors(const std::string& file, const std::vector<K::Vector_3>& vectors)
+{
+  std::ostringstream os = number_stream();
+  for(const K::Vector_3& v : vectors) os << v.x() << ' ' << v.y() << ' ' << v.z() << '\n';
+  write_lines_file(file, os.str());
+}
+
+void write_field_svg_file(const Args& args, const Mesh& mesh, Face_vector_property vectors, long N,
+                          const SMDF::Field_topology<Mesh>& topo, const SMDF::Svg_options& svg)
+{
+  SMDF::Svg_options view = svg;
+  if(!args.has("view")) view.up_axis = default_up_axis(mesh);
+  std::ostringstream caption;
+  caption << "view: azimuth " << view.azimuth << ", elevation " << view.elevation << ", " << char('x' + view.up_axis)
+          << " up" << (args.has("view") ? "" : " (chosen; set with --view A,E,x|y|z)");
+  view.caption = caption.str();
+  std::ostringstream os;
+  SMDF::write_field_svg(os, mesh, vectors, int(N), topo.singularities, view);
+  write_lines_file(args.value("svg"), os.str());
+}
+
 void write_field_files(const Args& args, const Mesh& mesh, Face_vector_property vectors, long N,
                        const SMDF::Field_topology<Mesh>& topo, const SMDF::Svg_options& svg)
 {
-  if(args.has("svg")) {
-    SMDF::Svg_options view = svg;
-    if(!args.has("view")) view.up_axis = default_up_axis(mesh);
-    std::ostringstream caption;
-    caption << "view: azimuth " << view.azimuth << ", elevation " << view.elevation << ", " << char('x' + view.up_axis)
-            << " up" << (args.has("view") ? "" : " (chosen; set with --view A,E,x|y|z)");
-    view.caption = caption.str();
-    std::ostringstream os;
-    SMDF::write_field_svg(os, mesh, vectors, int(N), topo.singularities, view);
-    write_lines_file(args.value("svg"), os.str());
-  }
+  if(args.has("svg")) write_field_svg_file(args, mesh, vectors, N, topo, svg);
   if(args.has("field-out")) {
-    std::ostringstream os = number_stream();
-    for(face_descriptor f : faces(mesh)) {
-      const K::Vector_3& v = get(vectors, f);
-      os << v.x() << ' ' << v.y() << ' ' << v.z() << '\n';
-    }
-    write_lines_file(args.value("field-out"), os.str());
+    std::vector<K::Vector_3> v;
+    for(face_descriptor f : faces(mesh)) v.push_back(get(vectors, f));
+    write_vectors(args.value("field-out"), v);
   }
 }
 

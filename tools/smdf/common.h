@@ -162,8 +162,16 @@ int default_up_axis(const Mesh& mesh);
 // The picture options of --svg: --view and --width (usage errors without --svg).
 SMDF::Svg_options svg_options(const Args& args);
 
-// Writes --svg (the field and the singularities of `topo`) and --field-out (one line 'x y z'
-// per face), those of the two that are given.
+// Writes one line 'x y z' per vector to `file`.
+void write_vectors(const std::string& file, const std::vector<K::Vector_3>& vectors);
+
+// Writes --svg: the field and the singularities of `topo` (the view chosen from the mesh when
+// --view does not say, and named in the caption).
+void write_field_svg_file(const Args& args, const Mesh& mesh, Face_vector_property vectors, long N,
+                          const SMDF::Field_topology<Mesh>& topo, const SMDF::Svg_options& svg);
+
+// Writes --svg (write_field_svg_file()) and --field-out (one line 'x y z' per face), those of
+// the two that are given.
 void write_field_files(const Args& args, const Mesh& mesh, Face_vector_property vectors, long N,
                        const SMDF::Field_topology<Mesh>& topo, const SMDF::Svg_options& svg);
 

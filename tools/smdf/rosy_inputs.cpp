@@ -1,0 +1,140 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// smdf rosy's inputs: see rosy_inputs.h.
+
+#include "rosy_inputs.h"
+
+#include <CGAL/Surface_mesh_direction_fields/topology.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace smdf_cli {
+
+Boundary_geometry boundary_geometry(const Mesh& mesh)
+{
+  Boundary_geometry b;
+  b.kappa.assign(num_vertices(mesh), 0.);
+  b.dual_length.assign(num_vertices(mesh), 0.);
+  std::vector<char> done(num_halfedges(mesh), 0);
+  for(halfedge_descriptor h : halfedges(mesh)) {
+    if(!is_border(h, mesh) || done[std::size_t(h)]) continue;
+    std::vector<vertex_descriptor> loop;
+    for(halfedge_descriptor g = h; !done[std::size_t(g)]; g = next(g, mesh)) {
+      done[std::size_t(g)] = 1;
+      loop.push_back(target(g, mesh));
+      const double l = std::sqrt(CGAL::squared_distance(mesh.point(source(g, mesh)), mesh.point(target(g, mesh))));
+      b.dual_length[index(source(g, mesh))] += l / 2;
+      b.dual_length[index(target(g, mesh))] += l / 2;
+    }
+    b.loops.push_back(std::move(loop));
+  }
+  for(vertex_descriptor v : vertices(mesh)) {
+    if(!is_border(v, mesh)) continue;
+    double sum = 0;
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, mesh), mesh)) {
+      if(is_border(h, mesh)) continue;
+      const K::Vector_3 a = mesh.point(source(h, mesh)) - mesh.point(v);
+      const K::Vector_3 c = mesh.point(target(next(h, mesh), mesh)) - mesh.point(v);
+      sum += std::atan2(std::sqrt(CGAL::cross_product(a, c).squared_length()), a * c);
+    }
+    b.kappa[index(v)] = CGAL_PI - sum;
+  }
+  return b;
+}
+
+void open_mesh_targets(const Mesh& mesh, const Boundary_geometry& b, int N, Boundary_mode mode,
+                       const std::vector<std::pair<vertex_descriptor, double>>& cones, Vertex_double_property targets)
+{
+  std::vector<char> fixed(num_vertices(mesh), 0);
+  double fixed_total = 0;
+  for(const auto& c : cones) { fixed[index(c.first)] = 1; fixed_total += c.second; targets[c.first] = c.second; }
+  const double chi = double(SMDF::mesh_topology(mesh).euler_characteristic());
+  const double required = 2 * CGAL_PI * chi - fixed_total;   // over the free boundary vertices
+  const double step = mode == FREE_BOUNDARY ? 2 * CGAL_PI / N : (N % 2 ? CGAL_PI / N : 2 * CGAL_PI / N);
+  std::vector<vertex_descriptor> free_vertices;
+  for(const auto& loop : b.loops) for(vertex_descriptor v : loop) if(!fixed[index(v)]) free_vertices.push_back(v);
+  if(free_vertices.empty()) {
+    if(std::abs(required) > 1e-9)
+      throw Error("the cones sum to " + format_real(fixed_total) + " with every boundary vertex given; Gauss-Bonnet needs 2 pi chi = " +
+                  format_real(2 * CGAL_PI * chi) + " [inconsistent_indices]");
+    return;
+  }
+  if(mode == FREE_BOUNDARY) {
+    // per loop: the input total over its free vertices, rounded to a multiple of the step with
+    // the loop's fixed part; the rounding error of the sum goes to the longest loop
+    std::vector<double> have(b.loops.size(), 0.), fixed_part(b.loops.size(), 0.), want(b.loops.size(), 0.), length(b.loops.size(), 0.);
+    std::size_t longest = 0;
+    for(std::size_t l = 0; l < b.loops.size(); ++l) {
+      for(vertex_descriptor v : b.loops[l]) {
+        (fixed[index(v)] ? fixed_part[l] : have[l]) += fixed[index(v)] ? targets[v] : b.kappa[index(v)];
+        if(!fixed[index(v)]) length[l] += b.dual_length[index(v)];
+      }
+      want[l] = step * std::round((have[l] + fixed_part[l]) / step) - fixed_part[l];
+      if(length[l] > length[longest]) longest = l;
+    }
+    double sum = 0;
+    for(double w : want) sum += w;
+    want[longest] += required - sum;
+    for(std::size_t l = 0; l < b.loops.size(); ++l) {
+      if(length[l] <= 0) continue;
+      for(vertex_descriptor v : b.loops[l])
+        if(!fixed[index(v)]) targets[v] = b.kappa[index(v)] + (want[l] - have[l]) * b.dual_length[index(v)] / length[l];
+    }
+  } else {
+    double sum = 0;
+    for(vertex_descriptor v : free_vertices) { targets[v] = step * std::round(b.kappa[index(v)] / step); sum += targets[v]; }
+    long moves = std::lround((required - sum) / step);
+    while(moves != 0) {
+      const double dir = moves > 0 ? 1. : -1.;
+      vertex_descriptor best = free_vertices.front();
+      double best_cut = -1e300;
+      for(vertex_descriptor v : free_vertices) {
+        const double next = targets[v] + dir * step;
+        if(!(next < CGAL_PI - 1e-9 && next > -CGAL_PI + 1e-9)) continue;
+        const double cut = dir * (b.kappa[index(v)] - targets[v]);
+        if(cut > best_cut) { best_cut = cut; best = v; }
+      }
+      if(best_cut == -1e300)
+        throw Error("no boundary turning angles that are multiples of " + format_real(step) + " below pi satisfy Gauss-Bonnet; give the corners with --cones");
+      targets[best] += dir * step;
+      moves -= long(dir);
+    }
+  }
+  for(vertex_descriptor v : free_vertices)
+    if(!(targets[v] < CGAL_PI && targets[v] > -CGAL_PI))
+      throw Error("boundary vertex " + std::to_string(index(v)) + " would have to turn by " + format_real(targets[v]) +
+                  " (not in (-pi, pi)); give the boundary's turning angles with --cones");
+}
+
+Constraint_lines read_constraint_file(const std::string& file, const Mesh& mesh, bool lengths)
+{
+  Constraint_lines c;
+  const std::size_t values = lengths ? 1 : 3;
+  std::vector<char> seen(num_vertices(mesh), 0);
+  for_each_data_line(file, [&](std::size_t line, const std::vector<std::string>& f) {
+    if(f.size() != 1 + values && f.size() != 2 + values)
+      throw line_error(file, line, lengths ? "expected 'vertex length [weight]'" : "expected 'vertex x y z [weight]'");
+    const std::size_t v = vertex_field(file, line, f[0], num_vertices(mesh));
+    if(seen[v]++) throw line_error(file, line, "vertex " + std::to_string(v) + " is constrained twice");
+    double x[3] = {0, 0, 0};
+    for(std::size_t i = 0; i < values; ++i) x[i] = finite_field(file, line, f[1 + i]);
+    const double w = f.size() == 2 + values ? finite_field(file, line, f[1 + values]) : 0.;
+    if(f.size() == 2 + values && !(w > 0)) throw line_error(file, line, "the weight must be positive (no weight: a hard constraint)");
+    c.weights.push_back(w);
+    const vertex_descriptor vd(static_cast<Mesh::size_type>(v));
+    if(lengths) {
+      if(!(x[0] > 0)) throw line_error(file, line, "the length must be positive");
+      c.lengths.emplace_back(vd, x[0]);
+    } else {
+      if(x[0] == 0 && x[1] == 0 && x[2] == 0) throw line_error(file, line, "the direction is the zero vector");
+      c.directions.emplace_back(vd, K::Vector_3(x[0], x[1], x[2]));
+    }
+  });
+  return c;
+}
+
+} // namespace smdf_cli

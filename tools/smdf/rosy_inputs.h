@@ -1,0 +1,59 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// smdf rosy: its inputs beyond the option lists: the boundary of an open mesh and the target
+// turning angles the field needs there, and the constraint files of --edit and --length.
+
+#ifndef SMDF_CLI_ROSY_INPUTS_H
+#define SMDF_CLI_ROSY_INPUTS_H
+
+#include "common.h"
+
+#include <algorithm>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace smdf_cli {
+
+typedef Mesh::Property_map<vertex_descriptor, double> Vertex_double_property;
+
+enum Boundary_mode { FREE_BOUNDARY, PARALLEL_BOUNDARY, ORTHOGONAL_BOUNDARY };
+
+// The input's turning angle pi - sum(theta) at every boundary vertex, and the boundary loops.
+struct Boundary_geometry
+{
+  std::vector<double> kappa;                            // per vertex (0 inside)
+  std::vector<std::vector<vertex_descriptor>> loops;    // per boundary loop, in order
+  std::vector<double> dual_length;                      // per vertex: half its two boundary edges
+};
+
+Boundary_geometry boundary_geometry(const Mesh& mesh);
+
+// The target curvatures of an open mesh: the cones inside and at the given boundary vertices;
+// at the other boundary vertices the input's turning angle, changed so that Gauss-Bonnet holds
+// and the field can exist:
+//  - free boundary: every boundary loop turns in total by a multiple of 2 pi / N (so that the
+//    loop's holonomy allows a parallel field), the change spread in proportion to boundary length;
+//  - boundary-aligned fields: every boundary vertex turns by a multiple of the field's step
+//    (2 pi / N; pi / N for odd N, whose directions are lines along the boundary): the input's
+//    turning rounded, then moved by a step where the rounding cut most until Gauss-Bonnet holds.
+void open_mesh_targets(const Mesh& mesh, const Boundary_geometry& b, int N, Boundary_mode mode,
+                       const std::vector<std::pair<vertex_descriptor, double>>& cones, Vertex_double_property targets);
+
+// --edit FILE ('vertex x y z [weight]') and --length FILE ('vertex length [weight]'): the pairs
+// and the weight of each (0, no weight given: hard).
+struct Constraint_lines
+{
+  std::vector<std::pair<vertex_descriptor, K::Vector_3>> directions;
+  std::vector<std::pair<vertex_descriptor, double>> lengths;
+  std::vector<double> weights;
+  std::size_t hard() const { return std::size_t(std::count(weights.begin(), weights.end(), 0.)); }
+};
+
+// Reads --edit (lengths = false) or --length; Errors name the file and the line.
+Constraint_lines read_constraint_file(const std::string& file, const Mesh& mesh, bool lengths);
+
+} // namespace smdf_cli
+
+#endif // SMDF_CLI_ROSY_INPUTS_H
