@@ -273,6 +273,9 @@ Json run_remesh(const Args& args)
   load_mesh(file, mesh);
   Stopwatch clock;
   const bool progress = args.has("progress");
+  const long relax = args.has("relaxation") ? args.integer("relaxation", 0) : 10;
+  if(relax < 0 || relax > 1000) throw Usage_error("option --relaxation expects an integer from 0 to 1000");
+  const int relax_steps = int(relax);
   auto stage = [&](const char* what) {
     if(!progress) return;
     std::ostringstream os;
@@ -397,13 +400,14 @@ Json run_remesh(const Args& args)
       const int n = int((std::max)(1., std::round(side / h)));
       Mesh remesh;
       const SMDF::Polyhedron_remesh_status rs = on_file(file, [&] {
-        return cm.converged ? SMDF::polyhedron_remesh(mesh, corners, pfaces, n, remesh, SMDF::parameters::edge_length_map(flat))
-                            : SMDF::polyhedron_remesh(mesh, corners, pfaces, n, remesh);
+        return cm.converged ? SMDF::polyhedron_remesh(mesh, corners, pfaces, n, remesh, SMDF::parameters::edge_length_map(flat).number_of_iterations(relax_steps))
+                            : SMDF::polyhedron_remesh(mesh, corners, pfaces, n, remesh, SMDF::parameters::number_of_iterations(relax_steps));
       });
       Json c = Json::array();
       for(vertex_descriptor v : corners) c.push_back(index(v));
       metric["corners"] = std::move(c);
       metric["max_path_stretch"] = rs.metric.max_path_stretch;
+      metric["relaxation_steps"] = rs.metric.relaxation_steps;
       out["metric"] = metric;
       out["subdivisions"] = n;
       Json timings = Json::object();
@@ -433,8 +437,8 @@ Json run_remesh(const Args& args)
       return out;
     }
     const SMDF::Polycube_metric_status ps = on_file(file, [&] {
-      return cm.converged ? SMDF::polyhedron_metric(mesh, corners, pfaces, side, lengths, SMDF::parameters::edge_length_map(flat))
-                          : SMDF::polyhedron_metric(mesh, corners, pfaces, side, lengths);
+      return cm.converged ? SMDF::polyhedron_metric(mesh, corners, pfaces, side, lengths, SMDF::parameters::edge_length_map(flat).number_of_iterations(relax_steps))
+                          : SMDF::polyhedron_metric(mesh, corners, pfaces, side, lengths, SMDF::parameters::number_of_iterations(relax_steps));
     });
     compensation_s = clock.lap();
     Json c = Json::array();
@@ -442,6 +446,7 @@ Json run_remesh(const Args& args)
     metric["corners"] = std::move(c);
     metric["side_length"] = side;
     metric["max_path_stretch"] = ps.max_path_stretch;
+    metric["relaxation_steps"] = ps.relaxation_steps;
     out["metric"] = metric;
     if(!ps.success) throw Failed_result{out, file + ": polyhedron metric: " + ps.message, 3};
   } else if(args.has("polycube")) {
@@ -462,8 +467,8 @@ Json run_remesh(const Args& args)
     });
     metric["flat_cone_metric_converged"] = cm.converged;
     const SMDF::Polycube_metric_status ps = on_file(file, [&] {
-      return cm.converged ? SMDF::box_polycube_metric(mesh, corners, h, lengths, SMDF::parameters::edge_length_map(flat))
-                          : SMDF::box_polycube_metric(mesh, corners, h, lengths);   // Euclidean paths and weights
+      return cm.converged ? SMDF::box_polycube_metric(mesh, corners, h, lengths, SMDF::parameters::edge_length_map(flat).number_of_iterations(relax_steps))
+                          : SMDF::box_polycube_metric(mesh, corners, h, lengths, SMDF::parameters::number_of_iterations(relax_steps));   // Euclidean paths and weights
     });
     compensation_s = clock.lap();
     Json c = Json::array();
@@ -472,6 +477,7 @@ Json run_remesh(const Args& args)
     metric["dimensions"] = Json::array();
     for(double d : ps.dimensions) metric["dimensions"].push_back(d);
     metric["max_path_stretch"] = ps.max_path_stretch;
+    metric["relaxation_steps"] = ps.relaxation_steps;
     out["metric"] = metric;
     if(!ps.success) throw Failed_result{out, file + ": box polycube metric: " + ps.message, 3};
   }
@@ -557,6 +563,7 @@ Command remesh_command()
            {"view", "A,E[,UP]", "view of --svg: azimuth,elevation in degrees, up axis x|y|z"},
            {"width", "PX", "width of the --svg picture in pixels (default 800)"},
            {"knot-svg", "FILE", "write a woven Celtic knot along the quad remesh's medial graph (Lai et al. Fig. 13)"},
+           {"relaxation", "K", "with --polycube: at most K rounds of stretch-minimising reweighting and K steps of as-rigid-as-possible relaxation of the polyhedron's charts (default 10; 0: the plain Tutte embedding)"},
            {"progress", "", "report each stage on stderr with the elapsed time"}},
           "regular quad or triangle remesh from a flat cone metric",
           "Lai et al. 2010, section 5: develops a flat cone metric of the mesh (its own edge lengths,\n"

@@ -47,15 +47,20 @@ struct Polyhedron_remesh_status
 /// P is divided into \f$n \times n\f$ squares or \f$n^2\f$ triangles (`subdivisions` \f$= n\f$) and
 /// the grid carried to the surface through the face's embedding: grid points inside a face are
 /// placed by barycentric coordinates in the input triangle that contains them, points on P's
-/// edges on the path of the edge by arc length, P's corners at their vertices. Quad faces of P
+/// edges on the path of the edge, evenly in the chart (by arc length without relaxation), P's corners at their vertices. Quad faces of P
 /// give quads, triangle faces triangles: a mixed mesh when P has both (the obelisk of Lai et
 /// al., Figure 1d). Every output vertex has the valence its place on P asks: 4 inside squares, 6
 /// inside triangles, 4, 5 or 6 on P's edges, and at a corner the number of P's faces there (a
 /// cone of curvature \f$2\pi - \sum\f$ angles).
 ///
-/// Named parameters: `edge_length_map` (the metric of the paths and of the embedding's weights,
-/// e.g. the flat cone metric with P's cones) or `intrinsic_mesh`, `vertex_point_map`, and the
-/// index maps. `out` is cleared and receives the remesh when its faces could be built.
+/// The faces' embeddings are relaxed towards the input's triangles as in box_polycube_metric(),
+/// P's sides then of the length that gives P the surface's area; grid points on P's edges
+/// follow the relaxed paths.
+///
+/// Named parameters: `edge_length_map` (the metric of the paths and of the embedding's first
+/// weights, e.g. the flat cone metric with P's cones) or `intrinsic_mesh`,
+/// `number_of_iterations` (as for box_polycube_metric(), default 10), `vertex_point_map`, and
+/// the index maps. `out` is cleared and receives the remesh when its faces could be built.
 template <typename TriangleMesh, typename PolygonMesh, typename NamedParameters = parameters::Default_named_parameters>
 Polyhedron_remesh_status polyhedron_remesh(const TriangleMesh& tm,
                                            const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& corners,
@@ -78,20 +83,26 @@ Polyhedron_remesh_status polyhedron_remesh(const TriangleMesh& tm,
   for(const auto& v : corners) cv.push_back(m.vertex_index(v));
   const int n = subdivisions;
   const double r3 = std::sqrt(3.) / 2;
-  double L = 0;   // the polygons' side: the mean length of the paths (so that the stretch means something)
+  std::vector<double> reference;
+  int iterations = 0;
+  const double area = internal::relaxation_reference(tm, m, np, reference, iterations);
+  double L = 0;   // the polygons' side: P's area that of the input (relaxed) or the mean length of the paths
   auto polygon = [&](std::size_t j, const std::function<double(int, int)>& path_length) {
     if(L == 0) {
-      double sum = 0;
+      double sum = 0, unit_area = 0;
       int count = 0;
-      for(const auto& f : faces) for(std::size_t i = 0; i < f.size(); ++i) { sum += path_length(f[i], f[(i + 1) % f.size()]); ++count; }
-      L = sum / count;
+      for(const auto& f : faces) {
+        for(std::size_t i = 0; i < f.size(); ++i) { sum += path_length(f[i], f[(i + 1) % f.size()]); ++count; }
+        unit_area += f.size() == 4 ? 1. : r3 / 2;
+      }
+      L = iterations > 0 ? std::sqrt(area / unit_area) : sum / count;
     }
     return faces[j].size() == 4 ? std::vector<Point_2>{Point_2(0, 0), Point_2(L, 0), Point_2(L, L), Point_2(0, L)}
                                 : std::vector<Point_2>{Point_2(0, 0), Point_2(L, 0), Point_2(L / 2, L * r3)};
   };
   std::vector<double> lengths;
   internal::Polyhedron_charts ch;
-  st.metric = internal::polyhedron_metric_core(m, cv, faces, polygon, lengths, &ch);
+  st.metric = internal::polyhedron_metric_core(m, cv, faces, polygon, lengths, &ch, iterations > 0 ? &reference : nullptr, iterations);
   if(!st.metric.success) { st.message = st.metric.message; return st; }
   typedef typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
   VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
@@ -117,7 +128,7 @@ Polyhedron_remesh_status polyhedron_remesh(const TriangleMesh& tm,
     under.push_back(m.face[std::size_t(m.vertex_out[std::size_t(cv[i])])]);
     expected.push_back(faces_at_corner[i]);
   }
-  // per P edge: its n - 1 inner points along the path by arc length; valence from its two faces
+  // per P edge: its n - 1 inner points along the path, evenly in the charts; valence from its two faces
   std::vector<int> edge_sides(ch.pedges.size(), 0);   // 4 + 4 = 8 (squares), 6 + 6, 4 + 6 ...
   for(const auto& f : faces)
     for(std::size_t i = 0; i < f.size(); ++i)

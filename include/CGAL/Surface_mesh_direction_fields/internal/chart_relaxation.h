@@ -1,0 +1,250 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_CHART_RELAXATION_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_CHART_RELAXATION_H
+
+// As-rigid-as-possible relaxation of the charts of a polyhedron's faces (the local / global
+// iteration of Liu et al. 2008 on top of a bijective Tutte embedding), with the cut paths free
+// to slide along P's edges: every path vertex has one unknown, its distance t from the edge's
+// first corner, shared by the two faces beside the path, so both sides always agree on where
+// it lies and the resulting lengths stay one metric. Each step is accepted only as far as it
+// keeps every triangle on the side of the start and every path monotone (at most halving any
+// triangle's area or path gap per step), so the charts remain bijective onto P's convex faces.
+
+#include <CGAL/Surface_mesh_direction_fields/Cholmod_cholesky.h>
+#include <CGAL/Surface_mesh_direction_fields/intrinsic_triangle.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Mesh_arrays.h>
+
+#include <Eigen/SparseCore>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+namespace internal {
+
+// What the relaxation needs of the cut: per mesh vertex its corner of P (or -1) and its path
+// (or -1, for vertices inside the pieces), per mesh face its face of P; P's faces, their
+// polygons, P's edges and the vertex sequences of their paths.
+struct Polyhedron_cut_view
+{
+  const std::vector<int>* corner_of;
+  const std::vector<int>* path_of_vertex;
+  const std::vector<int>* pface;
+  const std::vector<std::vector<int>>* pfaces;
+  const std::vector<std::vector<Point_2>>* shape;
+  const std::vector<std::array<int, 2>>* pedges;
+  const std::vector<std::vector<int>>* paths;
+};
+
+// Relaxes `chart` (per mesh face its corners, all turning the way of `sign` = +1 or -1) towards
+// the triangles of `reference` (one length per mesh edge, e.g. the input's Euclidean lengths)
+// for at most `iterations` steps; returns the number of steps taken (with a nonzero step
+// length). `message` says why it stopped early when the system could not be factored.
+template <typename TM>
+int relax_polyhedron_charts(const Mesh_arrays<TM>& m, const Polyhedron_cut_view& cut, const std::vector<double>& reference,
+                            int iterations, double sign, std::vector<std::array<Point_2, 3>>& chart, std::string& message)
+{
+  const std::size_t nv = m.number_of_vertices(), nf = m.number_of_faces();
+  const std::vector<int>& corner_of = *cut.corner_of;
+  const std::vector<int>& path_of = *cut.path_of_vertex;
+  const std::vector<int>& pface = *cut.pface;
+  // unknowns: (u, v) per inner vertex, t per path vertex
+  std::vector<int> column(nv, -1);
+  int n = 0;
+  for(std::size_t v = 0; v < nv; ++v) {
+    if(corner_of[v] >= 0 || m.is_isolated(int(v))) continue;
+    column[v] = n;
+    n += path_of[v] >= 0 ? 1 : 2;
+  }
+  if(n == 0 || iterations <= 0) return 0;
+  std::vector<double> target(cut.pedges->size(), 0.);   // each P edge's length in its polygons
+  // one corner slot of one mesh face in its chart: position = base + sum of dir[i] * z[col[i]]
+  struct Slot { Point_2 base; int col[2]; double dir[2][2]; int count; };
+  std::vector<std::array<Slot, 3>> slot(nf);
+  auto corner_position = [&](int j, int c, Point_2& p) {
+    const std::vector<int>& f = (*cut.pfaces)[std::size_t(j)];
+    for(std::size_t i = 0; i < f.size(); ++i) if(f[i] == c) { p = (*cut.shape)[std::size_t(j)][i]; return true; }
+    return false;
+  };
+  for(std::size_t f = 0; f < nf; ++f) {
+    int h = m.face_halfedge[f];
+    for(int k = 0; k < 3; ++k, h = m.next[std::size_t(h)]) {
+      const int v = m.source(h);
+      Slot& s = slot[f][std::size_t(k)];
+      s.count = 0;
+      s.base = Point_2(0, 0);
+      if(corner_of[std::size_t(v)] >= 0) {
+        if(!corner_position(pface[f], corner_of[std::size_t(v)], s.base)) { message = "a corner is not on its piece's polygon"; return 0; }
+      } else if(path_of[std::size_t(v)] >= 0) {
+        const std::array<int, 2>& e = (*cut.pedges)[std::size_t(path_of[std::size_t(v)])];
+        Point_2 a, b;
+        if(!corner_position(pface[f], e[0], a) || !corner_position(pface[f], e[1], b)) { message = "a path is not on its piece's polygon"; return 0; }
+        const double L = std::sqrt((b.x() - a.x()) * (b.x() - a.x()) + (b.y() - a.y()) * (b.y() - a.y()));
+        target[std::size_t(path_of[std::size_t(v)])] = L;
+        s.base = a;
+        s.col[0] = column[std::size_t(v)];
+        s.dir[0][0] = (b.x() - a.x()) / L;
+        s.dir[0][1] = (b.y() - a.y()) / L;
+        s.count = 1;
+      } else {
+        s.col[0] = column[std::size_t(v)];
+        s.col[1] = column[std::size_t(v)] + 1;
+        s.dir[0][0] = 1; s.dir[0][1] = 0;
+        s.dir[1][0] = 0; s.dir[1][1] = 1;
+        s.count = 2;
+      }
+    }
+  }
+  // the start: the unknowns read from the charts
+  Eigen::VectorXd z(n);
+  for(std::size_t f = 0; f < nf; ++f)
+    for(int k = 0; k < 3; ++k) {
+      const Slot& s = slot[f][std::size_t(k)];
+      const Point_2& p = chart[f][std::size_t(k)];
+      if(s.count == 1) z[s.col[0]] = (p.x() - s.base.x()) * s.dir[0][0] + (p.y() - s.base.y()) * s.dir[0][1];
+      else if(s.count == 2) { z[s.col[0]] = p.x(); z[s.col[1]] = p.y(); }
+    }
+  auto position = [&](const Eigen::VectorXd& x, std::size_t f, int k) {
+    const Slot& s = slot[f][std::size_t(k)];
+    double px = s.base.x(), py = s.base.y();
+    for(int i = 0; i < s.count; ++i) { px += s.dir[i][0] * x[s.col[i]]; py += s.dir[i][1] * x[s.col[i]]; }
+    return Point_2(px, py);
+  };
+  // the reference triangles (turning like the charts) and their cotangent weights, clamped
+  // positive so that the energy is convex and the matrix definite
+  std::vector<std::array<Point_2, 3>> ref(nf);
+  std::vector<std::array<double, 3>> weight(nf);   // of edge k = (slot k, slot k + 1)
+  for(std::size_t f = 0; f < nf; ++f) {
+    const int h0 = m.face_halfedge[f], h1 = m.next[std::size_t(h0)], h2 = m.next[std::size_t(h1)];
+    const double a = reference[std::size_t(h0 >> 1)], b = reference[std::size_t(h1 >> 1)], c = reference[std::size_t(h2 >> 1)];
+    const double x = (a * a + c * c - b * b) / (2 * a), y2 = c * c - x * x;
+    ref[f] = {{Point_2(0, 0), Point_2(a, 0), Point_2(x, sign * std::sqrt((std::max)(y2, 0.)))}};
+    const double area2 = std::sqrt((std::max)(y2, 0.)) * a;   // twice the area
+    const double l[3] = {a, b, c};
+    for(int k = 0; k < 3; ++k) {   // cot of the angle opposite edge k: (sum of the other squares - its square) / (4 area)
+      const double o1 = l[(k + 1) % 3], o2 = l[(k + 2) % 3];
+      const double cot = area2 > 0 ? (o1 * o1 + o2 * o2 - l[k] * l[k]) / (2 * area2) : 1.;
+      weight[f][std::size_t(k)] = 0.5 * (std::min)(1e2, (std::max)(1e-2, cot));   // needles: bounded weights
+    }
+  }
+  // the global step's matrix: sum over the edges of every triangle of w |x_a - x_b - R (p_a - p_b)|^2
+  std::vector<Eigen::Triplet<double, int>> triplets;
+  triplets.reserve(nf * 21);
+  for(std::size_t f = 0; f < nf; ++f) {
+    int cols[6], count = 0;
+    for(int k = 0; k < 3; ++k)
+      for(int i = 0; i < slot[f][std::size_t(k)].count; ++i) cols[count++] = slot[f][std::size_t(k)].col[i];
+    double local[6][6] = {};
+    for(int k = 0; k < 3; ++k) {
+      const Slot &sa = slot[f][std::size_t(k)], &sb = slot[f][std::size_t((k + 1) % 3)];
+      for(int d = 0; d < 2; ++d) {   // row d of the residual: coefficients over the face's columns
+        double row[6] = {};
+        int at = 0;
+        for(int kk = 0; kk < 3; ++kk) {
+          const Slot& s = slot[f][std::size_t(kk)];
+          for(int i = 0; i < s.count; ++i, ++at) row[at] = (&s == &sa ? s.dir[i][d] : &s == &sb ? -s.dir[i][d] : 0.);
+        }
+        for(int r = 0; r < count; ++r)
+          for(int q = 0; q < count; ++q) local[r][q] += weight[f][std::size_t(k)] * row[r] * row[q];
+      }
+    }
+    for(int r = 0; r < count; ++r)
+      for(int q = 0; q < count; ++q)
+        if(cols[r] >= cols[q] && local[r][q] != 0) triplets.emplace_back(cols[r], cols[q], local[r][q]);
+  }
+  Cholmod_cholesky::Matrix M(n, n);
+  M.setFromTriplets(triplets.begin(), triplets.end());
+  std::vector<Eigen::Triplet<double, int>>().swap(triplets);
+  Cholmod_cholesky solver;
+  if(!solver.factor(M, message)) { message = "the relaxation's system could not be factored: " + message; return 0; }
+  double scale = 0;
+  for(const auto& sh : *cut.shape) for(const Point_2& p : sh) scale = (std::max)(scale, std::abs(p.x()) + std::abs(p.y()));
+  // the largest fraction of the step from x by d that keeps at least half of every triangle's
+  // area (signed as at the start) and of every gap along a path (after Smith and Schaefer 2015's
+  // line search): the first root for each triangle, quadratic in the fraction, and each gap, linear
+  auto largest_step = [&](const Eigen::VectorXd& x, const Eigen::VectorXd& d) {
+    double alpha = std::numeric_limits<double>::infinity();
+    auto first_root = [&](double c0, double c1, double c2) {   // smallest positive root of c0 + c1 a + c2 a^2, c0 > 0
+      if(std::abs(c2) < 1e-300) return c1 < 0 ? -c0 / c1 : std::numeric_limits<double>::infinity();
+      const double disc = c1 * c1 - 4 * c2 * c0;
+      if(disc < 0) return std::numeric_limits<double>::infinity();
+      const double q = -0.5 * (c1 + (c1 >= 0 ? 1 : -1) * std::sqrt(disc));
+      double best = std::numeric_limits<double>::infinity();
+      for(double r : {q / c2, q != 0 ? c0 / q : std::numeric_limits<double>::infinity()}) if(r > 0) best = (std::min)(best, r);
+      return best;
+    };
+    for(std::size_t f = 0; f < nf; ++f) {
+      Point_2 p[3], v[3];
+      for(int k = 0; k < 3; ++k) {
+        p[k] = position(x, f, k);
+        const Slot& s = slot[f][std::size_t(k)];
+        double dx = 0, dy = 0;
+        for(int i = 0; i < s.count; ++i) { dx += s.dir[i][0] * d[s.col[i]]; dy += s.dir[i][1] * d[s.col[i]]; }
+        v[k] = Point_2(dx, dy);
+      }
+      const double ax = p[1].x() - p[0].x(), ay = p[1].y() - p[0].y(), bx = p[2].x() - p[0].x(), by = p[2].y() - p[0].y();
+      const double dax = v[1].x() - v[0].x(), day = v[1].y() - v[0].y(), dbx = v[2].x() - v[0].x(), dby = v[2].y() - v[0].y();
+      const double c0 = sign * (ax * by - bx * ay), c1 = sign * (ax * dby + dax * by - bx * day - dbx * ay), c2 = sign * (dax * dby - dbx * day);
+      alpha = (std::min)(alpha, first_root(0.5 * c0, c1, c2));   // area at least halved: far from folding
+    }
+    for(std::size_t k = 0; k < cut.paths->size(); ++k) {
+      const std::vector<int>& p = (*cut.paths)[k];
+      if(p.size() <= 2) continue;
+      for(std::size_t i = 1; i < p.size(); ++i) {   // gap from the previous vertex (0 at the first corner, target at the last)
+        const bool first = i == 1, last = i + 1 == p.size();
+        const double t1 = last ? target[k] : x[column[std::size_t(p[i])]], t0 = first ? 0. : x[column[std::size_t(p[i - 1])]];
+        const double d1 = last ? 0. : d[column[std::size_t(p[i])]], d0 = first ? 0. : d[column[std::size_t(p[i - 1])]];
+        if(d1 - d0 < 0) alpha = (std::min)(alpha, 0.5 * (t1 - t0) / (d0 - d1));
+      }
+    }
+    return alpha;
+  };
+  int steps = 0;
+  Eigen::VectorXd rhs(n);
+  for(int it = 0; it < iterations; ++it) {
+    rhs.setZero();
+    for(std::size_t f = 0; f < nf; ++f) {
+      // local step: the rotation closest to the map from the reference triangle to the chart's
+      const Point_2 x[3] = {position(z, f, 0), position(z, f, 1), position(z, f, 2)};
+      double A[2][2] = {{0, 0}, {0, 0}};   // sum of w (x_a - x_b)(p_a - p_b)^T
+      for(int k = 0; k < 3; ++k) {
+        const int k1 = (k + 1) % 3;
+        const double ex[2] = {x[k].x() - x[k1].x(), x[k].y() - x[k1].y()};
+        const double ep[2] = {ref[f][std::size_t(k)].x() - ref[f][std::size_t(k1)].x(), ref[f][std::size_t(k)].y() - ref[f][std::size_t(k1)].y()};
+        for(int r = 0; r < 2; ++r) for(int q = 0; q < 2; ++q) A[r][q] += weight[f][std::size_t(k)] * ex[r] * ep[q];
+      }
+      const double theta = std::atan2(A[1][0] - A[0][1], A[0][0] + A[1][1]), c = std::cos(theta), s = std::sin(theta);
+      // global step's right-hand side: w J^T (R (p_a - p_b) - (base_a - base_b))
+      for(int k = 0; k < 3; ++k) {
+        const int k1 = (k + 1) % 3;
+        const Slot &sa = slot[f][std::size_t(k)], &sb = slot[f][std::size_t(k1)];
+        const double ep[2] = {ref[f][std::size_t(k)].x() - ref[f][std::size_t(k1)].x(), ref[f][std::size_t(k)].y() - ref[f][std::size_t(k1)].y()};
+        const double goal[2] = {c * ep[0] - s * ep[1] - (sa.base.x() - sb.base.x()), s * ep[0] + c * ep[1] - (sa.base.y() - sb.base.y())};
+        const double w = weight[f][std::size_t(k)];
+        for(int i = 0; i < sa.count; ++i) rhs[sa.col[i]] += w * (sa.dir[i][0] * goal[0] + sa.dir[i][1] * goal[1]);
+        for(int i = 0; i < sb.count; ++i) rhs[sb.col[i]] -= w * (sb.dir[i][0] * goal[0] + sb.dir[i][1] * goal[1]);
+      }
+    }
+    const Eigen::VectorXd d = solver.solve(rhs) - z;
+    const double alpha = (std::min)(1., largest_step(z, d));
+    if(!(alpha > 1e-6)) break;   // blocked by a triangle about to fold: stay where the charts are bijective
+    z += alpha * d;
+    ++steps;
+  }
+  for(std::size_t f = 0; f < nf; ++f)
+    for(int k = 0; k < 3; ++k) chart[f][std::size_t(k)] = position(z, f, k);
+  return steps;
+}
+
+} // namespace internal
+} // namespace Surface_mesh_direction_fields
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_CHART_RELAXATION_H
