@@ -16,7 +16,6 @@
 #include <CGAL/boost/graph/helpers.h>
 
 #include <Eigen/SparseCore>
-#include <Eigen/SparseLU>
 
 #include <algorithm>
 #include <array>
@@ -57,7 +56,8 @@ struct Polyhedron_charts
   std::vector<int> pface;                        // per mesh face: its face of P
   std::vector<std::array<int, 2>> pedges;        // P's edges (corner indices), as first met in the faces
   std::vector<std::vector<int>> paths;           // per P edge: mesh vertices from pedges[k][0] to pedges[k][1]
-  std::vector<std::vector<double>> steps;        // ... and the metric's lengths of their edges
+  std::vector<std::vector<int>> path_halfedges;  // ... and their halfedges, from paths[k][i] to paths[k][i + 1]
+  std::vector<std::vector<double>> steps;        // ... and the lengths of those in the charts
   std::vector<std::vector<Point_2>> shape;       // per P face: its polygon
   bool mirrored = false;                         // the mesh's faces turn clockwise in the charts
 };
@@ -115,7 +115,7 @@ Polycube_metric_status polyhedron_metric_core(const Mesh_arrays<TM>& m, const st
   std::vector<char> used;
   std::vector<int> path_of_edge;
   std::vector<std::vector<int>> paths(np);
-  std::vector<std::vector<double>> steps(np);
+  std::vector<std::vector<int>> path_halfedges(np);   // per path: its halfedges, from its first corner
   // Dijkstra from vertex s to t on the metric's lengths, returning the distance; `from[v]` is
   // the halfedge into v. With `avoid`, not through earlier paths (their inner vertices and
   // edges) nor through other corners.
@@ -172,20 +172,20 @@ Polycube_metric_status polyhedron_metric_core(const Mesh_arrays<TM>& m, const st
         break;
       }
       std::vector<int> p(1, t);
-      std::vector<double> len;
+      std::vector<int> hs;
       for(int v = t; v != s;) {
         const int h = from[std::size_t(v)];
         path_of_edge[std::size_t(h >> 1)] = int(k);
         ++st.path_edges;
-        len.push_back(m.edge_length(h));
+        hs.push_back(h);
         v = m.source(h);
         p.push_back(v);
       }
       std::reverse(p.begin(), p.end());
-      std::reverse(len.begin(), len.end());
+      std::reverse(hs.begin(), hs.end());
       for(std::size_t i = 1; i + 1 < p.size(); ++i) used[std::size_t(p[i])] = 1;
       paths[k] = p;
-      steps[k] = len;
+      path_halfedges[k] = hs;
     }
     if(st.message.empty()) break;
   }
@@ -234,15 +234,10 @@ Polycube_metric_status polyhedron_metric_core(const Mesh_arrays<TM>& m, const st
     }
   }
   // 3. the polygons, and every path vertex placed by arc length in each face along the path
-  // with a reference, the paths are measured (and their vertices placed by arc length) in it
-  std::vector<std::vector<double>> along = steps;
-  if(reference)
-    for(std::size_t k = 0; k < np; ++k)
-      for(std::size_t i = 0; i + 1 < paths[k].size(); ++i) {
-        int h = m.vertex_out[std::size_t(paths[k][i])];
-        while(m.target[std::size_t(h)] != paths[k][i + 1]) h = m.ccw_out(h);
-        along[k][i] = (*reference)[std::size_t(h >> 1)];
-      }
+  // the paths are measured (and their vertices placed by arc length) in the reference, if any
+  std::vector<std::vector<double>> along(np);
+  for(std::size_t k = 0; k < np; ++k)
+    for(int h : path_halfedges[k]) along[k].push_back(reference ? (*reference)[std::size_t(h >> 1)] : m.edge_length(h));
   std::vector<double> reference_length(np, 0.);
   for(std::size_t k = 0; k < np; ++k) for(double x : along[k]) reference_length[k] += x;
   auto length_between = [&](int a, int b) {
@@ -299,79 +294,12 @@ Polycube_metric_status polyhedron_metric_core(const Mesh_arrays<TM>& m, const st
         if(!on_path[std::size_t(v)] && column[std::size_t(v)] < 0) { column[std::size_t(v)] = int(unknowns.size()); unknowns.push_back(v); }
       }
     }
-    std::vector<Point_2> solved(unknowns.size());
     std::vector<int> piece;   // the mesh faces of this piece
     for(std::size_t f = 0; f < nf; ++f) if(region[f] == r) piece.push_back(int(f));
+    std::vector<Point_2> solved;
+    if(!stretch_minimizing_tutte(m, piece, column, unknowns, fixed, reference, iterations, solved, st.message))
+      return st;
     auto place = [&](int v) { return column[std::size_t(v)] >= 0 ? solved[std::size_t(column[std::size_t(v)])] : fixed.at(v); };
-    // Tutte embeddings, the first with mean value weights, each next one with every weight divided
-    // once more by the L2 stretch at its far end (Yoshizawa, Belyaev and Seidel 2004), while the
-    // stretch over the reference falls: positive weights keep every one bijective
-    std::vector<double> sigma(nv, 0.), divisor(nv, 1.);   // per vertex: its stretch, the product of its stretches so far
-    std::vector<Point_2> best;
-    double best_stretch = std::numeric_limits<double>::infinity();
-    const int rounds = reference && iterations > 0 ? 1 + iterations : 1;
-    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
-    for(int round = 0; round < rounds && !unknowns.empty(); ++round) {
-      const int n = int(unknowns.size());
-      std::vector<Eigen::Triplet<double>> t;
-      Eigen::MatrixXd b = Eigen::MatrixXd::Zero(n, 2);
-      for(int i = 0; i < n; ++i) {
-        const int v = unknowns[std::size_t(i)];
-        double sum = 0;
-        const int h0 = m.vertex_out[std::size_t(v)];
-        int h = h0;
-        do {   // mean value weight of edge (v, q): (tan(a/2) + tan(b/2)) / |vq|, a and b the metric's angles at v beside it
-          const int q = m.target[std::size_t(h)];
-          const double wgt = (std::tan(0.5 * m.angle[std::size_t(h)]) + std::tan(0.5 * m.angle[std::size_t(m.next[std::size_t(h ^ 1)])])) /
-                             ((std::max)(m.edge_length(h), 1e-300) * divisor[std::size_t(q)]);
-          sum += wgt;
-          if(column[std::size_t(q)] >= 0) t.emplace_back(i, column[std::size_t(q)], -wgt);
-          else {
-            const auto it = fixed.find(q);
-            if(it == fixed.end()) { st.message = "a piece of the cut is not a disk bounded by its paths"; return st; }
-            b(i, 0) += wgt * it->second.x();
-            b(i, 1) += wgt * it->second.y();
-          }
-          h = m.ccw_out(h);
-        } while(h != h0);
-        t.emplace_back(i, i, sum);
-      }
-      Eigen::SparseMatrix<double> A(n, n);
-      A.setFromTriplets(t.begin(), t.end());
-      if(round == 0) lu.analyzePattern(A);   // the pattern stays: one ordering for all rounds
-      lu.factorize(A);
-      if(lu.info() != Eigen::Success) { st.message = "the Tutte embedding of a face could not be factored"; return st; }
-      const Eigen::MatrixXd x = lu.solve(b);
-      for(int i = 0; i < n; ++i) solved[std::size_t(i)] = Point_2(x(i, 0), x(i, 1));
-      if(rounds == 1) break;
-      // the L2 stretch of the map from the chart to the reference triangles, per face and per vertex
-      std::fill(sigma.begin(), sigma.end(), 0.);   // sums of area times squared stretch
-      std::vector<double> vertex_area(nv, 0.);
-      double total = 0, total_area = 0;
-      for(int f : piece) {
-        const int h0 = m.face_halfedge[std::size_t(f)], h1 = m.next[std::size_t(h0)], h2 = m.next[std::size_t(h1)];
-        const int vs[3] = {m.source(h0), m.source(h1), m.source(h2)};
-        const double la = (*reference)[std::size_t(h0 >> 1)], lb = (*reference)[std::size_t(h1 >> 1)], lc = (*reference)[std::size_t(h2 >> 1)];
-        const double qx = (la * la + lc * lc - lb * lb) / (2 * la), qy = std::sqrt((std::max)(0., lc * lc - qx * qx));
-        const Point_2 c0 = place(vs[0]), c1 = place(vs[1]), c2 = place(vs[2]);
-        const double ux = c1.x() - c0.x(), uy = c1.y() - c0.y(), wx = c2.x() - c0.x(), wy = c2.y() - c0.y();
-        const double det = ux * wy - wx * uy;
-        // J = Q C^-1, Q = [(la, 0), (qx, qy)] as columns, C = [(ux, uy), (wx, wy)]; |J|_F^2 / 2
-        const double i00 = wy / det, i01 = -wx / det, i10 = -uy / det, i11 = ux / det;
-        const double j00 = la * i00 + qx * i10, j01 = la * i01 + qx * i11, j10 = qy * i10, j11 = qy * i11;
-        const double s2 = 0.5 * (j00 * j00 + j01 * j01 + j10 * j10 + j11 * j11);
-        const double area = 0.5 * la * qy;
-        for(int v : vs) { sigma[std::size_t(v)] += area * s2; vertex_area[std::size_t(v)] += area; }
-        total += area * s2;
-        total_area += area;
-      }
-      const double stretch = std::sqrt(total / (std::max)(total_area, 1e-300));
-      if(!(stretch < best_stretch)) break;   // the stretch rises again: keep the best
-      best_stretch = stretch;
-      best = solved;
-      for(std::size_t v = 0; v < nv; ++v) if(vertex_area[v] > 0) divisor[v] *= std::sqrt(sigma[v] / vertex_area[v]);
-    }
-    if(!best.empty()) solved = best;
     for(int f : piece) {
       int h = m.face_halfedge[std::size_t(f)];
       for(int i = 0; i < 3; ++i, h = m.next[std::size_t(h)]) chart[std::size_t(f)][std::size_t(i)] = place(m.source(h));
@@ -419,13 +347,10 @@ Polycube_metric_status polyhedron_metric_core(const Mesh_arrays<TM>& m, const st
     charts->pface = pface;
     charts->pedges = pedges;
     charts->paths = paths;
-    charts->steps = steps;
+    charts->path_halfedges = path_halfedges;
+    charts->steps.assign(np, {});
     for(std::size_t k = 0; k < np; ++k)   // in the charts' lengths: where the relaxation slid them
-      for(std::size_t i = 0; i + 1 < paths[k].size(); ++i) {
-        int h = m.vertex_out[std::size_t(paths[k][i])];
-        while(m.target[std::size_t(h)] != paths[k][i + 1]) h = m.ccw_out(h);
-        charts->steps[k][i] = lengths[std::size_t(h >> 1)];
-      }
+      for(int h : path_halfedges[k]) charts->steps[k].push_back(lengths[std::size_t(h >> 1)]);
     charts->shape = shape;
     charts->mirrored = negative > 0;
   }

@@ -148,8 +148,7 @@ Polyhedron_remesh_status polyhedron_remesh(const TriangleMesh& tm,
       const double t = ch.steps[k][seg] > 0 ? (std::min)(1., (std::max)(0., (s - at) / ch.steps[k][seg])) : 0.;
       const V3 a = point3(p[seg]), b = point3(p[seg + 1]);
       position.push_back(V3{{(1 - t) * a[0] + t * b[0], (1 - t) * a[1] + t * b[1], (1 - t) * a[2] + t * b[2]}});
-      int h = m.vertex_out[std::size_t(p[seg])];   // a face beside the path edge
-      while(m.target[std::size_t(h)] != p[seg + 1]) h = m.ccw_out(h);
+      const int h = ch.path_halfedges[k][seg];   // a face beside the path edge
       under.push_back(m.face[std::size_t(h)] >= 0 ? m.face[std::size_t(h)] : m.face[std::size_t(h ^ 1)]);
       expected.push_back(2 + edge_sides[k]);
     }

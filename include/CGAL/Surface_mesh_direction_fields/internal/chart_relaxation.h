@@ -4,8 +4,10 @@
 #ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_CHART_RELAXATION_H
 #define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_CHART_RELAXATION_H
 
-// As-rigid-as-possible relaxation of the charts of a polyhedron's faces (the local / global
-// iteration of Liu et al. 2008 on top of a bijective Tutte embedding), with the cut paths free
+// The charts of a polyhedron's faces, made close to the input's own triangles while bijective:
+// stretch-minimising Tutte embeddings of each piece (stretch_minimizing_tutte()), then
+// as-rigid-as-possible relaxation of all of them (the local / global iteration of Liu et al.
+// 2008, relax_polyhedron_charts()), with the cut paths free
 // to slide along P's edges: every path vertex has one unknown, its distance t from the edge's
 // first corner, shared by the two faces beside the path, so both sides always agree on where
 // it lies and the resulting lengths stay one metric. Each step is accepted only as far as it
@@ -17,17 +19,111 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh_arrays.h>
 
 #include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
 namespace CGAL {
 namespace Surface_mesh_direction_fields {
 namespace internal {
+
+// A triangle of side lengths a = |p0 p1|, b = |p1 p2|, c = |p2 p0| in the plane: p0 at the origin,
+// p1 on the positive x axis, p2 above it (sign +1) or below (-1).
+inline std::array<Point_2, 3> reference_triangle(double a, double b, double c, double sign)
+{
+  const double x = (a * a + c * c - b * b) / (2 * a);
+  return {{Point_2(0, 0), Point_2(a, 0), Point_2(x, sign * std::sqrt((std::max)(c * c - x * x, 0.)))}};
+}
+// The Tutte embedding of one piece of the cut (`piece`: its mesh faces; `unknowns`: its inner
+// vertices, `column` their rows; `fixed`: the positions of its boundary vertices), first with
+// mean value weights of the metric, then up to `extra_rounds` more times with every weight
+// divided once more by the L2 stretch over `reference` at its far end (Yoshizawa, Belyaev and
+// Seidel 2004), while that stretch falls: positive weights keep every embedding bijective.
+// Writes the inner vertices' positions to `solved`; false (and `message`) when the piece is not a
+// disk bounded by the fixed vertices or its system cannot be factored.
+template <typename TM>
+bool stretch_minimizing_tutte(const Mesh_arrays<TM>& m, const std::vector<int>& piece, const std::vector<int>& column,
+                              const std::vector<int>& unknowns, const std::map<int, Point_2>& fixed, const std::vector<double>* reference,
+                              int extra_rounds, std::vector<Point_2>& solved, std::string& message)
+{
+  const std::size_t nv = m.number_of_vertices();
+  solved.assign(unknowns.size(), Point_2(0, 0));
+  auto place = [&](int v) { return column[std::size_t(v)] >= 0 ? solved[std::size_t(column[std::size_t(v)])] : fixed.at(v); };
+  std::vector<double> sigma(nv, 0.), divisor(nv, 1.);   // per vertex: its stretch, the product of its stretches so far
+  std::vector<Point_2> best;
+  double best_stretch = std::numeric_limits<double>::infinity();
+  const int rounds = reference && extra_rounds > 0 ? 1 + extra_rounds : 1;
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
+  for(int round = 0; round < rounds && !unknowns.empty(); ++round) {
+    const int n = int(unknowns.size());
+    std::vector<Eigen::Triplet<double>> t;
+    Eigen::MatrixXd b = Eigen::MatrixXd::Zero(n, 2);
+    for(int i = 0; i < n; ++i) {
+      const int v = unknowns[std::size_t(i)];
+      double sum = 0;
+      const int h0 = m.vertex_out[std::size_t(v)];
+      int h = h0;
+      do {   // mean value weight of edge (v, q): (tan(a/2) + tan(b/2)) / |vq|, a and b the metric's angles at v beside it
+        const int q = m.target[std::size_t(h)];
+        const double wgt = (std::tan(0.5 * m.angle[std::size_t(h)]) + std::tan(0.5 * m.angle[std::size_t(m.next[std::size_t(h ^ 1)])])) /
+                           ((std::max)(m.edge_length(h), 1e-300) * divisor[std::size_t(q)]);
+        sum += wgt;
+        if(column[std::size_t(q)] >= 0) t.emplace_back(i, column[std::size_t(q)], -wgt);
+        else {
+          const auto it = fixed.find(q);
+          if(it == fixed.end()) { message = "a piece of the cut is not a disk bounded by its paths"; return false; }
+          b(i, 0) += wgt * it->second.x();
+          b(i, 1) += wgt * it->second.y();
+        }
+        h = m.ccw_out(h);
+      } while(h != h0);
+      t.emplace_back(i, i, sum);
+    }
+    Eigen::SparseMatrix<double> A(n, n);
+    A.setFromTriplets(t.begin(), t.end());
+    if(round == 0) lu.analyzePattern(A);   // the pattern stays: one ordering for all rounds
+    lu.factorize(A);
+    if(lu.info() != Eigen::Success) { message = "the Tutte embedding of a face could not be factored"; return false; }
+    const Eigen::MatrixXd x = lu.solve(b);
+    for(int i = 0; i < n; ++i) solved[std::size_t(i)] = Point_2(x(i, 0), x(i, 1));
+    if(rounds == 1) break;
+    // the L2 stretch of the map from the chart to the reference triangles, per face and per vertex
+    std::fill(sigma.begin(), sigma.end(), 0.);   // sums of area times squared stretch
+    std::vector<double> vertex_area(nv, 0.);
+    double total = 0, total_area = 0;
+    for(int f : piece) {
+      const int h0 = m.face_halfedge[std::size_t(f)], h1 = m.next[std::size_t(h0)], h2 = m.next[std::size_t(h1)];
+      const int vs[3] = {m.source(h0), m.source(h1), m.source(h2)};
+      const double la = (*reference)[std::size_t(h0 >> 1)], lb = (*reference)[std::size_t(h1 >> 1)], lc = (*reference)[std::size_t(h2 >> 1)];
+      const std::array<Point_2, 3> q = reference_triangle(la, lb, lc, 1.);
+      const double qx = q[2].x(), qy = q[2].y();
+      const Point_2 c0 = place(vs[0]), c1 = place(vs[1]), c2 = place(vs[2]);
+      const double ux = c1.x() - c0.x(), uy = c1.y() - c0.y(), wx = c2.x() - c0.x(), wy = c2.y() - c0.y();
+      const double det = ux * wy - wx * uy;
+      // J = Q C^-1, Q = [(la, 0), (qx, qy)] as columns, C = [(ux, uy), (wx, wy)]; |J|_F^2 / 2
+      const double i00 = wy / det, i01 = -wx / det, i10 = -uy / det, i11 = ux / det;
+      const double j00 = la * i00 + qx * i10, j01 = la * i01 + qx * i11, j10 = qy * i10, j11 = qy * i11;
+      const double s2 = 0.5 * (j00 * j00 + j01 * j01 + j10 * j10 + j11 * j11);
+      const double area = 0.5 * la * qy;
+      for(int v : vs) { sigma[std::size_t(v)] += area * s2; vertex_area[std::size_t(v)] += area; }
+      total += area * s2;
+      total_area += area;
+    }
+    const double stretch = std::sqrt(total / (std::max)(total_area, 1e-300));
+    if(!(stretch < best_stretch)) break;   // the stretch rises again: keep the best
+    best_stretch = stretch;
+    best = solved;
+    for(std::size_t v = 0; v < nv; ++v) if(vertex_area[v] > 0) divisor[v] *= std::sqrt(sigma[v] / vertex_area[v]);
+  }
+  if(!best.empty()) solved = best;
+  return true;
+}
 
 // What the relaxation needs of the cut: per mesh vertex its corner of P (or -1) and its path
 // (or -1, for vertices inside the pieces), per mesh face its face of P; P's faces, their
@@ -124,9 +220,8 @@ int relax_polyhedron_charts(const Mesh_arrays<TM>& m, const Polyhedron_cut_view&
   for(std::size_t f = 0; f < nf; ++f) {
     const int h0 = m.face_halfedge[f], h1 = m.next[std::size_t(h0)], h2 = m.next[std::size_t(h1)];
     const double a = reference[std::size_t(h0 >> 1)], b = reference[std::size_t(h1 >> 1)], c = reference[std::size_t(h2 >> 1)];
-    const double x = (a * a + c * c - b * b) / (2 * a), y2 = c * c - x * x;
-    ref[f] = {{Point_2(0, 0), Point_2(a, 0), Point_2(x, sign * std::sqrt((std::max)(y2, 0.)))}};
-    const double area2 = std::sqrt((std::max)(y2, 0.)) * a;   // twice the area
+    ref[f] = reference_triangle(a, b, c, sign);
+    const double area2 = std::abs(ref[f][2].y()) * a;   // twice the area
     const double l[3] = {a, b, c};
     for(int k = 0; k < 3; ++k) {   // cot of the angle opposite edge k: (sum of the other squares - its square) / (4 area)
       const double o1 = l[(k + 1) % 3], o2 = l[(k + 2) % 3];
