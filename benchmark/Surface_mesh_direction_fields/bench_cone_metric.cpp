@@ -31,14 +31,15 @@
 //                           (construction and first edit), edit_s (the second edit).
 //                           Targets (issue #12): compensation and edit <= 0.02 s at 20k,
 //                           <= 0.2 s at 400k.
-//   BM_remesh_pipeline/<size> the remeshing pipeline: the metric with the 8 cones on the input
-//                           triangulation, the box polycube metric, development and quad
+//   BM_remesh_pipeline/<size> the remeshing pipeline: the metric with the 8 cones (with flips:
+//                           the paths only need its conformal factors), the box polycube metric, development and quad
 //                           tessellation with about as many quads as input faces. Counters
 //                           metric_s, compensation_s, tessellation_s, output_quads, read_back_ok
 //                           (valences and no inverted face). Targets (issue #13): <= 1 s at
 //                           20k, <= 10 s at 400k.
 #include "benchmark_util.h"
 
+#include <CGAL/IO/OFF.h>
 #include <CGAL/Surface_mesh_direction_fields/Intrinsic_triangulation.h>
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/field_editing.h>
@@ -48,6 +49,7 @@
 #include <CGAL/Surface_mesh_direction_fields/rotation_compensation.h>
 
 #include <array>
+#include <fstream>
 #include <chrono>
 #include <limits>
 #include <sstream>
@@ -120,6 +122,11 @@ std::unique_ptr<smdf_bench::Bench_mesh> build_cone_mesh(std::size_t target_faces
   src << smdf_bench::base_name(cone_base_mesh_path());
   smdf_bench::refine_to_size(b->mesh, target_faces, src);
   smdf_bench::describe(*b);
+  if(const char* dir = std::getenv("SMDF_BENCH_WRITE_DIR")) {   // to run smdf on the same mesh
+    std::ofstream out(std::string(dir) + "/armadillo_" + std::to_string(target_faces) + ".off");
+    out.precision(17);
+    if(!CGAL::IO::write_OFF(out, b->mesh)) throw std::runtime_error("cannot write the mesh to " + std::string(dir));
+  }
   b->build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   b->source = src.str();
   return b;
@@ -301,7 +308,7 @@ void BM_remesh_pipeline(benchmark::State& state)
     }
     const double h = std::sqrt(area / double(num_faces(b->mesh)));   // about as many quads as input faces
     double metric_s = 0, compensation_s = 0, tessellation_s = 0;
-    std::size_t quads = 0, inverted = 0;
+    std::size_t quads = 0, inverted = 0, flips = 0;
     bool ok = true;
     std::string message;
     smdf_bench::Memory_probe mem;
@@ -309,14 +316,17 @@ void BM_remesh_pipeline(benchmark::State& state)
       Mesh work = b->mesh;
       auto target = work.add_property_map<Vertex, double>("v:bench_target", 0.).first;
       auto flat = work.add_property_map<Mesh::Edge_index, double>("e:bench_flat", 0.).first;
+      auto u = work.add_property_map<Vertex, double>("v:bench_u", 0.).first;
       auto box = work.add_property_map<Mesh::Edge_index, double>("e:bench_box", 0.).first;
       for(Vertex v : cones) put(target, v, CGAL_PI / 2);
       auto t0 = std::chrono::steady_clock::now();
-      const SMDF::Cone_metric_status cm = SMDF::compute_cone_metric(work, target, flat, SMDF::parameters::intrinsic_edge_flips(false));
+      const SMDF::Cone_metric_status cm = SMDF::compute_cone_metric(work, target, flat, SMDF::parameters::conformal_factor_map(u));
       metric_s += since(t0);
+      if(!cm.converged) { ok = false; message = "flat cone metric: " + cm.message; }
+      flips = cm.edge_flips;
       t0 = std::chrono::steady_clock::now();
       const SMDF::Polycube_metric_status ps = cm.converged
-          ? SMDF::box_polycube_metric(work, corners, h, box, SMDF::parameters::edge_length_map(flat))
+          ? SMDF::box_polycube_metric(work, corners, h, box, SMDF::parameters::conformal_factor_map(u))
           : SMDF::box_polycube_metric(work, corners, h, box);
       compensation_s += since(t0);
       t0 = std::chrono::steady_clock::now();
@@ -337,6 +347,7 @@ void BM_remesh_pipeline(benchmark::State& state)
     state.counters["tessellation_s"] = benchmark::Counter(tessellation_s, benchmark::Counter::kAvgIterations);
     state.counters["output_quads"] = double(quads);
     state.counters["inverted_faces"] = double(inverted);
+    state.counters["edge_flips"] = double(flips);
     state.counters["read_back_ok"] = ok ? 1 : 0;
     if(!ok) state.SetLabel(b->source + " READ-BACK FAILED: " + message);
   } catch(const std::exception& e) {

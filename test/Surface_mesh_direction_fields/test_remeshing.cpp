@@ -320,19 +320,32 @@ void box_polycube(const std::string& dir)
       }
     }
     const bool spot = std::string(file) == "spot_c3d.obj";
-    // the paths and weights under the flat cone metric with the corners as cones of pi/2 (Lai et al.)
+    // the paths under the flat cone metric with the corners as cones of pi/2 (Lai et al.): on Spot
+    // through its conformal factors (the flow free to flip edges), on the bunny through its
+    // lengths on the input triangulation (the weights' angles then also the flat metric's)
     auto targets = mesh.add_property_map<Surface_mesh::Vertex_index, double>("v:target", 0.).first;
     for(auto v : corners) targets[v] = M_PI / 2;
     auto flat = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:flat", 0).first;
-    const auto cm = SMDF::compute_cone_metric(mesh, targets, flat, SMDF::parameters::intrinsic_edge_flips(false));
+    auto u = mesh.add_property_map<Surface_mesh::Vertex_index, double>("v:u", 0.).first;
+    const auto cm = spot ? SMDF::compute_cone_metric(mesh, targets, flat, SMDF::parameters::conformal_factor_map(u))
+                         : SMDF::compute_cone_metric(mesh, targets, flat, SMDF::parameters::intrinsic_edge_flips(false));
     SMDF_CHECK_MSG(cm.converged, file << ": flat cone metric " << cm.message);
+    if(spot && !cm.triangulation_changed) {   // the factors scale the input's edges to the flat metric's lengths
+      const SMDF::internal::Mesh_arrays<Surface_mesh> arrays(mesh, SMDF::parameters::default_values());   // Euclidean lengths
+      std::vector<double> scaled;
+      SMDF_CHECK(SMDF::internal::conformal_path_metric(arrays, SMDF::parameters::conformal_factor_map(u), scaled));
+      double worst = 0;
+      for(std::size_t e = 0; e < scaled.size(); ++e) worst = std::max(worst, std::abs(scaled[e] / flat[arrays.edges[e]] - 1));
+      SMDF_CHECK_MSG(worst < 1e-12, file << ": l e^((u_i + u_j) / 2) is the flat metric's length (" << worst << ")");
+    }
     const double input_area = surface_area(mesh);
     // relaxed (the default) and the plain Tutte embedding; on Spot also a fine grid
     std::map<int, double> ratio;
     for(int relax : {10, 0}) {
       for(double h : spot && relax == 10 ? std::vector<double>{extent / 16, extent / 48} : std::vector<double>{extent / 16}) {
         auto lengths = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:box", 0).first;
-        const auto ps = SMDF::box_polycube_metric(mesh, corners, h, lengths, SMDF::parameters::edge_length_map(flat).number_of_iterations(relax));
+        const auto ps = spot ? SMDF::box_polycube_metric(mesh, corners, h, lengths, SMDF::parameters::conformal_factor_map(u).number_of_iterations(relax))
+                             : SMDF::box_polycube_metric(mesh, corners, h, lengths, SMDF::parameters::edge_length_map(flat).number_of_iterations(relax));
         SMDF_CHECK_MSG(ps.success, file << ": box metric: " << ps.message);
         if(!ps.success) continue;
         SMDF_CHECK_MSG((ps.relaxation_steps > 0) == (relax > 0), file << ": relaxation steps taken " << ps.relaxation_steps);
@@ -402,11 +415,12 @@ void octahedron_polyhedron(const std::string& dir)
   auto targets = mesh.add_property_map<Surface_mesh::Vertex_index, double>("v:octa", 0.).first;
   for(auto v : corners) targets[v] = 2 * M_PI / 3;
   auto flat = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:octa_flat", 0).first;
-  const auto cm = SMDF::compute_cone_metric(mesh, targets, flat, SMDF::parameters::intrinsic_edge_flips(false));
+  auto u = mesh.add_property_map<Surface_mesh::Vertex_index, double>("v:octa_u", 0.).first;
+  const auto cm = SMDF::compute_cone_metric(mesh, targets, flat, SMDF::parameters::conformal_factor_map(u));
   SMDF_CHECK_MSG(cm.converged, "spot, octahedron cones: " << cm.message);
   const double h = extent / 8, side = 6 * h;
   auto lengths = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:octa", 0).first;
-  const auto ps = SMDF::polyhedron_metric(mesh, corners, faces, side, lengths, SMDF::parameters::edge_length_map(flat));
+  const auto ps = SMDF::polyhedron_metric(mesh, corners, faces, side, lengths, SMDF::parameters::conformal_factor_map(u));
   SMDF_CHECK_MSG(ps.success, "spot, octahedron metric: " << ps.message);
   if(!ps.success) return;
   const auto dev = SMDF::develop_flat_metric(mesh, SMDF::parameters::edge_length_map(lengths));

@@ -324,6 +324,19 @@ Json run_remesh(const Args& args)
     metric["source"] = args.has("polycube") ? "box polycube" : "embedding";
   }
   metric_s = clock.lap();
+  // Lai et al.: P's edges become shortest paths under the flat cone metric with P's cones. Only
+  // its conformal factors are needed, so the flow may flip edges (it converges on every mesh;
+  // on the input triangulation alone it stalls on many). False: Euclidean paths.
+  auto u = mesh.add_property_map<vertex_descriptor, double>("v:smdf_remesh_u", 0.).first;
+  auto flat_cone_factors = [&](Mesh::Property_map<vertex_descriptor, double> targets) {
+    const Edge_length_property flat = mesh.add_property_map<edge_descriptor, double>("e:smdf_remesh_flat", 0.).first;
+    const SMDF::Cone_metric_status cm = on_file(file, [&] {
+      return SMDF::compute_cone_metric(mesh, targets, flat, SMDF::parameters::conformal_factor_map(u));
+    });
+    metric["flat_cone_metric_converged"] = cm.converged;
+    metric["flat_cone_metric_edge_flips"] = cm.edge_flips;
+    return cm.converged;
+  };
   double h = requested_h > 0 ? requested_h : std::sqrt(metric_area(mesh, lengths) / (double(requested_faces) * unit_area));
   if(args.has("polycube") && polycube != "box") {
     // a polyhedron of unit squares and equilateral triangles: the octahedron, or from a file
@@ -391,17 +404,13 @@ Json run_remesh(const Args& args)
     std::vector<double> angle_sum(corners.size(), 0.);
     for(const auto& f : pfaces) for(int c : f) angle_sum[std::size_t(c)] += f.size() == 4 ? CGAL_PI / 2 : CGAL_PI / 3;
     for(std::size_t i = 0; i < corners.size(); ++i) targets[corners[i]] = 2 * CGAL_PI - angle_sum[i];
-    const Edge_length_property flat = mesh.add_property_map<edge_descriptor, double>("e:smdf_remesh_flat", 0.).first;
-    const SMDF::Cone_metric_status cm = on_file(file, [&] {
-      return SMDF::compute_cone_metric(mesh, targets, flat, SMDF::parameters::intrinsic_edge_flips(false));
-    });
-    metric["flat_cone_metric_converged"] = cm.converged;
+    const bool flat_ok = flat_cone_factors(targets);
     if(mixed) {   // each face of P its own grid (polyhedron_remesh), n grid edges per side
       const int n = int((std::max)(1., std::round(side / h)));
       Mesh remesh;
       const SMDF::Polyhedron_remesh_status rs = on_file(file, [&] {
-        return cm.converged ? SMDF::polyhedron_remesh(mesh, corners, pfaces, n, remesh, SMDF::parameters::edge_length_map(flat).number_of_iterations(relax_steps))
-                            : SMDF::polyhedron_remesh(mesh, corners, pfaces, n, remesh, SMDF::parameters::number_of_iterations(relax_steps));
+        return flat_ok ? SMDF::polyhedron_remesh(mesh, corners, pfaces, n, remesh, SMDF::parameters::conformal_factor_map(u).number_of_iterations(relax_steps))
+                       : SMDF::polyhedron_remesh(mesh, corners, pfaces, n, remesh, SMDF::parameters::number_of_iterations(relax_steps));
       });
       Json c = Json::array();
       for(vertex_descriptor v : corners) c.push_back(index(v));
@@ -437,8 +446,8 @@ Json run_remesh(const Args& args)
       return out;
     }
     const SMDF::Polycube_metric_status ps = on_file(file, [&] {
-      return cm.converged ? SMDF::polyhedron_metric(mesh, corners, pfaces, side, lengths, SMDF::parameters::edge_length_map(flat).number_of_iterations(relax_steps))
-                          : SMDF::polyhedron_metric(mesh, corners, pfaces, side, lengths, SMDF::parameters::number_of_iterations(relax_steps));
+      return flat_ok ? SMDF::polyhedron_metric(mesh, corners, pfaces, side, lengths, SMDF::parameters::conformal_factor_map(u).number_of_iterations(relax_steps))
+                     : SMDF::polyhedron_metric(mesh, corners, pfaces, side, lengths, SMDF::parameters::number_of_iterations(relax_steps));
     });
     compensation_s = clock.lap();
     Json c = Json::array();
@@ -461,14 +470,10 @@ Json run_remesh(const Args& args)
     // Lai et al.: the paths under the flat cone metric with cones of pi/2 at the corners
     auto targets = mesh.add_property_map<vertex_descriptor, double>("v:smdf_remesh_target", 0.).first;
     for(vertex_descriptor v : corners) targets[v] = CGAL_PI / 2;
-    const Edge_length_property flat = mesh.add_property_map<edge_descriptor, double>("e:smdf_remesh_flat", 0.).first;
-    const SMDF::Cone_metric_status cm = on_file(file, [&] {
-      return SMDF::compute_cone_metric(mesh, targets, flat, SMDF::parameters::intrinsic_edge_flips(false));
-    });
-    metric["flat_cone_metric_converged"] = cm.converged;
+    const bool flat_ok = flat_cone_factors(targets);
     const SMDF::Polycube_metric_status ps = on_file(file, [&] {
-      return cm.converged ? SMDF::box_polycube_metric(mesh, corners, h, lengths, SMDF::parameters::edge_length_map(flat).number_of_iterations(relax_steps))
-                          : SMDF::box_polycube_metric(mesh, corners, h, lengths, SMDF::parameters::number_of_iterations(relax_steps));   // Euclidean paths and weights
+      return flat_ok ? SMDF::box_polycube_metric(mesh, corners, h, lengths, SMDF::parameters::conformal_factor_map(u).number_of_iterations(relax_steps))
+                     : SMDF::box_polycube_metric(mesh, corners, h, lengths, SMDF::parameters::number_of_iterations(relax_steps));   // Euclidean paths
     });
     compensation_s = clock.lap();
     Json c = Json::array();

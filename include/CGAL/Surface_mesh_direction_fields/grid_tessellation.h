@@ -19,10 +19,11 @@
 
 #include <array>
 #include <cmath>
-#include <map>
 #include <sstream>
 #include <string>
 #include <tuple>
+#include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 namespace CGAL {
@@ -328,7 +329,17 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
   };
   typedef std::tuple<int, int, double, double> Key;
   auto key_of = [](const Where& w) { return w.kind == 2 ? Key(2, w.id, 0., 0.) : Key(w.kind, w.id, w.x, w.y); };
-  std::map<Key, std::size_t> id_of;
+  struct Key_hash {   // std::hash<double> maps 0.0 and -0.0 alike, as == does
+    std::size_t operator()(const Key& k) const
+    {
+      std::size_t x = std::hash<long long>()((static_cast<long long>(std::get<1>(k)) << 2) | std::get<0>(k));
+      x ^= std::hash<double>()(std::get<2>(k)) + 0x9e3779b97f4a7c15ULL + (x << 6) + (x >> 2);
+      x ^= std::hash<double>()(std::get<3>(k)) + 0x9e3779b97f4a7c15ULL + (x << 6) + (x >> 2);
+      return x;
+    }
+  };
+  std::unordered_map<Key, std::size_t, Key_hash> id_of;   // hashed: one lookup per grid point and walk
+  id_of.reserve(2 * nf);
   std::vector<Where> points;
   std::vector<std::pair<int, Point_2>> seat;   // per grid point: a face containing it and its coordinates there
   for(std::size_t f = 0; f < nf; ++f) {
@@ -373,7 +384,17 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
     }
     return false;
   };
-  std::map<std::vector<std::size_t>, int> face_set;
+  typedef std::array<std::size_t, 4> Face_key;   // corners from the smallest, unused ones -1
+  struct Face_key_hash {
+    std::size_t operator()(const Face_key& k) const
+    {
+      std::size_t x = 0;
+      for(std::size_t c : k) x ^= std::hash<std::size_t>()(c) + 0x9e3779b97f4a7c15ULL + (x << 6) + (x >> 2);
+      return x;
+    }
+  };
+  std::unordered_set<Face_key, Face_key_hash> face_set;   // hashed: every face is met from each of its corners
+  face_set.reserve(points.size() * (square ? 1 : 2));
   std::vector<std::vector<std::size_t>> out_faces;
   for(std::size_t i = 0; i < points.size(); ++i) {
     if(points[i].kind == 2 && dev.cone_index_[std::size_t(points[i].id)] >= 0) continue;
@@ -408,9 +429,11 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
         at = target;
       }
       if(!ok) continue;   // crosses the boundary: no face there
-      std::vector<std::size_t> key = corners;   // one face, whichever corner it was found from
-      std::rotate(key.begin(), std::min_element(key.begin(), key.end()), key.end());
-      if(face_set.emplace(key, int(out_faces.size())).second) out_faces.push_back(corners);
+      Face_key key;   // one face, whichever corner it was found from
+      key.fill(std::size_t(-1));
+      const std::size_t first = std::size_t(std::min_element(corners.begin(), corners.end()) - corners.begin());
+      for(std::size_t k = 0; k < corners.size(); ++k) key[k] = corners[(first + k) % corners.size()];
+      if(face_set.insert(key).second) out_faces.push_back(corners);
     }
   }
 

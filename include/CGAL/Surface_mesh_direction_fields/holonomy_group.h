@@ -215,7 +215,10 @@ inline Tessellation_compatibility tessellation_compatibility(const Holonomy_grou
     for(const C& g : candidates) {
       const C u = g / t[shortest];   // maps the surface's translations to lattice coordinates
       double dev = 0;
-      for(const C& z : t) dev = (std::max)(dev, lattice_distance(u * z));
+      for(const C& z : t) {   // stop once this candidate cannot beat the best: most fail on their first few loops
+        dev = (std::max)(dev, lattice_distance(u * z));
+        if(!(dev < best_deviation - 1e-15)) break;
+      }
       if(dev < best_deviation - 1e-15) { best_deviation = dev; best_u = u; }
       if(dev <= tolerance) break;
     }

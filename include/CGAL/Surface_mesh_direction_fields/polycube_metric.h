@@ -48,6 +48,34 @@ struct Polycube_metric_status
 
 namespace internal {
 
+// Shortens an edge path (vertices `p`, halfedges `hs` from p[i] to p[i + 1]) wherever an edge
+// joins two of its vertices that are not consecutive. Under lengths that break the triangle
+// inequality (conformal scalings of the input's edges after intrinsic flips) a shortest path may
+// walk around a triangle; all three corners would then lie on one straight side of the chart.
+template <typename TM>
+void shortcut_chords(const Mesh_arrays<TM>& m, std::vector<int>& p, std::vector<int>& hs)
+{
+  std::map<int, std::size_t> position;
+  for(std::size_t i = 0; i < p.size(); ++i) position[p[i]] = i;
+  std::vector<int> q(1, p[0]), qh;
+  for(std::size_t i = 0; i + 1 < p.size();) {
+    std::size_t j = i + 1;
+    int via = hs[i];
+    const int h0 = m.vertex_out[std::size_t(p[i])];
+    int h = h0;
+    do {
+      const auto it = position.find(m.target[std::size_t(h)]);
+      if(it != position.end() && it->second > j) { j = it->second; via = h; }
+      h = m.ccw_out(h);
+    } while(h != h0);
+    q.push_back(p[j]);
+    qh.push_back(via);
+    i = j;
+  }
+  p.swap(q);
+  hs.swap(qh);
+}
+
 // What polyhedron_metric_core() knows at the end, for polyhedron_remesh(): every mesh face in the
 // chart of its polyhedron face, and the paths of P's edges.
 struct Polyhedron_charts
@@ -71,13 +99,17 @@ struct Polyhedron_charts
 // and b) by a Tutte embedding with mean value weights, the paths placed by arc length. With a
 // `reference` (one length per mesh edge), path lengths are measured in it and the embedding is
 // then relaxed towards its triangles for up to `iterations` steps, the paths sliding along P's
-// edges (relax_polyhedron_charts()). Writes one length per mesh edge.
+// edges (relax_polyhedron_charts()). With `path_metric` (one length per mesh edge), the paths are
+// shortest in it instead of the mesh's metric (and measured in it without a reference). Writes
+// one length per mesh edge.
 template <typename TM, typename Polygon>
 Polycube_metric_status polyhedron_metric_core(const Mesh_arrays<TM>& m, const std::vector<int>& corner_vertex,
                                               const std::vector<std::vector<int>>& pfaces, Polygon polygon,
                                               std::vector<double>& lengths, Polyhedron_charts* charts = nullptr,
-                                              const std::vector<double>* reference = nullptr, int iterations = 0)
+                                              const std::vector<double>* reference = nullptr, int iterations = 0,
+                                              const std::vector<double>* path_metric = nullptr)
 {
+  auto path_edge_length = [&](int h) { return path_metric ? (*path_metric)[std::size_t(h >> 1)] : m.edge_length(h); };
   Polycube_metric_status st;
   const std::size_t nv = m.number_of_vertices(), ne = m.number_of_edges(), nf = m.number_of_faces();
   const std::size_t nc = corner_vertex.size();
@@ -136,7 +168,7 @@ Polycube_metric_status polyhedron_metric_core(const Mesh_arrays<TM>& m, const st
       do {
         const int u = m.target[std::size_t(h)];
         const bool blocked = avoid && (used[std::size_t(u)] || (corner_of[std::size_t(u)] >= 0 && u != t) || path_of_edge[std::size_t(h >> 1)] >= 0);
-        const double du = it.first + m.edge_length(h);
+        const double du = it.first + path_edge_length(h);
         if(!blocked && du < d[std::size_t(u)]) { d[std::size_t(u)] = du; from[std::size_t(u)] = h; queue.push({du, u}); }
         h = m.ccw_out(h);
       } while(h != h0);
@@ -175,14 +207,15 @@ Polycube_metric_status polyhedron_metric_core(const Mesh_arrays<TM>& m, const st
       std::vector<int> hs;
       for(int v = t; v != s;) {
         const int h = from[std::size_t(v)];
-        path_of_edge[std::size_t(h >> 1)] = int(k);
-        ++st.path_edges;
         hs.push_back(h);
         v = m.source(h);
         p.push_back(v);
       }
       std::reverse(p.begin(), p.end());
       std::reverse(hs.begin(), hs.end());
+      shortcut_chords(m, p, hs);
+      for(int h : hs) path_of_edge[std::size_t(h >> 1)] = int(k);
+      st.path_edges += hs.size();
       for(std::size_t i = 1; i + 1 < p.size(); ++i) used[std::size_t(p[i])] = 1;
       paths[k] = p;
       path_halfedges[k] = hs;
@@ -237,7 +270,7 @@ Polycube_metric_status polyhedron_metric_core(const Mesh_arrays<TM>& m, const st
   // the paths are measured (and their vertices placed by arc length) in the reference, if any
   std::vector<std::vector<double>> along(np);
   for(std::size_t k = 0; k < np; ++k)
-    for(int h : path_halfedges[k]) along[k].push_back(reference ? (*reference)[std::size_t(h >> 1)] : m.edge_length(h));
+    for(int h : path_halfedges[k]) along[k].push_back(reference ? (*reference)[std::size_t(h >> 1)] : path_edge_length(h));
   std::vector<double> reference_length(np, 0.);
   for(std::size_t k = 0; k < np; ++k) for(double x : along[k]) reference_length[k] += x;
   auto length_between = [&](int a, int b) {
@@ -384,6 +417,29 @@ double relaxation_reference(const TM& tm, const Mesh_arrays<TM>& m, const NP& np
   return area;
 }
 
+// With `conformal_factor_map` (u, per vertex), the lengths l_ij e^((u_i + u_j) / 2) of the mesh's
+// edges, l its metric: the discrete conformal scaling that compute_cone_metric() returns as u,
+// on the input's edges whatever triangulation the flow ended on. Returns false without it.
+template <typename TM, typename NP>
+bool conformal_path_metric(const Mesh_arrays<TM>& m, const NP& np, std::vector<double>& path_metric)
+{
+  if constexpr(parameters::is_default_parameter<NP, internal_np::conformal_factor_t>::value) {
+    return false;
+  } else {
+    const auto ufm = parameters::get_parameter(np, internal_np::conformal_factor);
+    std::vector<double> u(m.number_of_vertices());
+    for(std::size_t v = 0; v < u.size(); ++v) {
+      u[v] = double(get(ufm, m.vertices[v]));
+      if(!std::isfinite(u[v]))
+        throw Input_error(Input_error::INVALID_ARGUMENT, "the conformal factor of vertex " + std::to_string(v) + " is not finite");
+    }
+    path_metric.resize(m.number_of_edges());
+    for(std::size_t e = 0; e < path_metric.size(); ++e)
+      path_metric[e] = m.edge_length(int(2 * e)) * std::exp(0.5 * (u[std::size_t(m.source(int(2 * e)))] + u[std::size_t(m.target[2 * e])]));
+    return true;
+  }
+}
+
 template <typename TM, typename NP>
 const Intrinsic_mesh<TM> genus_zero_mesh(const TM& tm, const NP& np, const char* who)
 {
@@ -402,10 +458,10 @@ const Intrinsic_mesh<TM> genus_zero_mesh(const TM& tm, const NP& np, const char*
 /// cube): the eight `corners` of a closed genus-0 mesh (corner \f$i\f$ goes to the box corner
 /// \f$(i \& 1, (i \gg 1) \& 1, (i \gg 2) \& 1)\f$) are joined by the twelve shortest edge paths
 /// of the box's edges (Dijkstra, each path avoiding the earlier ones and the other corners;
-/// lengths of the metric of `edge_length_map`, for Lai et al. the flat cone metric with cones
-/// of \f$\pi/2\f$ at the corners), which cut the mesh into six disks; each disk is mapped onto
-/// its face of the box by a Tutte embedding with mean value weights of the same metric (Floater
-/// 2003: bijective onto the convex rectangle), its boundary placed by arc length on the input
+/// for Lai et al. under the flat cone metric with cones of \f$\pi/2\f$ at the corners, given by
+/// its conformal factors), which cut the mesh into six disks; each disk is mapped onto its face
+/// of the box by a Tutte embedding with symmetrised mean value weights (Floater 2003; any
+/// positive weights make it bijective onto the convex rectangle), its boundary placed by arc length on the input
 /// surface along the four paths. The embedding is then made as close to an isometry of the input
 /// surface as its bijectivity allows, in two stages: Tutte embeddings whose weights are divided,
 /// round after round, by the L2 stretch at their far ends (Yoshizawa, Belyaev and Seidel 2004),
@@ -427,8 +483,13 @@ const Intrinsic_mesh<TM> genus_zero_mesh(const TM& tm, const NP& np, const char*
 /// 0.5 % of the input's and every input vertex within one edge length of it, against 2.8 % and
 /// up to 5 edge lengths with the plain Tutte embedding.
 ///
-/// Named parameters: `edge_length_map` (the metric of the path lengths and of the angles of the
-/// first mean value weights; default: Euclidean lengths) or `intrinsic_mesh`;
+/// Named parameters: `edge_length_map` (the metric \f$\ell\f$ of the path lengths and of the
+/// angles of the first mean value weights; default: Euclidean lengths) or `intrinsic_mesh`;
+/// `conformal_factor_map` (a readable vertex map of conformal factors \f$u\f$: the paths are
+/// then shortest under the lengths \f$\ell_{ij} e^{(u_i + u_j)/2}\f$ of the mesh's edges, the
+/// flat cone metric of Lai et al. when \f$u\f$ is the `conformal_factor_map` output of
+/// compute_cone_metric() with these cones; this works whatever triangulation the flow ended
+/// on, intrinsic edge flips included, since the factors live on the vertices; default: none);
 /// `number_of_iterations` (default 10: at most that many reweighting rounds and as many
 /// relaxation steps; 0 keeps the plain Tutte embedding, the path lengths and the arc lengths then
 /// in the metric of `edge_length_map`, the box's sides unscaled); `vertex_point_map` (the input
@@ -478,8 +539,10 @@ Polycube_metric_status box_polycube_metric(const TriangleMesh& tm,
     for(int c : pfaces[j]) p.push_back(Point_2(((c >> x) & 1) * dims[std::size_t(x)], ((c >> y) & 1) * dims[std::size_t(y)]));
     return p;
   };
-  std::vector<double> l;
-  Polycube_metric_status st = internal::polyhedron_metric_core(m, cv, pfaces, polygon, l, nullptr, iterations > 0 ? &reference : nullptr, iterations);
+  std::vector<double> l, path_metric;
+  const bool scaled = internal::conformal_path_metric(m, np, path_metric);
+  Polycube_metric_status st = internal::polyhedron_metric_core(m, cv, pfaces, polygon, l, nullptr, iterations > 0 ? &reference : nullptr,
+                                                               iterations, scaled ? &path_metric : nullptr);
   st.dimensions = dims;
   if(st.success) for(std::size_t e = 0; e < l.size(); ++e) put(lengths, m.edges[e], l[e]);
   return st;
@@ -524,8 +587,10 @@ Polycube_metric_status polyhedron_metric(const TriangleMesh& tm,
   std::vector<double> reference;
   int iterations = 0;
   internal::relaxation_reference(tm, m, np, reference, iterations);
-  std::vector<double> l;
-  Polycube_metric_status st = internal::polyhedron_metric_core(m, cv, faces, polygon, l, nullptr, iterations > 0 ? &reference : nullptr, iterations);
+  std::vector<double> l, path_metric;
+  const bool scaled = internal::conformal_path_metric(m, np, path_metric);
+  Polycube_metric_status st = internal::polyhedron_metric_core(m, cv, faces, polygon, l, nullptr, iterations > 0 ? &reference : nullptr,
+                                                               iterations, scaled ? &path_metric : nullptr);
   if(st.success) for(std::size_t e = 0; e < l.size(); ++e) put(lengths, m.edges[e], l[e]);
   return st;
 }

@@ -58,7 +58,9 @@ struct Polyhedron_remesh_status
 /// follow the relaxed paths.
 ///
 /// Named parameters: `edge_length_map` (the metric of the paths and of the embedding's first
-/// weights, e.g. the flat cone metric with P's cones) or `intrinsic_mesh`,
+/// weights; default: Euclidean lengths) or `intrinsic_mesh`; `conformal_factor_map` (the
+/// paths under the conformal scaling of that metric, e.g. the flat cone metric with P's cones,
+/// as for box_polycube_metric());
 /// `number_of_iterations` (as for box_polycube_metric(), default 10), `vertex_point_map`, and
 /// the index maps. `out` is cleared and receives the remesh when its faces could be built.
 template <typename TriangleMesh, typename PolygonMesh, typename NamedParameters = parameters::Default_named_parameters>
@@ -100,9 +102,11 @@ Polyhedron_remesh_status polyhedron_remesh(const TriangleMesh& tm,
     return faces[j].size() == 4 ? std::vector<Point_2>{Point_2(0, 0), Point_2(L, 0), Point_2(L, L), Point_2(0, L)}
                                 : std::vector<Point_2>{Point_2(0, 0), Point_2(L, 0), Point_2(L / 2, L * r3)};
   };
-  std::vector<double> lengths;
+  std::vector<double> lengths, path_metric;
+  const bool scaled = internal::conformal_path_metric(m, np, path_metric);
   internal::Polyhedron_charts ch;
-  st.metric = internal::polyhedron_metric_core(m, cv, faces, polygon, lengths, &ch, iterations > 0 ? &reference : nullptr, iterations);
+  st.metric = internal::polyhedron_metric_core(m, cv, faces, polygon, lengths, &ch, iterations > 0 ? &reference : nullptr, iterations,
+                                               scaled ? &path_metric : nullptr);
   if(!st.metric.success) { st.message = st.metric.message; return st; }
   typedef typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
   VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));

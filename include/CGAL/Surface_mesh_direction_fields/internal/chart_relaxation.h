@@ -19,7 +19,6 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh_arrays.h>
 
 #include <Eigen/SparseCore>
-#include <Eigen/SparseLU>
 
 #include <algorithm>
 #include <array>
@@ -42,11 +41,12 @@ inline std::array<Point_2, 3> reference_triangle(double a, double b, double c, d
 }
 // The Tutte embedding of one piece of the cut (`piece`: its mesh faces; `unknowns`: its inner
 // vertices, `column` their rows; `fixed`: the positions of its boundary vertices), first with
-// mean value weights of the metric, then up to `extra_rounds` more times with every weight
-// divided once more by the L2 stretch over `reference` at its far end (Yoshizawa, Belyaev and
-// Seidel 2004), while that stretch falls: positive weights keep every embedding bijective.
-// Writes the inner vertices' positions to `solved`; false (and `message`) when the piece is not a
-// disk bounded by the fixed vertices or its system cannot be factored.
+// symmetrised mean value weights of the metric (the mean of Floater's weights at the edge's two
+// ends), then up to `extra_rounds` more times with every weight divided once more by the L2
+// stretch over `reference` at its far end (Yoshizawa, Belyaev and Seidel 2004), while that
+// stretch falls: positive weights keep every embedding bijective. Writes the inner vertices'
+// positions to `solved`; false (and `message`) when the piece is not a disk bounded by the fixed
+// vertices or its system cannot be factored.
 template <typename TM>
 bool stretch_minimizing_tutte(const Mesh_arrays<TM>& m, const std::vector<int>& piece, const std::vector<int>& column,
                               const std::vector<int>& unknowns, const std::map<int, Point_2>& fixed, const std::vector<double>* reference,
@@ -59,39 +59,58 @@ bool stretch_minimizing_tutte(const Mesh_arrays<TM>& m, const std::vector<int>& 
   std::vector<Point_2> best;
   double best_stretch = std::numeric_limits<double>::infinity();
   const int rounds = reference && extra_rounds > 0 ? 1 + extra_rounds : 1;
-  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
-  for(int round = 0; round < rounds && !unknowns.empty(); ++round) {
-    const int n = int(unknowns.size());
+  // per unknown: its neighbours and their symmetrised mean value weights (the weight at v is
+  // (tan(a/2) + tan(b/2)) / |vq|, a and b the metric's angles at v beside vq; at q likewise)
+  const int n = int(unknowns.size());
+  std::vector<int> first(std::size_t(n) + 1, 0), neighbour;
+  std::vector<double> base;
+  for(int i = 0; i < n; ++i) {
+    const int h0 = m.vertex_out[std::size_t(unknowns[std::size_t(i)])];
+    int h = h0;
+    do {
+      const int q = m.target[std::size_t(h)];
+      if(column[std::size_t(q)] < 0 && fixed.find(q) == fixed.end()) { message = "a piece of the cut is not a disk bounded by its paths"; return false; }
+      const double at_v = std::tan(0.5 * m.angle[std::size_t(h)]) + std::tan(0.5 * m.angle[std::size_t(m.next[std::size_t(h ^ 1)])]);
+      const double at_q = std::tan(0.5 * m.angle[std::size_t(h ^ 1)]) + std::tan(0.5 * m.angle[std::size_t(m.next[std::size_t(h)])]);
+      neighbour.push_back(q);
+      base.push_back(0.5 * (at_v + at_q) / (std::max)(m.edge_length(h), 1e-300));
+      h = m.ccw_out(h);
+    } while(h != h0);
+    first[std::size_t(i) + 1] = int(neighbour.size());
+  }
+  // Weight w_vq / (d_v d_q) with w symmetric is row v of Yoshizawa's w_vq / d_q scaled by 1 / d_v:
+  // the same embedding from a symmetric positive definite system, so CHOLMOD instead of sparse LU.
+  Cholmod_cholesky solver;
+  for(int round = 0; round < rounds && n > 0; ++round) {
     std::vector<Eigen::Triplet<double>> t;
-    Eigen::MatrixXd b = Eigen::MatrixXd::Zero(n, 2);
+    t.reserve(neighbour.size() / 2 + std::size_t(n));
+    Eigen::VectorXd bx = Eigen::VectorXd::Zero(n), by = Eigen::VectorXd::Zero(n);
     for(int i = 0; i < n; ++i) {
       const int v = unknowns[std::size_t(i)];
       double sum = 0;
-      const int h0 = m.vertex_out[std::size_t(v)];
-      int h = h0;
-      do {   // mean value weight of edge (v, q): (tan(a/2) + tan(b/2)) / |vq|, a and b the metric's angles at v beside it
-        const int q = m.target[std::size_t(h)];
-        const double wgt = (std::tan(0.5 * m.angle[std::size_t(h)]) + std::tan(0.5 * m.angle[std::size_t(m.next[std::size_t(h ^ 1)])])) /
-                           ((std::max)(m.edge_length(h), 1e-300) * divisor[std::size_t(q)]);
+      for(int k = first[std::size_t(i)]; k < first[std::size_t(i) + 1]; ++k) {
+        const int q = neighbour[std::size_t(k)];
+        const double wgt = base[std::size_t(k)] / (divisor[std::size_t(v)] * divisor[std::size_t(q)]);
         sum += wgt;
-        if(column[std::size_t(q)] >= 0) t.emplace_back(i, column[std::size_t(q)], -wgt);
+        const int c = column[std::size_t(q)];
+        if(c >= 0) { if(c < i) t.emplace_back(i, c, -wgt); }
         else {
-          const auto it = fixed.find(q);
-          if(it == fixed.end()) { message = "a piece of the cut is not a disk bounded by its paths"; return false; }
-          b(i, 0) += wgt * it->second.x();
-          b(i, 1) += wgt * it->second.y();
+          const Point_2& p = fixed.at(q);
+          bx(i) += wgt * p.x();
+          by(i) += wgt * p.y();
         }
-        h = m.ccw_out(h);
-      } while(h != h0);
+      }
       t.emplace_back(i, i, sum);
     }
-    Eigen::SparseMatrix<double> A(n, n);
+    Cholmod_cholesky::Matrix A(n, n);   // lower triangle
     A.setFromTriplets(t.begin(), t.end());
-    if(round == 0) lu.analyzePattern(A);   // the pattern stays: one ordering for all rounds
-    lu.factorize(A);
-    if(lu.info() != Eigen::Success) { message = "the Tutte embedding of a face could not be factored"; return false; }
-    const Eigen::MatrixXd x = lu.solve(b);
-    for(int i = 0; i < n; ++i) solved[std::size_t(i)] = Point_2(x(i, 0), x(i, 1));
+    std::string why;
+    if(!(round == 0 ? solver.factor(A, why) : solver.refactor(A, why))) {   // the pattern stays: one analysis for all rounds
+      message = "the Tutte embedding of a face could not be factored: " + why;
+      return false;
+    }
+    const Eigen::VectorXd x = solver.solve(bx), y = solver.solve(by);
+    for(int i = 0; i < n; ++i) solved[std::size_t(i)] = Point_2(x(i), y(i));
     if(rounds == 1) break;
     // the L2 stretch of the map from the chart to the reference triangles, per face and per vertex
     std::fill(sigma.begin(), sigma.end(), 0.);   // sums of area times squared stretch
@@ -315,7 +334,9 @@ int relax_polyhedron_charts(const Mesh_arrays<TM>& m, const Polyhedron_cut_view&
         const double ep[2] = {ref[f][std::size_t(k)].x() - ref[f][std::size_t(k1)].x(), ref[f][std::size_t(k)].y() - ref[f][std::size_t(k1)].y()};
         for(int r = 0; r < 2; ++r) for(int q = 0; q < 2; ++q) A[r][q] += weight[f][std::size_t(k)] * ex[r] * ep[q];
       }
-      const double theta = std::atan2(A[1][0] - A[0][1], A[0][0] + A[1][1]), c = std::cos(theta), s = std::sin(theta);
+      // the rotation's angle is arg(A00 + A11 + i (A10 - A01)): normalised, without trigonometry
+      const double ra = A[0][0] + A[1][1], rb = A[1][0] - A[0][1], rn = std::sqrt(ra * ra + rb * rb);
+      const double c = rn > 0 ? ra / rn : 1., s = rn > 0 ? rb / rn : 0.;
       // global step's right-hand side: w J^T (R (p_a - p_b) - (base_a - base_b))
       for(int k = 0; k < 3; ++k) {
         const int k1 = (k + 1) % 3;
