@@ -12,6 +12,7 @@
 #include <CGAL/Surface_mesh_direction_fields/errors.h>
 #include <CGAL/Surface_mesh_direction_fields/flat_development.h>
 #include <CGAL/Surface_mesh_direction_fields/holonomy_group.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/two_threads.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -395,47 +396,65 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
   };
   std::unordered_set<Face_key, Face_key_hash> face_set;   // hashed: every face is met from each of its corners
   face_set.reserve(points.size() * (square ? 1 : 2));
-  std::vector<std::vector<std::size_t>> out_faces;
-  for(std::size_t i = 0; i < points.size(); ++i) {
-    if(points[i].kind == 2 && dev.cone_index_[std::size_t(points[i].id)] >= 0) continue;
-    for(int dir = 0; dir < (square ? 4 : 6); ++dir) {
-      internal::Lattice_motion r;
-      for(int k = 0; k < dir; ++k) r = step_rotation * r;
-      std::vector<std::size_t> corners(1, i);
-      int f = seat[i].first;
-      Point_2 at = seat[i].second;
-      internal::Lattice_motion carried;   // from the start frame to the current one
-      bool ok = true;
-      for(int k = 1; k < sides && ok; ++k) {   // along d, then d rotated by the grid's angle at each corner
-        // square: d, then +rot90(d), then -d; triangle: d, then rot120(d)
-        std::array<double, 2> d = r.rotate(1, 0);
-        if(square) { for(int j = 1; j < k; ++j) d = step_rotation.rotate(d[0], d[1]); }
-        else if(k == 2) { d = step_rotation.rotate(d[0], d[1]); d = step_rotation.rotate(d[0], d[1]); }
-        const std::array<double, 2> dc = carried.rotate(d[0], d[1]);
-        const Point_2 to(at.x() + dc[0], at.y() + dc[1]);
-        int where = -1;
-        internal::Lattice_motion c = carried;
-        if(!walk(f, at, to, c, where)) { ok = false; break; }
-        const Point_2 target = (c * carried.inverse())(to);
-        carried = c;
-        const Where w = classify(where, target);
-        const auto it = id_of.find(key_of(w));
-        if(w.kind < 0 || it == id_of.end()) {
-          st.message = "a grid edge ends off the grid points (inconsistent development)";
-          return st;
+  // The walks from each grid point read shared data only: the points are split in two halves
+  // walked on two threads (each face met from each of its corners), then merged in point order.
+  typedef std::array<std::size_t, 5> Found;   // the corners (unused ones -1), then their count
+  std::vector<Found> found[2];
+  bool off_grid[2] = {false, false};
+  auto walk_faces = [&](std::size_t begin, std::size_t end, int part) {
+    for(std::size_t i = begin; i < end && !off_grid[part]; ++i) {
+      if(points[i].kind == 2 && dev.cone_index_[std::size_t(points[i].id)] >= 0) continue;
+      for(int dir = 0; dir < (square ? 4 : 6); ++dir) {
+        internal::Lattice_motion r;
+        for(int k = 0; k < dir; ++k) r = step_rotation * r;
+        Found corners;
+        corners.fill(std::size_t(-1));
+        corners[0] = i;
+        corners[4] = 1;
+        int f = seat[i].first;
+        Point_2 at = seat[i].second;
+        internal::Lattice_motion carried;   // from the start frame to the current one
+        bool ok = true;
+        for(int k = 1; k < sides && ok; ++k) {   // along d, then d rotated by the grid's angle at each corner
+          // square: d, then +rot90(d), then -d; triangle: d, then rot120(d)
+          std::array<double, 2> d = r.rotate(1, 0);
+          if(square) { for(int j = 1; j < k; ++j) d = step_rotation.rotate(d[0], d[1]); }
+          else if(k == 2) { d = step_rotation.rotate(d[0], d[1]); d = step_rotation.rotate(d[0], d[1]); }
+          const std::array<double, 2> dc = carried.rotate(d[0], d[1]);
+          const Point_2 to(at.x() + dc[0], at.y() + dc[1]);
+          int where = -1;
+          internal::Lattice_motion c = carried;
+          if(!walk(f, at, to, c, where)) { ok = false; break; }
+          const Point_2 target = (c * carried.inverse())(to);
+          carried = c;
+          const Where w = classify(where, target);
+          const auto it = id_of.find(key_of(w));
+          if(w.kind < 0 || it == id_of.end()) { off_grid[part] = true; break; }
+          corners[std::size_t(corners[4]++)] = it->second;
+          f = where;
+          at = target;
         }
-        corners.push_back(it->second);
-        f = where;
-        at = target;
+        if(ok && !off_grid[part]) found[part].push_back(corners);   // (a walk across the boundary: no face there)
       }
-      if(!ok) continue;   // crosses the boundary: no face there
+    }
+  };
+  const std::size_t half = points.size() / 2;
+  internal::run_on_two_threads([&](int part) { walk_faces(part == 0 ? 0 : half, part == 0 ? half : points.size(), part); },
+                               points.size() >= 20000);
+  if(off_grid[0] || off_grid[1]) {
+    st.message = "a grid edge ends off the grid points (inconsistent development)";
+    return st;
+  }
+  std::vector<std::vector<std::size_t>> out_faces;
+  for(const std::vector<Found>& part : found)
+    for(const Found& corners : part) {
+      const std::size_t count = corners[4];
       Face_key key;   // one face, whichever corner it was found from
       key.fill(std::size_t(-1));
-      const std::size_t first = std::size_t(std::min_element(corners.begin(), corners.end()) - corners.begin());
-      for(std::size_t k = 0; k < corners.size(); ++k) key[k] = corners[(first + k) % corners.size()];
-      if(face_set.insert(key).second) out_faces.push_back(corners);
+      const std::size_t first = std::size_t(std::min_element(corners.begin(), corners.begin() + count) - corners.begin());
+      for(std::size_t k = 0; k < count; ++k) key[k] = corners[(first + k) % count];
+      if(face_set.insert(key).second) out_faces.emplace_back(corners.begin(), corners.begin() + count);
     }
-  }
 
   // 5. the output mesh
   typedef typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;

@@ -12,6 +12,7 @@
 #include <CGAL/Surface_mesh_direction_fields/Intrinsic_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/errors.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/chart_relaxation.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/two_threads.h>
 
 #include <CGAL/boost/graph/helpers.h>
 
@@ -177,11 +178,11 @@ Polycube_metric_status polyhedron_metric_core(const Mesh_arrays<TM>& m, const st
   };
   // the distance between the two corners of every edge of P, without obstacles: the orders
   std::vector<double> reach(np, 0.);
-  {
+  run_on_two_threads([&](int t) {   // (without obstacles the searches only read shared data)
     std::vector<int> from;
-    for(std::size_t k = 0; k < np; ++k)
+    for(std::size_t k = std::size_t(t); k < np; k += 2)
       reach[k] = shortest(corner_vertex[std::size_t(pedges[k][0])], corner_vertex[std::size_t(pedges[k][1])], false, from);
-  }
+  }, nv >= 10000);
   std::vector<std::size_t> order(np);
   for(int attempt = 0; attempt < 3; ++attempt) {   // shortest first, longest first, P's order
     for(std::size_t k = 0; k < np; ++k) order[k] = k;
@@ -301,7 +302,10 @@ Polycube_metric_status polyhedron_metric_core(const Mesh_arrays<TM>& m, const st
   std::vector<std::array<Point_2, 3>> chart(nf);
   std::vector<char> on_path(nv, 0);
   for(const auto& p : paths) for(int v : p) on_path[std::size_t(v)] = 1;
-  for(std::size_t j = 0; j < pfaces.size(); ++j) {
+  // The pieces are independent: embedded on two threads, the larger ones first, each to the
+  // thread with less work so far (a piece writes only its own faces' charts).
+  std::vector<std::string> failure(pfaces.size());
+  auto embed = [&](std::size_t j) {
     const int r = region_of_face[j];
     std::map<int, Point_2> fixed;
     const std::vector<int>& fc = pfaces[j];
@@ -319,25 +323,33 @@ Polycube_metric_status polyhedron_metric_core(const Mesh_arrays<TM>& m, const st
       }
     }
     std::vector<int> column(nv, -1), unknowns;
+    std::vector<int> piece;   // the mesh faces of this piece
     for(std::size_t f = 0; f < nf; ++f) {
       if(region[f] != r) continue;
+      piece.push_back(int(f));
       int h = m.face_halfedge[f];
       for(int i = 0; i < 3; ++i, h = m.next[std::size_t(h)]) {
         const int v = m.source(h);
         if(!on_path[std::size_t(v)] && column[std::size_t(v)] < 0) { column[std::size_t(v)] = int(unknowns.size()); unknowns.push_back(v); }
       }
     }
-    std::vector<int> piece;   // the mesh faces of this piece
-    for(std::size_t f = 0; f < nf; ++f) if(region[f] == r) piece.push_back(int(f));
     std::vector<Point_2> solved;
-    if(!stretch_minimizing_tutte(m, piece, column, unknowns, fixed, reference, iterations, solved, st.message))
-      return st;
+    if(!stretch_minimizing_tutte(m, piece, column, unknowns, fixed, reference, iterations, solved, failure[j])) return;
     auto place = [&](int v) { return column[std::size_t(v)] >= 0 ? solved[std::size_t(column[std::size_t(v)])] : fixed.at(v); };
     for(int f : piece) {
       int h = m.face_halfedge[std::size_t(f)];
       for(int i = 0; i < 3; ++i, h = m.next[std::size_t(h)]) chart[std::size_t(f)][std::size_t(i)] = place(m.source(h));
     }
-  }
+  };
+  std::vector<std::size_t> piece_faces(pfaces.size(), 0), by_size(pfaces.size());
+  for(std::size_t f = 0; f < nf; ++f) ++piece_faces[std::size_t(face_of_region[std::size_t(region[f])])];
+  for(std::size_t j = 0; j < by_size.size(); ++j) by_size[j] = j;
+  std::stable_sort(by_size.begin(), by_size.end(), [&](std::size_t x, std::size_t y) { return piece_faces[x] > piece_faces[y]; });
+  std::vector<std::size_t> share[2];
+  std::size_t load[2] = {0, 0};
+  for(std::size_t j : by_size) { const int t = load[1] < load[0] ? 1 : 0; share[t].push_back(j); load[t] += piece_faces[j]; }
+  run_on_two_threads([&](int t) { for(std::size_t j : share[t]) embed(j); }, nf >= 20000);
+  for(const std::string& why : failure) if(!why.empty()) { st.message = why; return st; }
   // 4. validity: every triangle non-degenerate, all on the same side (mirrored corners are fine:
   // the lengths do not see orientation); then the lengths, each edge from one of its faces
   double scale = 0;

@@ -248,36 +248,75 @@ int relax_polyhedron_charts(const Mesh_arrays<TM>& m, const Polyhedron_cut_view&
       weight[f][std::size_t(k)] = 0.5 * (std::min)(1e2, (std::max)(1e-2, cot));   // needles: bounded weights
     }
   }
-  // the global step's matrix: sum over the edges of every triangle of w |x_a - x_b - R (p_a - p_b)|^2
-  std::vector<Eigen::Triplet<double, int>> triplets;
-  triplets.reserve(nf * 21);
-  for(std::size_t f = 0; f < nf; ++f) {
-    int cols[6], count = 0;
-    for(int k = 0; k < 3; ++k)
-      for(int i = 0; i < slot[f][std::size_t(k)].count; ++i) cols[count++] = slot[f][std::size_t(k)].col[i];
-    double local[6][6] = {};
-    for(int k = 0; k < 3; ++k) {
-      const Slot &sa = slot[f][std::size_t(k)], &sb = slot[f][std::size_t((k + 1) % 3)];
-      for(int d = 0; d < 2; ++d) {   // row d of the residual: coefficients over the face's columns
-        double row[6] = {};
-        int at = 0;
-        for(int kk = 0; kk < 3; ++kk) {
-          const Slot& s = slot[f][std::size_t(kk)];
-          for(int i = 0; i < s.count; ++i, ++at) row[at] = (&s == &sa ? s.dir[i][d] : &s == &sb ? -s.dir[i][d] : 0.);
-        }
-        for(int r = 0; r < count; ++r)
-          for(int q = 0; q < count; ++q) local[r][q] += weight[f][std::size_t(k)] * row[r] * row[q];
-      }
-    }
-    for(int r = 0; r < count; ++r)
-      for(int q = 0; q < count; ++q)
-        if(cols[r] >= cols[q] && local[r][q] != 0) triplets.emplace_back(cols[r], cols[q], local[r][q]);
+  // The global step's energy: sum over the edges of every triangle of w |x_a - x_b - R (p_a - p_b)|^2.
+  // Its Hessian has three blocks: inner vertices (x and y decoupled: the same matrix L for both),
+  // path parameters (B), and the coupling C between them. Each global step is one block
+  // Gauss-Seidel sweep (inner vertices with the paths fixed, then the paths): L is a scalar
+  // Laplacian, a quarter of the coupled system's factorisation (433k faces: 0.5 s instead of 2.5 s).
+  std::vector<int> block_index(std::size_t(n), -1);   // per column: its row in L (x and y columns) or in B
+  std::vector<char> in_path(std::size_t(n), 0), axis(std::size_t(n), 0);   // axis: 1 for an inner vertex's y
+  int n_inner = 0, n_path = 0;
+  for(std::size_t v = 0; v < nv; ++v) {
+    if(column[v] < 0) continue;
+    if(path_of[v] >= 0) { in_path[std::size_t(column[v])] = 1; block_index[std::size_t(column[v])] = n_path++; }
+    else { block_index[std::size_t(column[v])] = n_inner; block_index[std::size_t(column[v] + 1)] = n_inner++; axis[std::size_t(column[v] + 1)] = 1; }
   }
-  Cholmod_cholesky::Matrix M(n, n);
-  M.setFromTriplets(triplets.begin(), triplets.end());
-  std::vector<Eigen::Triplet<double, int>>().swap(triplets);
-  Cholmod_cholesky solver;
-  if(!solver.factor(M, message)) { message = "the relaxation's system could not be factored: " + message; return 0; }
+  std::vector<Eigen::Triplet<double, int>> tl, tb, tc;   // L and B (lower triangles), C (inner columns x path parameters)
+  tl.reserve(nf * 6);
+  for(std::size_t f = 0; f < nf; ++f)
+    for(int k = 0; k < 3; ++k) {
+      const Slot* s[2] = {&slot[f][std::size_t(k)], &slot[f][std::size_t((k + 1) % 3)]};
+      const double w = weight[f][std::size_t(k)];
+      for(int x = 0; x < 2; ++x)
+        for(int i = 0; i < s[x]->count; ++i)
+          for(int y = 0; y < 2; ++y)
+            for(int j = 0; j < s[y]->count; ++j) {
+              const double coef = (x == y ? w : -w) * (s[x]->dir[i][0] * s[y]->dir[j][0] + s[x]->dir[i][1] * s[y]->dir[j][1]);
+              const int r = s[x]->col[i], c = s[y]->col[j];
+              if(coef == 0) continue;
+              const bool pr = in_path[std::size_t(r)], pc = in_path[std::size_t(c)];
+              const int br = block_index[std::size_t(r)], bc = block_index[std::size_t(c)];
+              if(!pr && !pc) { if(i == 0 && j == 0 && br >= bc) tl.emplace_back(br, bc, coef); }   // x with x (y with y: the same)
+              else if(pr && pc) { if(br >= bc) tb.emplace_back(br, bc, coef); }
+              else if(!pr) tc.emplace_back(r, bc, coef);
+            }
+    }
+  Cholmod_cholesky::Matrix L(n_inner, n_inner), B(n_path, n_path);
+  L.setFromTriplets(tl.begin(), tl.end());
+  B.setFromTriplets(tb.begin(), tb.end());
+  Eigen::SparseMatrix<double> C(n, n_path);   // rows: all columns (path rows stay empty)
+  C.setFromTriplets(tc.begin(), tc.end());
+  std::vector<Eigen::Triplet<double, int>>().swap(tl);
+  std::vector<Eigen::Triplet<double, int>>().swap(tb);
+  std::vector<Eigen::Triplet<double, int>>().swap(tc);
+  Cholmod_cholesky inner_solver, path_solver;
+  if((n_inner > 0 && !inner_solver.factor(L, message)) || (n_path > 0 && !path_solver.factor(B, message))) {
+    message = "the relaxation's system could not be factored: " + message;
+    return 0;
+  }
+  // the minimiser for fixed rotations (right-hand side `rhs`), one sweep from z
+  auto global_step = [&](const Eigen::VectorXd& rhs) {
+    Eigen::VectorXd zb(n_path);
+    for(int c = 0; c < n; ++c) if(in_path[std::size_t(c)]) zb[block_index[std::size_t(c)]] = z[c];
+    Eigen::VectorXd ra = rhs - C * zb;
+    Eigen::VectorXd bx(n_inner), by(n_inner);
+    for(int c = 0; c < n; ++c)
+      if(!in_path[std::size_t(c)]) (axis[std::size_t(c)] == 0 ? bx : by)[block_index[std::size_t(c)]] = ra[c];
+    const Eigen::VectorXd x = n_inner > 0 ? inner_solver.solve(bx) : bx, y = n_inner > 0 ? inner_solver.solve(by) : by;
+    Eigen::VectorXd out(n);
+    for(int c = 0; c < n; ++c)
+      if(!in_path[std::size_t(c)]) out[c] = (axis[std::size_t(c)] == 0 ? x : y)[block_index[std::size_t(c)]];
+    if(n_path > 0) {
+      Eigen::VectorXd za = out;
+      for(int c = 0; c < n; ++c) if(in_path[std::size_t(c)]) za[c] = 0;
+      Eigen::VectorXd rb(n_path);
+      for(int c = 0; c < n; ++c) if(in_path[std::size_t(c)]) rb[block_index[std::size_t(c)]] = rhs[c];
+      rb -= C.transpose() * za;
+      const Eigen::VectorXd t = path_solver.solve(rb);
+      for(int c = 0; c < n; ++c) if(in_path[std::size_t(c)]) out[c] = t[block_index[std::size_t(c)]];
+    }
+    return out;
+  };
   double scale = 0;
   for(const auto& sh : *cut.shape) for(const Point_2& p : sh) scale = (std::max)(scale, std::abs(p.x()) + std::abs(p.y()));
   // the largest fraction of the step from x by d that keeps at least half of every triangle's
@@ -348,7 +387,7 @@ int relax_polyhedron_charts(const Mesh_arrays<TM>& m, const Polyhedron_cut_view&
         for(int i = 0; i < sb.count; ++i) rhs[sb.col[i]] -= w * (sb.dir[i][0] * goal[0] + sb.dir[i][1] * goal[1]);
       }
     }
-    const Eigen::VectorXd d = solver.solve(rhs) - z;
+    const Eigen::VectorXd d = global_step(rhs) - z;
     const double alpha = (std::min)(1., largest_step(z, d));
     if(!(alpha > 1e-6)) break;   // blocked by a triangle about to fold: stay where the charts are bijective
     z += alpha * d;

@@ -24,6 +24,7 @@
 // too small for threaded BLAS to help), and the machines this package targets have 2 cores.
 
 #include <CGAL/Surface_mesh_direction_fields/internal/cholmod_errors.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/two_threads.h>
 
 #include <cholmod.h>
 
@@ -242,21 +243,6 @@ inline void triangular(int n, const double* L, double* x, bool transpose, bool i
 }
 
 } // namespace dense
-
-// Runs f(0) on the calling thread and f(1) on another one (on the calling thread too if no
-// thread can be started, or if concurrent is false), and returns when both are done.
-template <typename F>
-void run_on_two_threads(const F& f, bool concurrent = true)
-{
-  std::future<void> other;
-  if(concurrent) try {
-    other = std::async(std::launch::async, [&f] { f(1); });
-  } catch(const std::system_error&) {
-  }
-  f(0);
-  if(other.valid()) other.get();
-  else f(1);
-}
 
 // The split: order[k] is the unknown eliminated k-th, the n1 unknowns of D1 first, then the n2
 // of D2, then the separator. n1 = n2 = 0 when no useful split was found (order is then a plain
