@@ -14,7 +14,8 @@
 //     library) and sum x_e^2, each as the geometric mean of its ratio to the cotan rule's.
 // Every solve must succeed and its read-back with its own matching must equal the prescription.
 // Prints Markdown tables (the manual's "Choice of weights" section). Usage:
-//   study_connection_weights [--sets n] [--max-faces n] MESH...
+//   study_connection_weights [--sets n] [--max-faces n] [--default-only] MESH...
+// (--default-only: only the default rule, whose column is the last; the energy ratios then read 0)
 // The CTest smoke run uses one small mesh and one set.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -57,6 +58,7 @@ const Rule rules[] = {{"cotan", SMDF::COTAN_WEIGHTS, 10, 0},
                       {"cotan, limit 0.8 pi", SMDF::COTAN_WEIGHTS, 10, 0.8 * M_PI},
                       {"unit, limit 0.8 pi (default)", SMDF::UNIT_WEIGHTS, 10, 0.8 * M_PI}};
 constexpr int rule_count = int(sizeof(rules) / sizeof(rules[0]));
+int first_rule = 0;   // --default-only: rule_count - 1
 const int orders[] = {1, 2, 4, 6};
 
 // Totals of one rule over solves.
@@ -214,7 +216,7 @@ void study_mesh(const Mesh& mesh, const std::string& name, long chi, int sets, c
     std::vector<std::vector<std::pair<Vertex, double>>> all_sets;
     for(int s = 0; s < sets; ++s) all_sets.push_back(random_singularities(mesh, chi, N, rng));
     std::vector<double> cotan_energy[2], cotan_unit_energy[2];
-    for(int r = 0; r < rule_count; ++r) {
+    for(int r = first_rule; r < rule_count; ++r) {
       SMDF::Trivial_connection<Mesh> tc(mesh, SMDF::parameters::symmetry_order(N)
                                                   .connection_weights(rules[r].weights)
                                                   .cotangent_cap(rules[r].cap)
@@ -256,10 +258,11 @@ int main(int argc, char** argv)
     const std::string a = argv[i];
     if(a == "--sets" && i + 1 < argc) sets = std::atoi(argv[++i]);
     else if(a == "--max-faces" && i + 1 < argc) max_faces = std::size_t(std::atol(argv[++i]));
+    else if(a == "--default-only") first_rule = rule_count - 1;
     else files.push_back(a);
   }
   if(files.empty() || sets < 1) {
-    std::cerr << "usage: study_connection_weights [--sets n] [--max-faces n] MESH...\n";
+    std::cerr << "usage: study_connection_weights [--sets n] [--max-faces n] [--default-only] MESH...\n";
     return 2;
   }
   bool failed = false;
@@ -289,7 +292,7 @@ int main(int argc, char** argv)
       continue;
     }
     for(int mode = 0; mode < 2; ++mode) {
-      if(per_mesh[mode][0].solves == 0) continue;
+      if(per_mesh[mode][rule_count - 1].solves == 0) continue;
       std::string row = "| `" + name + "` | " + std::to_string(num_faces(mesh)) + " | " + std::to_string(topo.components[0].genus) +
                         (topo.boundary_loops.empty() ? "" : " (" + std::to_string(topo.boundary_loops.size()) + " b.)") + " |";
       for(int r = 0; r < rule_count; ++r) {
