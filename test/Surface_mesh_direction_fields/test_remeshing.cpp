@@ -505,13 +505,67 @@ void obelisk(const std::string& dir)
 
 } // namespace
 
+// The paths under a flat cone metric that lives on an intrinsic triangulation (the flow flipped
+// edges): only its conformal factors reach box_polycube_metric(). Cheburashka's ears make the
+// flow leave the input triangulation. The box metric must exist and develop with its eight
+// cones, and the remesh's irregular vertices must be those cones, of valence 3. Also
+// shortcut_chords(): a path that walks around a triangle (possible under scaled lengths that
+// break the triangle inequality) is shortened to the triangle's third edge.
+void flipped_flat_metric(const std::string& dir)
+{
+  Surface_mesh mesh;
+  SMDF::read_triangle_mesh(dir + "/meshes/cheburashka_igltut.off", mesh);
+  std::array<Surface_mesh::Vertex_index, 8> corners;
+  for(int i = 0; i < 8; ++i) {
+    const K::Vector_3 d((i & 1) ? 1 : -1, (i & 2) ? 1 : -1, (i & 4) ? 1 : -1);
+    double best = -1e300;
+    for(auto v : vertices(mesh)) {
+      const double x = (mesh.point(v) - CGAL::ORIGIN) * d;
+      if(x > best) { best = x; corners[std::size_t(i)] = v; }
+    }
+  }
+  auto targets = mesh.add_property_map<Surface_mesh::Vertex_index, double>("v:target", 0.).first;
+  for(auto v : corners) targets[v] = M_PI / 2;
+  auto flat = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:flat", 0).first;
+  auto u = mesh.add_property_map<Surface_mesh::Vertex_index, double>("v:u", 0.).first;
+  const auto cm = SMDF::compute_cone_metric(mesh, targets, flat, SMDF::parameters::conformal_factor_map(u));
+  SMDF_CHECK_MSG(cm.converged && cm.triangulation_changed, "cheburashka, 8 cones: the flow converges after " << cm.edge_flips << " flips");
+  double extent = 0;
+  for(auto v : vertices(mesh)) extent = std::max(extent, std::sqrt((mesh.point(v) - CGAL::ORIGIN).squared_length()));
+  const double h = extent / 32;
+  auto lengths = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:box", 0).first;
+  const auto ps = SMDF::box_polycube_metric(mesh, corners, h, lengths, SMDF::parameters::conformal_factor_map(u));
+  SMDF_CHECK_MSG(ps.success, "cheburashka: box metric on the flipped metric's paths: " << ps.message);
+  if(ps.success) {
+    const auto dev = SMDF::develop_flat_metric(mesh, SMDF::parameters::edge_length_map(lengths));
+    SMDF_CHECK_MSG(dev.cones().size() == 8 && dev.max_flatness_error() < 1e-9, "cheburashka: the box metric has eight cones, flat elsewhere");
+    Surface_mesh out;
+    const auto st = SMDF::tessellate_flat_metric(mesh, dev, SMDF::SQUARE_GRID, h, out);
+    std::size_t at_cones = 0, other = 0;
+    for(const auto& iv : st.irregular_vertices) (iv.second >= 0 && degree(Surface_mesh::Vertex_index(Surface_mesh::size_type(iv.first)), out) == 3 ? at_cones : other) += 1;
+    SMDF_CHECK_MSG(num_faces(out) > 0 && at_cones == 8 && other == 0,
+                   "cheburashka: the remesh's irregular vertices are the eight cones, of valence 3 (" << at_cones << ", " << other << " others)");
+    std::cout << "cheburashka, box on the flipped flat metric (" << cm.edge_flips << " flips): " << st.faces << " quads, "
+              << st.inverted_faces << " inverted" << std::endl;
+  }
+  // a path around a triangle (a, v, b) becomes (a, b)
+  const SMDF::internal::Mesh_arrays<Surface_mesh> m(mesh, SMDF::parameters::default_values());
+  const int v = 0, out0 = m.vertex_out[0], a = m.target[std::size_t(out0)], next_out = m.ccw_out(out0), b = m.target[std::size_t(next_out)];
+  int ha = -1;   // the halfedge a -> v
+  for(int g = m.vertex_out[std::size_t(a)], g0 = g;;) { if(m.target[std::size_t(g)] == v) { ha = g; break; } g = m.ccw_out(g); if(g == g0) break; }
+  std::vector<int> path{a, v, b}, hs{ha, next_out};
+  SMDF::internal::shortcut_chords(m, path, hs);
+  SMDF_CHECK_MSG(path.size() == 2 && path[0] == a && path[1] == b && hs.size() == 1 && m.source(hs[0]) == a && m.target[std::size_t(hs[0])] == b,
+                 "a path around a triangle is shortcut to its third edge");
+}
+
 int main()
 {
   cube();
   octahedron();
   flat_torus();
   const std::string dir = smdf_test::shared_data_dir();
-  if(!dir.empty()) { box_polycube(dir); octahedron_polyhedron(dir); obelisk(dir); }
+  if(!dir.empty()) { box_polycube(dir); flipped_flat_metric(dir); octahedron_polyhedron(dir); obelisk(dir); }
   else std::cout << "../shared/data not found: box polycube on shared meshes skipped" << std::endl;
   return smdf_test::finish();
 }
