@@ -12,6 +12,7 @@
 #include <CGAL/Surface_mesh_direction_fields/Intrinsic_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/errors.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/chart_relaxation.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/polyhedron_paths.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/two_threads.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -24,7 +25,6 @@
 #include <functional>
 #include <map>
 #include <limits>
-#include <queue>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -48,34 +48,6 @@ struct Polycube_metric_status
 };
 
 namespace internal {
-
-// Shortens an edge path (vertices `p`, halfedges `hs` from p[i] to p[i + 1]) wherever an edge
-// joins two of its vertices that are not consecutive. Under lengths that break the triangle
-// inequality (conformal scalings of the input's edges after intrinsic flips) a shortest path may
-// walk around a triangle; all three corners would then lie on one straight side of the chart.
-template <typename TM>
-void shortcut_chords(const Mesh_arrays<TM>& m, std::vector<int>& p, std::vector<int>& hs)
-{
-  std::map<int, std::size_t> position;
-  for(std::size_t i = 0; i < p.size(); ++i) position[p[i]] = i;
-  std::vector<int> q(1, p[0]), qh;
-  for(std::size_t i = 0; i + 1 < p.size();) {
-    std::size_t j = i + 1;
-    int via = hs[i];
-    const int h0 = m.vertex_out[std::size_t(p[i])];
-    int h = h0;
-    do {
-      const auto it = position.find(m.target[std::size_t(h)]);
-      if(it != position.end() && it->second > j) { j = it->second; via = h; }
-      h = m.ccw_out(h);
-    } while(h != h0);
-    q.push_back(p[j]);
-    qh.push_back(via);
-    i = j;
-  }
-  p.swap(q);
-  hs.swap(qh);
-}
 
 // What polyhedron_metric_core() knows at the end, for polyhedron_remesh(): every mesh face in the
 // chart of its polyhedron face, and the paths of P's edges.
@@ -143,86 +115,11 @@ Polycube_metric_status polyhedron_metric_core(const Mesh_arrays<TM>& m, const st
   if(long(nc) - long(pedges.size()) + long(pfaces.size()) != 2)
     throw Input_error(Input_error::INVALID_ARGUMENT, "the polyhedron is not a sphere (Euler characteristic " +
                                                          std::to_string(long(nc) - long(pedges.size()) + long(pfaces.size())) + ")");
-  // 1. the paths, in three orders until every one avoids the earlier ones
+  // 1. the paths
   const std::size_t np = pedges.size();
-  std::vector<char> used;
   std::vector<int> path_of_edge;
-  std::vector<std::vector<int>> paths(np);
-  std::vector<std::vector<int>> path_halfedges(np);   // per path: its halfedges, from its first corner
-  // Dijkstra from vertex s to t on the metric's lengths, returning the distance; `from[v]` is
-  // the halfedge into v. With `avoid`, not through earlier paths (their inner vertices and
-  // edges) nor through other corners.
-  auto shortest = [&](int s, int t, bool avoid, std::vector<int>& from) {
-    std::vector<double> d(nv, std::numeric_limits<double>::infinity());
-    from.assign(nv, -1);
-    typedef std::pair<double, int> Item;
-    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
-    d[std::size_t(s)] = 0;
-    queue.push({0., s});
-    while(!queue.empty()) {
-      const Item it = queue.top();
-      queue.pop();
-      if(it.first > d[std::size_t(it.second)]) continue;
-      if(it.second == t) break;
-      const int h0 = m.vertex_out[std::size_t(it.second)];
-      int h = h0;
-      do {
-        const int u = m.target[std::size_t(h)];
-        const bool blocked = avoid && (used[std::size_t(u)] || (corner_of[std::size_t(u)] >= 0 && u != t) || path_of_edge[std::size_t(h >> 1)] >= 0);
-        const double du = it.first + path_edge_length(h);
-        if(!blocked && du < d[std::size_t(u)]) { d[std::size_t(u)] = du; from[std::size_t(u)] = h; queue.push({du, u}); }
-        h = m.ccw_out(h);
-      } while(h != h0);
-    }
-    return d[std::size_t(t)];
-  };
-  // the distance between the two corners of every edge of P, without obstacles: the orders
-  std::vector<double> reach(np, 0.);
-  run_on_two_threads([&](int t) {   // (without obstacles the searches only read shared data)
-    std::vector<int> from;
-    for(std::size_t k = std::size_t(t); k < np; k += 2)
-      reach[k] = shortest(corner_vertex[std::size_t(pedges[k][0])], corner_vertex[std::size_t(pedges[k][1])], false, from);
-  }, nv >= 10000);
-  std::vector<std::size_t> order(np);
-  for(int attempt = 0; attempt < 3; ++attempt) {   // shortest first, longest first, P's order
-    for(std::size_t k = 0; k < np; ++k) order[k] = k;
-    if(attempt < 2)
-      std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return attempt == 0 ? reach[x] < reach[y] : reach[x] > reach[y]; });
-    used.assign(nv, 0);
-    path_of_edge.assign(ne, -1);
-    st.path_edges = 0;
-    st.message.clear();
-    for(std::size_t kk = 0; kk < np && st.message.empty(); ++kk) {
-      const std::size_t k = order[kk];
-      const int s = corner_vertex[std::size_t(pedges[k][0])], t = corner_vertex[std::size_t(pedges[k][1])];
-      std::vector<int> from;
-      shortest(s, t, true, from);
-      if(from[std::size_t(t)] < 0) {
-        std::ostringstream os;
-        os << "no path from corner " << pedges[k][0] << " (vertex " << s << ") to corner " << pedges[k][1] << " (vertex " << t
-           << ") avoids the earlier paths (place the corners farther apart, or refine the mesh)";
-        st.message = os.str();
-        break;
-      }
-      std::vector<int> p(1, t);
-      std::vector<int> hs;
-      for(int v = t; v != s;) {
-        const int h = from[std::size_t(v)];
-        hs.push_back(h);
-        v = m.source(h);
-        p.push_back(v);
-      }
-      std::reverse(p.begin(), p.end());
-      std::reverse(hs.begin(), hs.end());
-      shortcut_chords(m, p, hs);
-      for(int h : hs) path_of_edge[std::size_t(h >> 1)] = int(k);
-      st.path_edges += hs.size();
-      for(std::size_t i = 1; i + 1 < p.size(); ++i) used[std::size_t(p[i])] = 1;
-      paths[k] = p;
-      path_halfedges[k] = hs;
-    }
-    if(st.message.empty()) break;
-  }
+  std::vector<std::vector<int>> paths, path_halfedges;   // per path: its vertices and halfedges, from its first corner
+  st.path_edges = polyhedron_edge_paths(m, corner_vertex, corner_of, pedges, path_edge_length, paths, path_halfedges, path_of_edge, st.message);
   if(!st.message.empty()) return st;
   // 2. the pieces: faces connected without crossing a path, matched to P's faces by their corners
   std::vector<int> region(nf, -1);
