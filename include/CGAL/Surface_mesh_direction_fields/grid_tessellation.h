@@ -20,6 +20,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <sstream>
 #include <string>
 #include <tuple>
@@ -29,6 +30,11 @@
 
 namespace CGAL {
 namespace Surface_mesh_direction_fields {
+
+namespace internal {
+// Combines a hash value into a seed (the golden-ratio mix of Boost's hash_combine).
+inline std::size_t hash_mix(std::size_t seed, std::size_t v) { return seed ^ (v + 0x9e3779b97f4a7c15ULL + (seed << 6) + (seed >> 2)); }
+} // namespace internal
 
 /// \ingroup PkgSurfaceMeshDirectionFieldsRemeshing
 /// Outcome of tessellate_flat_metric().
@@ -333,10 +339,9 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
   struct Key_hash {   // std::hash<double> maps 0.0 and -0.0 alike, as == does
     std::size_t operator()(const Key& k) const
     {
-      std::size_t x = std::hash<long long>()((static_cast<long long>(std::get<1>(k)) << 2) | std::get<0>(k));
-      x ^= std::hash<double>()(std::get<2>(k)) + 0x9e3779b97f4a7c15ULL + (x << 6) + (x >> 2);
-      x ^= std::hash<double>()(std::get<3>(k)) + 0x9e3779b97f4a7c15ULL + (x << 6) + (x >> 2);
-      return x;
+      // unsigned arithmetic: outside points (kind and id -1) are looked up too
+      std::size_t x = std::hash<std::size_t>()((std::size_t(std::uint32_t(std::get<1>(k))) << 2) ^ std::size_t(std::uint32_t(std::get<0>(k))));
+      return internal::hash_mix(internal::hash_mix(x, std::hash<double>()(std::get<2>(k))), std::hash<double>()(std::get<3>(k)));
     }
   };
   std::unordered_map<Key, std::size_t, Key_hash> id_of;   // hashed: one lookup per grid point and walk
@@ -390,7 +395,7 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
     std::size_t operator()(const Face_key& k) const
     {
       std::size_t x = 0;
-      for(std::size_t c : k) x ^= std::hash<std::size_t>()(c) + 0x9e3779b97f4a7c15ULL + (x << 6) + (x >> 2);
+      for(std::size_t c : k) x = internal::hash_mix(x, std::hash<std::size_t>()(c));
       return x;
     }
   };
