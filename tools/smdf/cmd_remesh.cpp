@@ -326,7 +326,8 @@ Json run_remesh(const Args& args)
   metric_s = clock.lap();
   // Lai et al.: P's edges become shortest paths under the flat cone metric with P's cones. Only
   // its conformal factors are needed, so the flow may flip edges (it converges on every mesh;
-  // on the input triangulation alone it stalls on many). False: Euclidean paths.
+  // on the input triangulation alone it stalls on many). If it does not converge, u = 0: the
+  // paths are Euclidean.
   auto u = mesh.add_property_map<vertex_descriptor, double>("v:smdf_remesh_u", 0.).first;
   auto flat_cone_factors = [&](Mesh::Property_map<vertex_descriptor, double> targets) {
     const Edge_length_property flat = mesh.add_property_map<edge_descriptor, double>("e:smdf_remesh_flat", 0.).first;
@@ -335,7 +336,7 @@ Json run_remesh(const Args& args)
     });
     metric["flat_cone_metric_converged"] = cm.converged;
     metric["flat_cone_metric_edge_flips"] = cm.edge_flips;
-    return cm.converged;
+    if(!cm.converged) for(vertex_descriptor v : vertices(mesh)) u[v] = 0;
   };
   double h = requested_h > 0 ? requested_h : std::sqrt(metric_area(mesh, lengths) / (double(requested_faces) * unit_area));
   if(args.has("polycube") && polycube != "box") {
@@ -404,13 +405,12 @@ Json run_remesh(const Args& args)
     std::vector<double> angle_sum(corners.size(), 0.);
     for(const auto& f : pfaces) for(int c : f) angle_sum[std::size_t(c)] += f.size() == 4 ? CGAL_PI / 2 : CGAL_PI / 3;
     for(std::size_t i = 0; i < corners.size(); ++i) targets[corners[i]] = 2 * CGAL_PI - angle_sum[i];
-    const bool flat_ok = flat_cone_factors(targets);
+    flat_cone_factors(targets);
     if(mixed) {   // each face of P its own grid (polyhedron_remesh), n grid edges per side
       const int n = int((std::max)(1., std::round(side / h)));
       Mesh remesh;
       const SMDF::Polyhedron_remesh_status rs = on_file(file, [&] {
-        return flat_ok ? SMDF::polyhedron_remesh(mesh, corners, pfaces, n, remesh, SMDF::parameters::conformal_factor_map(u).number_of_iterations(relax_steps))
-                       : SMDF::polyhedron_remesh(mesh, corners, pfaces, n, remesh, SMDF::parameters::number_of_iterations(relax_steps));
+        return SMDF::polyhedron_remesh(mesh, corners, pfaces, n, remesh, SMDF::parameters::conformal_factor_map(u).number_of_iterations(relax_steps));
       });
       Json c = Json::array();
       for(vertex_descriptor v : corners) c.push_back(index(v));
@@ -446,8 +446,7 @@ Json run_remesh(const Args& args)
       return out;
     }
     const SMDF::Polycube_metric_status ps = on_file(file, [&] {
-      return flat_ok ? SMDF::polyhedron_metric(mesh, corners, pfaces, side, lengths, SMDF::parameters::conformal_factor_map(u).number_of_iterations(relax_steps))
-                     : SMDF::polyhedron_metric(mesh, corners, pfaces, side, lengths, SMDF::parameters::number_of_iterations(relax_steps));
+      return SMDF::polyhedron_metric(mesh, corners, pfaces, side, lengths, SMDF::parameters::conformal_factor_map(u).number_of_iterations(relax_steps));
     });
     compensation_s = clock.lap();
     Json c = Json::array();
@@ -470,10 +469,9 @@ Json run_remesh(const Args& args)
     // Lai et al.: the paths under the flat cone metric with cones of pi/2 at the corners
     auto targets = mesh.add_property_map<vertex_descriptor, double>("v:smdf_remesh_target", 0.).first;
     for(vertex_descriptor v : corners) targets[v] = CGAL_PI / 2;
-    const bool flat_ok = flat_cone_factors(targets);
+    flat_cone_factors(targets);
     const SMDF::Polycube_metric_status ps = on_file(file, [&] {
-      return flat_ok ? SMDF::box_polycube_metric(mesh, corners, h, lengths, SMDF::parameters::conformal_factor_map(u).number_of_iterations(relax_steps))
-                     : SMDF::box_polycube_metric(mesh, corners, h, lengths, SMDF::parameters::number_of_iterations(relax_steps));   // Euclidean paths
+      return SMDF::box_polycube_metric(mesh, corners, h, lengths, SMDF::parameters::conformal_factor_map(u).number_of_iterations(relax_steps));
     });
     compensation_s = clock.lap();
     Json c = Json::array();

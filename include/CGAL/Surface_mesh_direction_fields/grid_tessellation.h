@@ -20,7 +20,6 @@
 
 #include <array>
 #include <cmath>
-#include <cstdint>
 #include <sstream>
 #include <string>
 #include <tuple>
@@ -339,8 +338,7 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
   struct Key_hash {   // std::hash<double> maps 0.0 and -0.0 alike, as == does
     std::size_t operator()(const Key& k) const
     {
-      // unsigned arithmetic: outside points (kind and id -1) are looked up too
-      std::size_t x = std::hash<std::size_t>()((std::size_t(std::uint32_t(std::get<1>(k))) << 2) ^ std::size_t(std::uint32_t(std::get<0>(k))));
+      const std::size_t x = internal::hash_mix(std::size_t(std::get<0>(k)), std::size_t(std::get<1>(k)));   // kind, id >= 0
       return internal::hash_mix(internal::hash_mix(x, std::hash<double>()(std::get<2>(k))), std::hash<double>()(std::get<3>(k)));
     }
   };
@@ -433,8 +431,8 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
           const Point_2 target = (c * carried.inverse())(to);
           carried = c;
           const Where w = classify(where, target);
-          const auto it = id_of.find(key_of(w));
-          if(w.kind < 0 || it == id_of.end()) { off_grid[part] = true; break; }
+          const auto it = w.kind < 0 ? id_of.end() : id_of.find(key_of(w));
+          if(it == id_of.end()) { off_grid[part] = true; break; }
           corners[std::size_t(corners[4]++)] = it->second;
           f = where;
           at = target;

@@ -63,25 +63,37 @@ struct Polyhedron_charts
   bool mirrored = false;                         // the mesh's faces turn clockwise in the charts
 };
 
+// What the charts are measured against (chart_inputs()): the input's Euclidean edge lengths
+// (`vertex_point_map`) and area, the relaxation steps asked, and the lengths the paths are
+// shortest in (empty: the mesh's metric).
+struct Chart_inputs
+{
+  std::vector<double> reference;
+  int iterations = 0;
+  double area = 0;
+  std::vector<double> path_metric;
+};
+
 // The metric of a polyhedron P on a closed genus-0 mesh (the engine of box_polycube_metric() and
 // polyhedron_metric()): P's corners are mesh vertices, its faces cycles of corners
 // (counterclockwise seen from outside). P's edges become shortest edge paths under the mesh's
 // metric, the pieces between them P's faces, each embedded onto the planar polygon that
 // `polygon(face, path_length)` returns (its corners counterclockwise, in the face's order; it is
 // called once the paths are known, `path_length(a, b)` the length of the path between corners a
-// and b) by a Tutte embedding with mean value weights, the paths placed by arc length. With a
-// `reference` (one length per mesh edge), path lengths are measured in it and the embedding is
-// then relaxed towards its triangles for up to `iterations` steps, the paths sliding along P's
-// edges (relax_polyhedron_charts()). With `path_metric` (one length per mesh edge), the paths are
-// shortest in it instead of the mesh's metric (and measured in it without a reference). Writes
+// and b) by a Tutte embedding with mean value weights, the paths placed by arc length. With
+// `in.iterations` > 0, path lengths are measured in `in.reference` and the embedding is then
+// relaxed towards its triangles for up to that many steps, the paths sliding along P's edges
+// (relax_polyhedron_charts()). With an `in.path_metric`, the paths are shortest in it instead of
+// the mesh's metric (and measured in it without relaxation). Writes
 // one length per mesh edge.
 template <typename TM, typename Polygon>
 Polycube_metric_status polyhedron_metric_core(const Mesh_arrays<TM>& m, const std::vector<int>& corner_vertex,
                                               const std::vector<std::vector<int>>& pfaces, Polygon polygon,
-                                              std::vector<double>& lengths, Polyhedron_charts* charts = nullptr,
-                                              const std::vector<double>* reference = nullptr, int iterations = 0,
-                                              const std::vector<double>* path_metric = nullptr)
+                                              const Chart_inputs& in, std::vector<double>& lengths, Polyhedron_charts* charts = nullptr)
 {
+  const int iterations = in.iterations;
+  const std::vector<double>* reference = iterations > 0 ? &in.reference : nullptr;
+  const std::vector<double>* path_metric = in.path_metric.empty() ? nullptr : &in.path_metric;
   auto path_edge_length = [&](int h) { return path_metric ? (*path_metric)[std::size_t(h >> 1)] : m.edge_length(h); };
   Polycube_metric_status st;
   const std::size_t nv = m.number_of_vertices(), ne = m.number_of_edges(), nf = m.number_of_faces();
@@ -267,7 +279,7 @@ Polycube_metric_status polyhedron_metric_core(const Mesh_arrays<TM>& m, const st
   }
   std::vector<int> pface(nf);
   for(std::size_t f = 0; f < nf; ++f) pface[f] = face_of_region[std::size_t(region[f])];
-  if(reference && iterations > 0) {
+  if(reference) {
     std::vector<int> path_of_vertex(nv, -1);
     for(std::size_t k = 0; k < np; ++k) for(std::size_t i = 1; i + 1 < paths[k].size(); ++i) path_of_vertex[std::size_t(paths[k][i])] = int(k);
     const Polyhedron_cut_view cut{&corner_of, &path_of_vertex, &pface, &pfaces, &shape, &pedges, &paths};
@@ -300,32 +312,6 @@ Polycube_metric_status polyhedron_metric_core(const Mesh_arrays<TM>& m, const st
   return st;
 }
 
-// The input's Euclidean edge lengths (of `vertex_point_map`), the reference of the charts'
-// relaxation, and the number of relaxation steps asked (`number_of_iterations`, default 10);
-// returns the input's area.
-template <typename TM, typename NP>
-double relaxation_reference(const TM& tm, const Mesh_arrays<TM>& m, const NP& np, std::vector<double>& reference, int& iterations)
-{
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 10);
-  if(iterations < 0) throw Input_error(Input_error::INVALID_ARGUMENT, "number_of_iterations must not be negative, got " + std::to_string(iterations));
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
-  reference.assign(m.number_of_edges(), 0.);
-  for(std::size_t e = 0; e < m.number_of_edges(); ++e) {
-    const auto &p = get(vpm, m.vertices[std::size_t(m.source(int(2 * e)))]), &q = get(vpm, m.vertices[std::size_t(m.target[2 * e])]);
-    reference[e] = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, q)));
-  }
-  double area = 0;
-  for(std::size_t f = 0; f < m.number_of_faces(); ++f) {
-    const int h0 = m.face_halfedge[f], h1 = m.next[std::size_t(h0)], h2 = m.next[std::size_t(h1)];
-    const double a = reference[std::size_t(h0 >> 1)], b = reference[std::size_t(h1 >> 1)], c = reference[std::size_t(h2 >> 1)];
-    const double s = 0.5 * (a + b + c);
-    area += std::sqrt((std::max)(0., s * (s - a) * (s - b) * (s - c)));
-  }
-  return area;
-}
-
 // With `conformal_factor_map` (u, per vertex), the lengths l_ij e^((u_i + u_j) / 2) of the mesh's
 // edges, l its metric: the discrete conformal scaling that compute_cone_metric() returns as u,
 // on the input's edges whatever triangulation the flow ended on. Returns false without it.
@@ -347,6 +333,33 @@ bool conformal_path_metric(const Mesh_arrays<TM>& m, const NP& np, std::vector<d
       path_metric[e] = m.edge_length(int(2 * e)) * std::exp(0.5 * (u[std::size_t(m.source(int(2 * e)))] + u[std::size_t(m.target[2 * e])]));
     return true;
   }
+}
+
+// The Chart_inputs of `np`: `number_of_iterations` (default 10), `vertex_point_map` and
+// `conformal_factor_map`.
+template <typename TM, typename NP>
+Chart_inputs chart_inputs(const TM& tm, const Mesh_arrays<TM>& m, const NP& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  Chart_inputs in;
+  in.iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 10);
+  if(in.iterations < 0) throw Input_error(Input_error::INVALID_ARGUMENT, "number_of_iterations must not be negative, got " + std::to_string(in.iterations));
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
+  std::vector<double>& reference = in.reference;
+  reference.assign(m.number_of_edges(), 0.);
+  for(std::size_t e = 0; e < m.number_of_edges(); ++e) {
+    const auto &p = get(vpm, m.vertices[std::size_t(m.source(int(2 * e)))]), &q = get(vpm, m.vertices[std::size_t(m.target[2 * e])]);
+    reference[e] = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, q)));
+  }
+  for(std::size_t f = 0; f < m.number_of_faces(); ++f) {
+    const int h0 = m.face_halfedge[f], h1 = m.next[std::size_t(h0)], h2 = m.next[std::size_t(h1)];
+    const double a = reference[std::size_t(h0 >> 1)], b = reference[std::size_t(h1 >> 1)], c = reference[std::size_t(h2 >> 1)];
+    const double s = 0.5 * (a + b + c);
+    in.area += std::sqrt((std::max)(0., s * (s - a) * (s - b) * (s - c)));
+  }
+  conformal_path_metric(m, np, in.path_metric);
+  return in;
 }
 
 template <typename TM, typename NP>
@@ -428,9 +441,7 @@ Polycube_metric_status box_polycube_metric(const TriangleMesh& tm,
       if(s == 1) { pfaces.push_back({corner(0, 0), corner(1, 0), corner(1, 1), corner(0, 1)}); plane_axes.push_back({{u, w}}); }
       else { pfaces.push_back({corner(0, 0), corner(0, 1), corner(1, 1), corner(1, 0)}); plane_axes.push_back({{w, u}}); }
     }
-  std::vector<double> reference;
-  int iterations = 0;
-  const double area = internal::relaxation_reference(tm, m, np, reference, iterations);
+  const internal::Chart_inputs in = internal::chart_inputs(tm, m, np);
   std::array<double, 3> dims{{0, 0, 0}};
   bool dims_known = false;
   auto polygon = [&](std::size_t j, const std::function<double(int, int)>& path_length) {
@@ -439,7 +450,7 @@ Polycube_metric_status box_polycube_metric(const TriangleMesh& tm,
       for(int a = 0; a < 3; ++a)
         for(int i = 0; i < 8; ++i) if(!(i & (1 << a))) mean[std::size_t(a)] += path_length(i, i | (1 << a)) / 4;
       const double box_area = 2 * (mean[0] * mean[1] + mean[1] * mean[2] + mean[2] * mean[0]);
-      const double scale = iterations > 0 && box_area > 0 ? std::sqrt(area / box_area) : 1.;
+      const double scale = in.iterations > 0 && box_area > 0 ? std::sqrt(in.area / box_area) : 1.;
       for(int a = 0; a < 3; ++a) dims[std::size_t(a)] = edge_length * (std::max)(1., std::round(scale * mean[std::size_t(a)] / edge_length));
       dims_known = true;
     }
@@ -448,10 +459,8 @@ Polycube_metric_status box_polycube_metric(const TriangleMesh& tm,
     for(int c : pfaces[j]) p.push_back(Point_2(((c >> x) & 1) * dims[std::size_t(x)], ((c >> y) & 1) * dims[std::size_t(y)]));
     return p;
   };
-  std::vector<double> l, path_metric;
-  const bool scaled = internal::conformal_path_metric(m, np, path_metric);
-  Polycube_metric_status st = internal::polyhedron_metric_core(m, cv, pfaces, polygon, l, nullptr, iterations > 0 ? &reference : nullptr,
-                                                               iterations, scaled ? &path_metric : nullptr);
+  std::vector<double> l;
+  Polycube_metric_status st = internal::polyhedron_metric_core(m, cv, pfaces, polygon, in, l);
   st.dimensions = dims;
   if(st.success) for(std::size_t e = 0; e < l.size(); ++e) put(lengths, m.edges[e], l[e]);
   return st;
@@ -493,13 +502,8 @@ Polycube_metric_status polyhedron_metric(const TriangleMesh& tm,
     return faces[j].size() == 4 ? std::vector<Point_2>{Point_2(0, 0), Point_2(L, 0), Point_2(L, L), Point_2(0, L)}
                                 : std::vector<Point_2>{Point_2(0, 0), Point_2(L, 0), Point_2(L / 2, L * std::sqrt(3.) / 2)};
   };
-  std::vector<double> reference;
-  int iterations = 0;
-  internal::relaxation_reference(tm, m, np, reference, iterations);
-  std::vector<double> l, path_metric;
-  const bool scaled = internal::conformal_path_metric(m, np, path_metric);
-  Polycube_metric_status st = internal::polyhedron_metric_core(m, cv, faces, polygon, l, nullptr, iterations > 0 ? &reference : nullptr,
-                                                               iterations, scaled ? &path_metric : nullptr);
+  std::vector<double> l;
+  Polycube_metric_status st = internal::polyhedron_metric_core(m, cv, faces, polygon, internal::chart_inputs(tm, m, np), l);
   if(st.success) for(std::size_t e = 0; e < l.size(); ++e) put(lengths, m.edges[e], l[e]);
   return st;
 }

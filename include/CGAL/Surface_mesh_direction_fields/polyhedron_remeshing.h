@@ -85,9 +85,7 @@ Polyhedron_remesh_status polyhedron_remesh(const TriangleMesh& tm,
   for(const auto& v : corners) cv.push_back(m.vertex_index(v));
   const int n = subdivisions;
   const double r3 = std::sqrt(3.) / 2;
-  std::vector<double> reference;
-  int iterations = 0;
-  const double area = internal::relaxation_reference(tm, m, np, reference, iterations);
+  const internal::Chart_inputs in = internal::chart_inputs(tm, m, np);
   double L = 0;   // the polygons' side: P's area that of the input (relaxed) or the mean length of the paths
   auto polygon = [&](std::size_t j, const std::function<double(int, int)>& path_length) {
     if(L == 0) {
@@ -97,16 +95,14 @@ Polyhedron_remesh_status polyhedron_remesh(const TriangleMesh& tm,
         for(std::size_t i = 0; i < f.size(); ++i) { sum += path_length(f[i], f[(i + 1) % f.size()]); ++count; }
         unit_area += f.size() == 4 ? 1. : r3 / 2;
       }
-      L = iterations > 0 ? std::sqrt(area / unit_area) : sum / count;
+      L = in.iterations > 0 ? std::sqrt(in.area / unit_area) : sum / count;
     }
     return faces[j].size() == 4 ? std::vector<Point_2>{Point_2(0, 0), Point_2(L, 0), Point_2(L, L), Point_2(0, L)}
                                 : std::vector<Point_2>{Point_2(0, 0), Point_2(L, 0), Point_2(L / 2, L * r3)};
   };
-  std::vector<double> lengths, path_metric;
-  const bool scaled = internal::conformal_path_metric(m, np, path_metric);
+  std::vector<double> lengths;
   internal::Polyhedron_charts ch;
-  st.metric = internal::polyhedron_metric_core(m, cv, faces, polygon, lengths, &ch, iterations > 0 ? &reference : nullptr, iterations,
-                                               scaled ? &path_metric : nullptr);
+  st.metric = internal::polyhedron_metric_core(m, cv, faces, polygon, in, lengths, &ch);
   if(!st.metric.success) { st.message = st.metric.message; return st; }
   typedef typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
   VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
