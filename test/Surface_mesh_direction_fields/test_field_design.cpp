@@ -109,6 +109,26 @@ void flat_tori()
     if(c.square) SMDF_CHECK_MSG(std::abs(sq.spacing - c.square_spacing) < 1e-9, c.name << ": square spacing " << sq.spacing);
     if(c.triangular) SMDF_CHECK_MSG(std::abs(tri.spacing - c.triangular_spacing) < 1e-9, c.name << ": triangular spacing " << tri.spacing);
     if(!c.square) SMDF_CHECK_MSG(!sq.failing_loops.empty() && sq.max_translation_deviation > 1e-3, c.name << ": the failing loops are named");
+    // the grid of a given edge length: any divisor of the spacing by a lattice vector's norm,
+    // also 1000 grid edges per period (beyond the coarsest-lattice search's reach of 128), and
+    // nothing else
+    const SMDF::Planar_tessellation grid = c.triangular ? SMDF::TRIANGULAR_GRID : SMDF::SQUARE_GRID;
+    const double s = c.square ? c.square_spacing : c.triangular ? c.triangular_spacing : 30;
+    const bool fits = c.square || c.triangular;
+    for(double k : {1., 2., 1000., c.triangular ? std::sqrt(3.) : std::sqrt(2.), c.triangular ? std::sqrt(7.) * 100 : std::sqrt(5.) * 100}) {
+      const auto at = SMDF::tessellation_compatibility_at(g, grid, s / k);
+      SMDF_CHECK_MSG(at.compatible == fits && at.spacing == s / k, c.name << ": grid of edge length " << s / k << ": " << at.compatible
+                     << ", deviation " << at.max_translation_deviation);
+      if(fits && k == 1000.) {   // its lines follow the periods: the coarse lattice's orientation modulo the grid's rotations
+        const double step = c.triangular ? M_PI / 3 : M_PI / 2;
+        const double d = std::remainder(at.orientation - (c.triangular ? tri.orientation : sq.orientation), step);
+        SMDF_CHECK_MSG(std::abs(d) < 1e-9, c.name << ": orientation " << at.orientation << " against the coarse lattice's");
+      }
+    }
+    if(fits) {
+      const auto off = SMDF::tessellation_compatibility_at(g, grid, s / 7.5);
+      SMDF_CHECK_MSG(!off.compatible && !off.failing_loops.empty(), c.name << ": 7.5 grid edges per period do not fit");
+    }
   }
 }
 

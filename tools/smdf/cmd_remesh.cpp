@@ -337,6 +337,7 @@ Json run_remesh(const Args& args)
     metric["flat_cone_metric_converged"] = cm.converged;
     metric["flat_cone_metric_edge_flips"] = cm.edge_flips;
     if(!cm.converged) for(vertex_descriptor v : vertices(mesh)) u[v] = 0;
+    metric_s += clock.lap();   // the flat cone metric is the metric; compensation_s is P's
   };
   double h = requested_h > 0 ? requested_h : std::sqrt(metric_area(mesh, lengths) / (double(requested_faces) * unit_area));
   if(args.has("polycube") && polycube != "box") {

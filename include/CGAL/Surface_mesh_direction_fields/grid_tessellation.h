@@ -41,8 +41,10 @@ struct Grid_tessellation_status
 {
   bool success = false;   ///< the output is a valid mesh whose irregular vertices are the cones
   std::string message;    ///< empty on success
-  /// the holonomy test of the cut graph's motions (Theorem 3.5), from which the grid's spacing,
-  /// orientation and origin come; `failing_loops` are indices into `failing_edges`' source list
+  /// the holonomy test of the cut graph's motions (Theorem 3.5) for the grid of the requested
+  /// edge length (tessellation_compatibility_at()), from which the grid's orientation and origin
+  /// come; when it fails, the coarsest lattice's test (tessellation_compatibility()), whose
+  /// `spacing` is then the metric's own: the edge length must divide it
   Tessellation_compatibility compatibility;
   /// edges of the cut graph (indices of the input's index map) whose motion is not a symmetry
   /// of the grid
@@ -156,67 +158,43 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
     while(g != h) { g = m.next[std::size_t(g)]; ++k; }
     group.cone_positions.push_back(dev.corners_[std::size_t(f)][std::size_t(k)]);
   }
-  // several components: one frame each; the test then only holds for one component
-  // the lattice search must reach lattice vectors as long as the longest translation in edge lengths
-  double longest = 0;
-  if(!group.motions.empty()) {
-    const Point_2 o = group.cone_positions.empty() ? Point_2(0, 0) : group.cone_positions.front();
+  // several components: one frame each; the test then only holds for one component.
+  // The grid of this edge length first: only its orientation is searched, exactly at any size.
+  const double h = edge_length;
+  st.compatibility = tessellation_compatibility_at(group, grid, h, 1e-6);
+  if(!st.compatibility.compatible) {
+    // Why not: the motions are no symmetries of any grid, or h does not divide the metric's
+    // lattice. The coarsest lattice, searched among vectors as long as the longest translation
+    // (up to 128 edge lengths), tells which, and becomes the status's compatibility.
+    const double step0 = square ? CGAL_PI / 2 : CGAL_PI / 3;
+    bool rotations_ok = true;
+    for(double r : group.rotations) rotations_ok = rotations_ok && std::abs(r / step0 - std::round(r / step0)) * step0 <= 1e-6;
+    double longest = 0;
+    const Point_2 o = st.compatibility.origin;
     for(const Rigid_motion_2& r : group.motions) {
       const Point_2 q = r(o);
       longest = (std::max)(longest, std::sqrt((q.x() - o.x()) * (q.x() - o.x()) + (q.y() - o.y()) * (q.y() - o.y())));
     }
-  }
-  // (rotations first: when one fails no lattice search is needed)
-  const double step0 = square ? CGAL_PI / 2 : CGAL_PI / 3;
-  bool rotations_ok = true;
-  for(double r : group.rotations) rotations_ok = rotations_ok && std::abs(r / step0 - std::round(r / step0)) * step0 <= 1e-6;
-  const int reach = rotations_ok ? int((std::min)(std::ceil(longest / edge_length) + 2, 128.)) : 1;
-  st.compatibility = tessellation_compatibility(group, grid, 1e-6, (std::max)(8, reach));
-  for(std::size_t i : st.compatibility.failing_loops) st.failing_edges.push_back(group_edge[i]);
-  if(!st.compatibility.compatible) {
+    const int reach = rotations_ok ? int((std::min)(std::ceil(longest / h) + 2, 128.)) : 1;
+    const Tessellation_compatibility coarse = tessellation_compatibility(group, grid, 1e-6, (std::max)(8, reach));
+    st.compatibility = coarse;
     std::ostringstream os;
-    os << st.failing_edges.size() << " edges of the cut graph glue the development by motions that are not symmetries of the "
-       << (square ? "square" : "triangular") << " grid (rotation off by up to " << st.compatibility.max_rotation_deviation
-       << " rad, translation by " << st.compatibility.max_translation_deviation << " grid edges); first edge "
-       << (st.failing_edges.empty() ? 0 : st.failing_edges.front());
-    st.message = os.str();
-    return st;
-  }
-  // the grid's lattice must contain the surface's (spacing s, orientation phi): its basis
-  // vector s e^{i phi} = h e^{i psi} g for a lattice vector g = a + b w of norm s / h
-  const double spacing = st.compatibility.spacing;
-  const double h = edge_length;
-  double orientation = st.compatibility.orientation;
-  const double wx0 = square ? 0. : 0.5, wy0 = square ? 1. : std::sqrt(3.) / 2;
-  if(spacing > 0) {
-    const double ratio = spacing / h;
-    // several lattice vectors may have that norm (|10 + 10i| = |2 + 14i|): take the multiple of
-    // the shortest primitive vector (largest gcd), whose grid lines follow the metric's lattice
-    // (a cube's edges) instead of crossing it at an angle
-    bool found = false;
-    long best_gcd = 0;
-    double best_angle = 0;
-    auto gcd = [](long x, long y) { while(y) { const long t = x % y; x = y; y = t; } return x; };
-    const long bound = long(std::ceil(ratio)) + 1;
-    for(long a = 0; a <= bound; ++a)
-      for(long b = 0; b <= bound; ++b) {
-        const double gx = double(a) + double(b) * wx0, gy = double(b) * wy0;
-        if(std::abs(std::sqrt(gx * gx + gy * gy) - ratio) <= 1e-7 * ratio && gcd(a, b) > best_gcd) {
-          best_gcd = gcd(a, b);
-          best_angle = std::atan2(gy, gx);
-          found = true;
-        }
-      }
-    if(found) orientation -= best_angle;
-    if(!found) {
-      std::ostringstream os;
+    if(coarse.compatible) {
+      const double spacing = coarse.spacing;
       os << "edge length " << h << " does not divide the lattice of the metric (spacing " << spacing
          << "): the edge length must be the spacing over the length of a lattice vector, e.g. " << spacing / 2 << ", "
          << spacing / 3 << ", " << spacing / 4 << (square ? " or spacing / sqrt(2), spacing / sqrt(5)" : " or spacing / sqrt(3), spacing / sqrt(7)");
-      st.message = os.str();
-      return st;
+    } else {
+      os << coarse.failing_loops.size() << " edges of the cut graph glue the development by motions that are not symmetries of the "
+         << (square ? "square" : "triangular") << " grid (rotation off by up to " << coarse.max_rotation_deviation
+         << " rad, translation by " << coarse.max_translation_deviation << " grid edges); first edge "
+         << (coarse.failing_loops.empty() ? 0 : group_edge[coarse.failing_loops.front()]);
     }
+    for(std::size_t i : st.compatibility.failing_loops) st.failing_edges.push_back(group_edge[i]);
+    st.message = os.str();
+    return st;
   }
+  const double orientation = st.compatibility.orientation;
   st.edge_length = h;
   // lattice coordinates: z = (p - origin) e^{-i orientation} / h in the basis (1, w)
   const double wx = square ? 0. : 0.5, wy = square ? 1. : std::sqrt(3.) / 2;

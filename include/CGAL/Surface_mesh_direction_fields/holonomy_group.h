@@ -15,6 +15,8 @@
 #include <array>
 #include <cmath>
 #include <complex>
+#include <limits>
+#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -66,7 +68,8 @@ struct Tessellation_compatibility
   /// and `origin` (Theorem 3.5: the grid can be defined on the surface)
   bool compatible = false;
   /// the grid's edge length: the largest that works (the coarsest common lattice); 0 if every
-  /// translation vanishes, when any spacing works
+  /// translation vanishes, when any spacing works; with tessellation_compatibility_at(), the
+  /// spacing tested
   double spacing = 0;
   /// angle of a grid edge in the base face's frame
   double orientation = 0;
@@ -159,6 +162,80 @@ inline int smallest_parallel_rosy_order(const Holonomy_group& group, int max_ord
   return 0;
 }
 
+namespace internal {
+
+// The part of the tessellation test that does not depend on the lattice: the rotations, the
+// origin and the translations t_i' = tau_i(o) - o as complex numbers; the index of the shortest
+// nonzero translation (t.size() if all vanish).
+struct Tessellation_translations
+{
+  std::vector<std::complex<double>> t;
+  std::vector<char> fails;   // per loop: its rotation is not a symmetry
+  std::size_t shortest = 0;
+  std::complex<double> w;    // the lattice's second basis vector (the first is 1)
+};
+
+inline Tessellation_translations tessellation_translations(const Holonomy_group& group, Tessellation_compatibility& r,
+                                                           double tolerance)
+{
+  typedef std::complex<double> C;
+  Tessellation_translations tt;
+  const double step = r.grid == SQUARE_GRID ? CGAL_PI / 2 : CGAL_PI / 3;
+  tt.w = r.grid == SQUARE_GRID ? C(0, 1) : C(0.5, std::sqrt(3.) / 2);
+  if(!group.cone_positions.empty()) r.origin = group.cone_positions.front();
+  tt.fails.assign(group.motions.size(), 0);
+  tt.t.resize(group.motions.size());
+  for(std::size_t i = 0; i < group.motions.size(); ++i) {
+    const double d = angle_lattice_distance(group.rotations[i], step);
+    r.max_rotation_deviation = (std::max)(r.max_rotation_deviation, d);
+    if(!(d <= tolerance)) tt.fails[i] = 1;
+    const Point_2 image = group.motions[i](r.origin);
+    tt.t[i] = C(image.x() - r.origin.x(), image.y() - r.origin.y());
+  }
+  double scale_norm = 0;   // the largest |t'| (to make "zero" relative)
+  for(const C& z : tt.t) scale_norm = (std::max)(scale_norm, std::abs(z));
+  tt.shortest = tt.t.size();
+  for(std::size_t i = 0; i < tt.t.size(); ++i)
+    if(std::abs(tt.t[i]) > 1e-9 * (1 + scale_norm) && (tt.shortest == tt.t.size() || std::abs(tt.t[i]) < std::abs(tt.t[tt.shortest])))
+      tt.shortest = i;
+  return tt;
+}
+
+// distance of z to the lattice Z + Z w, in lattice units
+inline double lattice_distance(std::complex<double> z, std::complex<double> w)
+{
+  const double b = z.imag() / w.imag();
+  const double a = z.real() - b * w.real();
+  double best = std::numeric_limits<double>::infinity();
+  for(double da : {std::floor(a), std::ceil(a)})
+    for(double db : {std::floor(b), std::ceil(b)}) best = (std::min)(best, std::abs(z - (da + db * w)));
+  return best;
+}
+
+// The largest lattice distance of u t_i over the loops, or a value >= bound as soon as it
+// cannot stay below bound (most candidate lattices fail on their first few loops).
+inline double lattice_deviation(const Tessellation_translations& tt, std::complex<double> u, double bound)
+{
+  double dev = 0;
+  for(const std::complex<double>& z : tt.t) {
+    dev = (std::max)(dev, lattice_distance(u * z, tt.w));
+    if(!(dev < bound)) break;
+  }
+  return dev;
+}
+
+inline void finish_tessellation_test(const Tessellation_translations& tt, std::complex<double> u, double tolerance,
+                                     Tessellation_compatibility& r)
+{
+  std::vector<char> fails = tt.fails;
+  for(std::size_t i = 0; i < tt.t.size(); ++i)
+    if(!(lattice_distance(u * tt.t[i], tt.w) <= tolerance)) fails[i] = 1;
+  for(std::size_t i = 0; i < fails.size(); ++i) if(fails[i]) r.failing_loops.push_back(i);
+  r.compatible = r.failing_loops.empty();
+}
+
+} // namespace internal
+
 /// \ingroup PkgSurfaceMeshDirectionFieldsHolonomy
 /// Theorem 3.5 of Lai et al.: the grid can be defined on the surface if every generalised
 /// holonomy is a symmetry of the grid. The rotations must be multiples of \f$\pi/2\f$
@@ -168,68 +245,88 @@ inline int smallest_parallel_rosy_order(const Holonomy_group& group, int max_ord
 /// best rotation and uniform scaling. The coarsest such lattice is searched among those that
 /// contain the shortest \f$t_i'\f$ as a lattice vector of norm at most `max_lattice_norm` (in
 /// edge lengths); a translation counts as in the lattice when it is within `tolerance` edge
-/// lengths of a lattice point.
+/// lengths of a lattice point. For a grid of known edge length, tessellation_compatibility_at()
+/// has no such bound.
 inline Tessellation_compatibility tessellation_compatibility(const Holonomy_group& group, Planar_tessellation grid,
                                                              double tolerance = 1e-6, int max_lattice_norm = 8)
 {
   typedef std::complex<double> C;
   Tessellation_compatibility r;
   r.grid = grid;
-  const double step = grid == SQUARE_GRID ? CGAL_PI / 2 : CGAL_PI / 3;
-  const C w = grid == SQUARE_GRID ? C(0, 1) : C(0.5, std::sqrt(3.) / 2);   // second lattice basis vector
-  if(!group.cone_positions.empty()) r.origin = group.cone_positions.front();
-  std::vector<char> fails(group.motions.size(), 0);
-  std::vector<C> t(group.motions.size());
-  for(std::size_t i = 0; i < group.motions.size(); ++i) {
-    const double d = internal::angle_lattice_distance(group.rotations[i], step);
-    r.max_rotation_deviation = (std::max)(r.max_rotation_deviation, d);
-    if(!(d <= tolerance)) fails[i] = 1;
-    const Point_2 image = group.motions[i](r.origin);
-    t[i] = C(image.x() - r.origin.x(), image.y() - r.origin.y());
-  }
-  // distance of z to the lattice Z + Z w, in lattice units
-  auto lattice_distance = [&](C z) {
-    const double b = z.imag() / w.imag();
-    const double a = z.real() - b * w.real();
-    double best = std::numeric_limits<double>::infinity();
-    for(double da : {std::floor(a), std::ceil(a)})
-      for(double db : {std::floor(b), std::ceil(b)}) best = (std::min)(best, std::abs(z - (da + db * w)));
-    return best;
-  };
-  double scale_norm = 0;   // the largest |t'| (to make "zero" relative)
-  for(const C& z : t) scale_norm = (std::max)(scale_norm, std::abs(z));
-  std::size_t shortest = t.size();
-  for(std::size_t i = 0; i < t.size(); ++i)
-    if(std::abs(t[i]) > 1e-9 * (1 + scale_norm) && (shortest == t.size() || std::abs(t[i]) < std::abs(t[shortest]))) shortest = i;
-  if(shortest < t.size()) {
+  const internal::Tessellation_translations tt = internal::tessellation_translations(group, r, tolerance);
+  C best_u(0, 0);
+  if(tt.shortest < tt.t.size()) {
     // candidate lattice vectors g for t'_shortest, by increasing norm: the first that fits is the coarsest lattice
     std::vector<C> candidates;
     for(int a = -max_lattice_norm; a <= max_lattice_norm; ++a)
       for(int b = -max_lattice_norm; b <= max_lattice_norm; ++b) {
-        const C g = double(a) + double(b) * w;
+        const C g = double(a) + double(b) * tt.w;
         if(std::abs(g) > 0.5 && std::abs(g) <= max_lattice_norm + 1e-9) candidates.push_back(g);
       }
     std::stable_sort(candidates.begin(), candidates.end(), [](const C& x, const C& y) { return std::abs(x) < std::abs(y) - 1e-12; });
     double best_deviation = std::numeric_limits<double>::infinity();
-    C best_u(0, 0);
     for(const C& g : candidates) {
-      const C u = g / t[shortest];   // maps the surface's translations to lattice coordinates
-      double dev = 0;
-      for(const C& z : t) {   // stop once this candidate cannot beat the best: most fail on their first few loops
-        dev = (std::max)(dev, lattice_distance(u * z));
-        if(!(dev < best_deviation - 1e-15)) break;
-      }
+      const C u = g / tt.t[tt.shortest];   // maps the surface's translations to lattice coordinates
+      const double dev = internal::lattice_deviation(tt, u, best_deviation - 1e-15);
       if(dev < best_deviation - 1e-15) { best_deviation = dev; best_u = u; }
       if(dev <= tolerance) break;
     }
     r.max_translation_deviation = best_deviation;
     r.spacing = 1 / std::abs(best_u);
     r.orientation = -std::arg(best_u);
-    for(std::size_t i = 0; i < t.size(); ++i)
-      if(!(lattice_distance(best_u * t[i]) <= tolerance)) fails[i] = 1;
   }
-  for(std::size_t i = 0; i < fails.size(); ++i) if(fails[i]) r.failing_loops.push_back(i);
-  r.compatible = r.failing_loops.empty();
+  internal::finish_tessellation_test(tt, best_u, tolerance, r);
+  return r;
+}
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsHolonomy
+/// The test of tessellation_compatibility() for the grid of edge length `spacing`: whether,
+/// after the best rotation, every translation \f$t_i'\f$ lies within `tolerance` edge lengths
+/// of that grid's lattice. Only the orientation is searched: the lattice vectors whose norm is
+/// that of the shortest \f$t_i'\f$ (O(\f$|t|\f$/`spacing`) of them, so grids of any size are
+/// tested exactly). Among the orientations that fit, the one whose lattice vector is the largest
+/// multiple of a primitive one is chosen, so that the grid's lines follow the metric's own
+/// lattice (a cube's edges) instead of crossing it at an angle. `spacing` in the result is the
+/// given one.
+inline Tessellation_compatibility tessellation_compatibility_at(const Holonomy_group& group, Planar_tessellation grid,
+                                                                double spacing, double tolerance = 1e-6)
+{
+  typedef std::complex<double> C;
+  if(!(spacing > 0) || !std::isfinite(spacing))
+    throw Input_error(Input_error::INVALID_ARGUMENT, "the grid spacing must be positive, got " + std::to_string(spacing));
+  Tessellation_compatibility r;
+  r.grid = grid;
+  r.spacing = spacing;
+  const internal::Tessellation_translations tt = internal::tessellation_translations(group, r, tolerance);
+  C best_u(1 / spacing, 0);
+  if(tt.shortest < tt.t.size()) {
+    const C ts = tt.t[tt.shortest];
+    const double n = std::abs(ts) / spacing;   // the norm of its lattice vector
+    const bool square = grid == SQUARE_GRID;
+    auto gcd = [](long x, long y) { while(y) { const long t = x % y; x = y; y = t; } return x; };
+    double best_deviation = std::numeric_limits<double>::infinity();
+    long best_gcd = 0;
+    // lattice vectors g = a + b w with a > 0, b >= 0: one per orientation up to the grid's rotations
+    for(long a = 1; a <= long(std::ceil(n + tolerance)); ++a) {
+      const double da = double(a);
+      const double disc = square ? n * n - da * da : 4 * n * n - 3 * da * da;
+      if(disc < -4 * n * tolerance - 1e-9) continue;
+      const double bb = square ? std::sqrt((std::max)(0., disc)) : (-da + std::sqrt((std::max)(0., disc))) / 2;
+      const long b = std::lround(bb);
+      if(b < 0) continue;
+      const C g = da + double(b) * tt.w;
+      if(!(std::abs(std::abs(g) - n) <= 2 * tolerance + 1e-12 * n)) continue;
+      const C u = g / ts;
+      const double dev = internal::lattice_deviation(tt, u, (std::max)(best_deviation, tolerance) + 1e-15);
+      const long k = gcd(a, b);
+      if(dev <= tolerance ? (best_deviation > tolerance || k > best_gcd) : dev < best_deviation) {
+        best_deviation = dev; best_u = u; best_gcd = k;
+      }
+    }
+    r.max_translation_deviation = best_deviation;
+  }
+  r.orientation = -std::arg(best_u);
+  internal::finish_tessellation_test(tt, best_u, tolerance, r);
   return r;
 }
 
