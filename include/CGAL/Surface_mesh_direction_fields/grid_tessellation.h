@@ -166,9 +166,7 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
     // Why not: the motions are no symmetries of any grid, or h does not divide the metric's
     // lattice. The coarsest lattice, searched among vectors as long as the longest translation
     // (up to 128 edge lengths), tells which, and becomes the status's compatibility.
-    const double step0 = square ? CGAL_PI / 2 : CGAL_PI / 3;
-    bool rotations_ok = true;
-    for(double r : group.rotations) rotations_ok = rotations_ok && std::abs(r / step0 - std::round(r / step0)) * step0 <= 1e-6;
+    const bool rotations_ok = st.compatibility.max_rotation_deviation <= 1e-6;   // the same test as the coarse one's
     double longest = 0;
     const Point_2 o = st.compatibility.origin;
     for(const Rigid_motion_2& r : group.motions) {
