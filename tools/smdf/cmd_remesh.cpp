@@ -456,6 +456,7 @@ Json run_remesh(const Args& args)
     metric["side_length"] = side;
     metric["max_path_stretch"] = ps.max_path_stretch;
     metric["relaxation_steps"] = ps.relaxation_steps;
+    metric["seam_relaxed_vertices"] = ps.seam_relaxed_vertices;
     out["metric"] = metric;
     if(!ps.success) throw Failed_result{out, file + ": polyhedron metric: " + ps.message, 3};
   } else if(args.has("polycube")) {
@@ -482,6 +483,7 @@ Json run_remesh(const Args& args)
     for(double d : ps.dimensions) metric["dimensions"].push_back(d);
     metric["max_path_stretch"] = ps.max_path_stretch;
     metric["relaxation_steps"] = ps.relaxation_steps;
+    metric["seam_relaxed_vertices"] = ps.seam_relaxed_vertices;
     out["metric"] = metric;
     if(!ps.success) throw Failed_result{out, file + ": box polycube metric: " + ps.message, 3};
   }

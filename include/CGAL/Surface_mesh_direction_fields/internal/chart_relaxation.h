@@ -39,6 +39,63 @@ inline std::array<Point_2, 3> reference_triangle(double a, double b, double c, d
   const double x = (a * a + c * c - b * b) / (2 * a);
   return {{Point_2(0, 0), Point_2(a, 0), Point_2(x, sign * std::sqrt((std::max)(c * c - x * x, 0.)))}};
 }
+// Cotangent weights (halved) of the edges k = (corner k, corner k + 1) of the triangle of side
+// lengths l[0..2] (l[k] from corner k to k + 1) and twice its area, clamped to [5e-3, 50] so that
+// the energy stays convex and needles do not dominate.
+inline std::array<double, 3> clamped_cotan_weights(const double l[3], double area2)
+{
+  std::array<double, 3> w;
+  for(int k = 0; k < 3; ++k) {   // cot of the angle opposite edge k: (sum of the other squares - its square) / (4 area)
+    const double o1 = l[(k + 1) % 3], o2 = l[(k + 2) % 3];
+    const double cot = area2 > 0 ? (o1 * o1 + o2 * o2 - l[k] * l[k]) / (2 * area2) : 1.;
+    w[std::size_t(k)] = 0.5 * (std::min)(1e2, (std::max)(1e-2, cot));
+  }
+  return w;
+}
+
+// The rotation (cos, sin) closest to the map from triangle `ref` to triangle `x` in the weighted
+// sense of as-rigid-as-possible energies: the local step of Liu et al. 2008.
+inline std::array<double, 2> closest_rotation(const Point_2 x[3], const std::array<Point_2, 3>& ref, const std::array<double, 3>& w)
+{
+  double A[2][2] = {{0, 0}, {0, 0}};   // sum of w (x_a - x_b)(p_a - p_b)^T
+  for(int k = 0; k < 3; ++k) {
+    const int k1 = (k + 1) % 3;
+    const double ex[2] = {x[k].x() - x[k1].x(), x[k].y() - x[k1].y()};
+    const double ep[2] = {ref[std::size_t(k)].x() - ref[std::size_t(k1)].x(), ref[std::size_t(k)].y() - ref[std::size_t(k1)].y()};
+    for(int r = 0; r < 2; ++r) for(int q = 0; q < 2; ++q) A[r][q] += w[std::size_t(k)] * ex[r] * ep[q];
+  }
+  // the rotation's angle is arg(A00 + A11 + i (A10 - A01)): normalised, without trigonometry
+  const double ra = A[0][0] + A[1][1], rb = A[1][0] - A[0][1], rn = std::sqrt(ra * ra + rb * rb);
+  return rn > 0 ? std::array<double, 2>{{ra / rn, rb / rn}} : std::array<double, 2>{{1., 0.}};
+}
+
+// The largest fraction a of the move of triangle p by v that keeps its doubled area, signed by
+// `sign`, above `floor` (which it is above at a = 0): the first positive root of a quadratic in
+// a (infinity when the area never gets that low).
+inline double area_floor_step(const Point_2 p[3], const Point_2 v[3], double sign, double floor)
+{
+  const double ax = p[1].x() - p[0].x(), ay = p[1].y() - p[0].y(), bx = p[2].x() - p[0].x(), by = p[2].y() - p[0].y();
+  const double dax = v[1].x() - v[0].x(), day = v[1].y() - v[0].y(), dbx = v[2].x() - v[0].x(), dby = v[2].y() - v[0].y();
+  const double c0 = sign * (ax * by - bx * ay) - floor, c1 = sign * (ax * dby + dax * by - bx * day - dbx * ay), c2 = sign * (dax * dby - dbx * day);
+  const double inf = std::numeric_limits<double>::infinity();
+  if(!(c0 > 0)) return 0;
+  if(std::abs(c2) < 1e-300) return c1 < 0 ? -c0 / c1 : inf;
+  const double disc = c1 * c1 - 4 * c2 * c0;
+  if(disc < 0) return inf;
+  const double q = -0.5 * (c1 + (c1 >= 0 ? 1 : -1) * std::sqrt(disc));
+  double best = inf;
+  for(double r : {q / c2, q != 0 ? c0 / q : inf}) if(r > 0) best = (std::min)(best, r);
+  return best;
+}
+
+// The largest fraction of the move that keeps at least half of the triangle's area (after Smith
+// and Schaefer 2015's line search).
+inline double half_area_step(const Point_2 p[3], const Point_2 v[3], double sign)
+{
+  const double area2 = sign * ((p[1].x() - p[0].x()) * (p[2].y() - p[0].y()) - (p[2].x() - p[0].x()) * (p[1].y() - p[0].y()));
+  return area_floor_step(p, v, sign, 0.5 * area2);
+}
+
 // The Tutte embedding of one piece of the cut (`piece`: its mesh faces; `unknowns`: its inner
 // vertices, `column` their rows; `fixed`: the positions of its boundary vertices), first with
 // symmetrised mean value weights of the metric (the mean of Floater's weights at the edge's two
@@ -240,13 +297,8 @@ int relax_polyhedron_charts(const Mesh_arrays<TM>& m, const Polyhedron_cut_view&
     const int h0 = m.face_halfedge[f], h1 = m.next[std::size_t(h0)], h2 = m.next[std::size_t(h1)];
     const double a = reference[std::size_t(h0 >> 1)], b = reference[std::size_t(h1 >> 1)], c = reference[std::size_t(h2 >> 1)];
     ref[f] = reference_triangle(a, b, c, sign);
-    const double area2 = std::abs(ref[f][2].y()) * a;   // twice the area
     const double l[3] = {a, b, c};
-    for(int k = 0; k < 3; ++k) {   // cot of the angle opposite edge k: (sum of the other squares - its square) / (4 area)
-      const double o1 = l[(k + 1) % 3], o2 = l[(k + 2) % 3];
-      const double cot = area2 > 0 ? (o1 * o1 + o2 * o2 - l[k] * l[k]) / (2 * area2) : 1.;
-      weight[f][std::size_t(k)] = 0.5 * (std::min)(1e2, (std::max)(1e-2, cot));   // needles: bounded weights
-    }
+    weight[f] = clamped_cotan_weights(l, std::abs(ref[f][2].y()) * a);
   }
   // The global step's energy: sum over the edges of every triangle of w |x_a - x_b - R (p_a - p_b)|^2.
   // Its Hessian has three blocks: inner vertices (x and y decoupled: the same matrix L for both),
@@ -324,15 +376,6 @@ int relax_polyhedron_charts(const Mesh_arrays<TM>& m, const Polyhedron_cut_view&
   // line search): the first root for each triangle, quadratic in the fraction, and each gap, linear
   auto largest_step = [&](const Eigen::VectorXd& x, const Eigen::VectorXd& d) {
     double alpha = std::numeric_limits<double>::infinity();
-    auto first_root = [&](double c0, double c1, double c2) {   // smallest positive root of c0 + c1 a + c2 a^2, c0 > 0
-      if(std::abs(c2) < 1e-300) return c1 < 0 ? -c0 / c1 : std::numeric_limits<double>::infinity();
-      const double disc = c1 * c1 - 4 * c2 * c0;
-      if(disc < 0) return std::numeric_limits<double>::infinity();
-      const double q = -0.5 * (c1 + (c1 >= 0 ? 1 : -1) * std::sqrt(disc));
-      double best = std::numeric_limits<double>::infinity();
-      for(double r : {q / c2, q != 0 ? c0 / q : std::numeric_limits<double>::infinity()}) if(r > 0) best = (std::min)(best, r);
-      return best;
-    };
     for(std::size_t f = 0; f < nf; ++f) {
       Point_2 p[3], v[3];
       for(int k = 0; k < 3; ++k) {
@@ -342,10 +385,7 @@ int relax_polyhedron_charts(const Mesh_arrays<TM>& m, const Polyhedron_cut_view&
         for(int i = 0; i < s.count; ++i) { dx += s.dir[i][0] * d[s.col[i]]; dy += s.dir[i][1] * d[s.col[i]]; }
         v[k] = Point_2(dx, dy);
       }
-      const double ax = p[1].x() - p[0].x(), ay = p[1].y() - p[0].y(), bx = p[2].x() - p[0].x(), by = p[2].y() - p[0].y();
-      const double dax = v[1].x() - v[0].x(), day = v[1].y() - v[0].y(), dbx = v[2].x() - v[0].x(), dby = v[2].y() - v[0].y();
-      const double c0 = sign * (ax * by - bx * ay), c1 = sign * (ax * dby + dax * by - bx * day - dbx * ay), c2 = sign * (dax * dby - dbx * day);
-      alpha = (std::min)(alpha, first_root(0.5 * c0, c1, c2));   // area at least halved: far from folding
+      alpha = (std::min)(alpha, half_area_step(p, v, sign));   // area at least halved: far from folding
     }
     for(std::size_t k = 0; k < cut.paths->size(); ++k) {
       const std::vector<int>& p = (*cut.paths)[k];
@@ -366,16 +406,8 @@ int relax_polyhedron_charts(const Mesh_arrays<TM>& m, const Polyhedron_cut_view&
     for(std::size_t f = 0; f < nf; ++f) {
       // local step: the rotation closest to the map from the reference triangle to the chart's
       const Point_2 x[3] = {position(z, f, 0), position(z, f, 1), position(z, f, 2)};
-      double A[2][2] = {{0, 0}, {0, 0}};   // sum of w (x_a - x_b)(p_a - p_b)^T
-      for(int k = 0; k < 3; ++k) {
-        const int k1 = (k + 1) % 3;
-        const double ex[2] = {x[k].x() - x[k1].x(), x[k].y() - x[k1].y()};
-        const double ep[2] = {ref[f][std::size_t(k)].x() - ref[f][std::size_t(k1)].x(), ref[f][std::size_t(k)].y() - ref[f][std::size_t(k1)].y()};
-        for(int r = 0; r < 2; ++r) for(int q = 0; q < 2; ++q) A[r][q] += weight[f][std::size_t(k)] * ex[r] * ep[q];
-      }
-      // the rotation's angle is arg(A00 + A11 + i (A10 - A01)): normalised, without trigonometry
-      const double ra = A[0][0] + A[1][1], rb = A[1][0] - A[0][1], rn = std::sqrt(ra * ra + rb * rb);
-      const double c = rn > 0 ? ra / rn : 1., s = rn > 0 ? rb / rn : 0.;
+      const std::array<double, 2> rot = closest_rotation(x, ref[f], weight[f]);
+      const double c = rot[0], s = rot[1];
       // global step's right-hand side: w J^T (R (p_a - p_b) - (base_a - base_b))
       for(int k = 0; k < 3; ++k) {
         const int k1 = (k + 1) % 3;
