@@ -75,6 +75,7 @@ struct Chart_inputs
 {
   std::vector<double> reference;
   int iterations = 0;
+  int seam_rings = 8;   // relax_across_polyhedron_edges(): the bands' width in edges (0: none)
   double area = 0;
   std::vector<double> path_metric;
 };
@@ -292,8 +293,7 @@ Polycube_metric_status polyhedron_metric_core(const Mesh_arrays<TM>& m, const st
     st.relaxation_steps = relax_polyhedron_charts(m, cut, *reference, iterations, negative ? -1. : 1., chart, why);
     if(!why.empty()) { st.message = why; return st; }
     if(!charts) {   // polyhedron_remesh() reads the charts face by face of P: only for the lengths
-      // 8 rings: on Spot at 100k faces, quads with a negative scaled Jacobian 145 -> 5 (4 rings: 14, 16: 12)
-      st.seam_relaxed_vertices = relax_across_polyhedron_edges(m, cut, *reference, 8, iterations, negative ? -1. : 1., chart);
+      st.seam_relaxed_vertices = relax_across_polyhedron_edges(m, cut, *reference, in.seam_rings, iterations, negative ? -1. : 1., chart);
     }
   }
   lengths.assign(ne, 0.);
@@ -354,6 +354,9 @@ Chart_inputs chart_inputs(const TM& tm, const Mesh_arrays<TM>& m, const NP& np)
   Chart_inputs in;
   in.iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 10);
   if(in.iterations < 0) throw Input_error(Input_error::INVALID_ARGUMENT, "number_of_iterations must not be negative, got " + std::to_string(in.iterations));
+  in.seam_rings = choose_parameter(get_parameter(np, internal_np::seam_relaxation_rings), 8);
+  if(in.seam_rings < 0 || in.seam_rings > 1000)
+    throw Input_error(Input_error::INVALID_ARGUMENT, "seam_relaxation_rings must be between 0 and 1000, got " + std::to_string(in.seam_rings));
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
   std::vector<double>& reference = in.reference;
   reference.assign(m.number_of_edges(), 0.);
@@ -427,7 +430,10 @@ const Intrinsic_mesh<TM> genus_zero_mesh(const TM& tm, const NP& np, const char*
 /// `number_of_iterations` (default 10: at most that many reweighting rounds and as many
 /// relaxation steps; 0 keeps the plain Tutte embedding, the path lengths and the arc lengths then
 /// in the metric of `edge_length_map`, the box's sides unscaled); `vertex_point_map` (the input
-/// surface the relaxation measures against); and the index maps.
+/// surface the relaxation measures against); `seam_relaxation_rings` (default 8: the width, in
+/// edges, of the bands beside the paths relaxed across the box's edges; 0 leaves the paths
+/// straight; on Spot at 100k faces and as many quads, 8 rings give 5 quads with a negative scaled
+/// Jacobian, 4 rings 14, 16 rings 12, none 145); and the index maps.
 /// Failures (a path that cannot avoid the earlier ones, pieces that do not match the box's
 /// faces, a degenerate triangle) are in the status; `Input_error` for a mesh that is not a
 /// closed genus-0 surface or corners that are not eight distinct vertices.

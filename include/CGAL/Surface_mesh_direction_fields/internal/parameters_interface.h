@@ -25,3 +25,4 @@ CGAL_SMDF_add_named_parameter(intrinsic_edge_flips_t, intrinsic_edge_flips, intr
 CGAL_SMDF_add_named_parameter(intrinsic_mesh_t, intrinsic_mesh, intrinsic_mesh)
 CGAL_SMDF_add_named_parameter(matching_t, matching, matching)
 CGAL_SMDF_add_named_parameter(smoothest_generator_turning_numbers_t, smoothest_generator_turning_numbers, smoothest_generator_turning_numbers)
+CGAL_SMDF_add_named_parameter(seam_relaxation_rings_t, seam_relaxation_rings, seam_relaxation_rings)
