@@ -569,7 +569,7 @@ Command remesh_command()
            {"view", "A,E[,UP]", "view of --svg: azimuth,elevation in degrees, up axis x|y|z"},
            {"width", "PX", "width of the --svg picture in pixels (default 800)"},
            {"knot-svg", "FILE", "write a woven Celtic knot along the quad remesh's medial graph (Lai et al. Fig. 13)"},
-           {"relaxation", "K", "with --polycube: at most K rounds of stretch-minimising reweighting and K steps of as-rigid-as-possible relaxation of the polyhedron's charts (default 10; 0: the plain Tutte embedding)"},
+           {"relaxation", "K", "with --polycube: at most K rounds of stretch-minimising reweighting and K steps of as-rigid-as-possible relaxation of the polyhedron's charts, then 3K sweeps across its edges near the paths (default 10; 0: the plain Tutte embedding)"},
            {"progress", "", "report each stage on stderr with the elapsed time"}},
           "regular quad or triangle remesh from a flat cone metric",
           "Lai et al. 2010, section 5: develops a flat cone metric of the mesh (its own edge lengths,\n"
@@ -584,8 +584,8 @@ Command remesh_command()
           "Output vertices lie on the input triangles (barycentric placement); every interior\n"
           "vertex has valence 4 (6) except at a cone of curvature K: 4 - K/(pi/2) (6 - K/(pi/3)).\n"
           "Prints {grid, metric: {source, flat_cone_metric_converged, flat_cone_metric_edge_flips, corners,\n"
-          "dimensions or side_length, max_path_stretch, relaxation_steps}, edge_length,\n"
-          "cut_edges, cones, grid_spacing_of_metric, failing_cut_edges (first 20),\n"
+          "dimensions or side_length, max_path_stretch, relaxation_steps, seam_relaxed_vertices},\n"
+          "edge_length, cut_edges, cones, grid_spacing_of_metric, failing_cut_edges (first 20),\n"
           "failing_cut_edge_count, vertices, faces_by_size, valences (interior vertices),\n"
           "irregular_vertices: [{vertex, cone, valence}], inverted_faces, quality:\n"
           "{min_corner_angle_deg, max_corner_angle_deg, min_scaled_jacobian, mean_scaled_jacobian},\n"
