@@ -512,6 +512,26 @@ void obelisk(const std::string& dir)
   }
 }
 
+// The flat cone metric with cones of pi/2 at the eight diagonal corners seen from the origin,
+// edge flips allowed: the corners, the flow's status and its conformal factors (map "v:u").
+struct Box_cone_metric
+{
+  std::array<Surface_mesh::Vertex_index, 8> corners;
+  SMDF::Cone_metric_status status;
+  Surface_mesh::Property_map<Surface_mesh::Vertex_index, double> u;
+};
+Box_cone_metric box_cone_metric(Surface_mesh& mesh)
+{
+  Box_cone_metric b;
+  b.corners = diagonal_corners(mesh, K::Vector_3(0, 0, 0));
+  auto targets = mesh.add_property_map<Surface_mesh::Vertex_index, double>("v:target", 0.).first;
+  for(auto v : b.corners) targets[v] = M_PI / 2;
+  auto flat = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:flat", 0).first;
+  b.u = mesh.add_property_map<Surface_mesh::Vertex_index, double>("v:u", 0.).first;
+  b.status = SMDF::compute_cone_metric(mesh, targets, flat, SMDF::parameters::conformal_factor_map(b.u));
+  return b;
+}
+
 // The relaxation across the box's edges (named parameter seam_relaxation_rings), at the grid
 // where it matters: Spot Loop-subdivided once (23k faces), about as many quads as faces. With and
 // without it the metric is the box's (eight cones, flat elsewhere); with it the remesh reads back
@@ -522,12 +542,10 @@ void seam_relaxation(const std::string& dir)
   Surface_mesh mesh;
   SMDF::read_triangle_mesh(dir + "/meshes/spot_c3d.obj", mesh);
   CGAL::Subdivision_method_3::Loop_subdivision(mesh, CGAL::parameters::number_of_iterations(1));
-  const std::array<Surface_mesh::Vertex_index, 8> corners = diagonal_corners(mesh, K::Vector_3(0, 0, 0));
-  auto targets = mesh.add_property_map<Surface_mesh::Vertex_index, double>("v:target", 0.).first;
-  for(auto v : corners) targets[v] = M_PI / 2;
-  auto flat = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:flat", 0).first;
-  auto u = mesh.add_property_map<Surface_mesh::Vertex_index, double>("v:u", 0.).first;
-  const auto cm = SMDF::compute_cone_metric(mesh, targets, flat, SMDF::parameters::conformal_factor_map(u));
+  const Box_cone_metric box = box_cone_metric(mesh);
+  const auto& corners = box.corners;
+  const auto& cm = box.status;
+  const auto u = box.u;
   SMDF_CHECK_MSG(cm.converged, "spot subdivided, 8 cones: flat cone metric " << cm.message);
   const double h = std::sqrt(surface_area(mesh) / double(num_faces(mesh)));
   std::map<int, std::size_t> poor;
@@ -587,12 +605,10 @@ void flipped_flat_metric(const std::string& dir)
 {
   Surface_mesh mesh;
   SMDF::read_triangle_mesh(dir + "/meshes/cheburashka_igltut.off", mesh);
-  const std::array<Surface_mesh::Vertex_index, 8> corners = diagonal_corners(mesh, K::Vector_3(0, 0, 0));
-  auto targets = mesh.add_property_map<Surface_mesh::Vertex_index, double>("v:target", 0.).first;
-  for(auto v : corners) targets[v] = M_PI / 2;
-  auto flat = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:flat", 0).first;
-  auto u = mesh.add_property_map<Surface_mesh::Vertex_index, double>("v:u", 0.).first;
-  const auto cm = SMDF::compute_cone_metric(mesh, targets, flat, SMDF::parameters::conformal_factor_map(u));
+  const Box_cone_metric box = box_cone_metric(mesh);
+  const auto& corners = box.corners;
+  const auto& cm = box.status;
+  const auto u = box.u;
   SMDF_CHECK_MSG(cm.converged && cm.triangulation_changed, "cheburashka, 8 cones: the flow converges after " << cm.edge_flips << " flips");
   double extent = 0;
   for(auto v : vertices(mesh)) extent = std::max(extent, std::sqrt((mesh.point(v) - CGAL::ORIGIN).squared_length()));

@@ -69,6 +69,12 @@ inline std::array<double, 2> closest_rotation(const Point_2 x[3], const std::arr
   return rn > 0 ? std::array<double, 2>{{ra / rn, rb / rn}} : std::array<double, 2>{{1., 0.}};
 }
 
+// Twice the area of triangle p, signed by `sign`.
+inline double signed_doubled_area(const Point_2 p[3], double sign)
+{
+  return sign * ((p[1].x() - p[0].x()) * (p[2].y() - p[0].y()) - (p[2].x() - p[0].x()) * (p[1].y() - p[0].y()));
+}
+
 // The largest fraction a of the move of triangle p by v that keeps its doubled area, signed by
 // `sign`, above `floor` (which it is above at a = 0): the first positive root of a quadratic in
 // a (infinity when the area never gets that low).
@@ -76,7 +82,7 @@ inline double area_floor_step(const Point_2 p[3], const Point_2 v[3], double sig
 {
   const double ax = p[1].x() - p[0].x(), ay = p[1].y() - p[0].y(), bx = p[2].x() - p[0].x(), by = p[2].y() - p[0].y();
   const double dax = v[1].x() - v[0].x(), day = v[1].y() - v[0].y(), dbx = v[2].x() - v[0].x(), dby = v[2].y() - v[0].y();
-  const double c0 = sign * (ax * by - bx * ay) - floor, c1 = sign * (ax * dby + dax * by - bx * day - dbx * ay), c2 = sign * (dax * dby - dbx * day);
+  const double c0 = signed_doubled_area(p, sign) - floor, c1 = sign * (ax * dby + dax * by - bx * day - dbx * ay), c2 = sign * (dax * dby - dbx * day);
   const double inf = std::numeric_limits<double>::infinity();
   if(!(c0 > 0)) return 0;
   if(std::abs(c2) < 1e-300) return c1 < 0 ? -c0 / c1 : inf;
@@ -92,8 +98,7 @@ inline double area_floor_step(const Point_2 p[3], const Point_2 v[3], double sig
 // and Schaefer 2015's line search).
 inline double half_area_step(const Point_2 p[3], const Point_2 v[3], double sign)
 {
-  const double area2 = sign * ((p[1].x() - p[0].x()) * (p[2].y() - p[0].y()) - (p[2].x() - p[0].x()) * (p[1].y() - p[0].y()));
-  return area_floor_step(p, v, sign, 0.5 * area2);
+  return area_floor_step(p, v, sign, 0.5 * signed_doubled_area(p, sign));
 }
 
 // The Tutte embedding of one piece of the cut (`piece`: its mesh faces; `unknowns`: its inner

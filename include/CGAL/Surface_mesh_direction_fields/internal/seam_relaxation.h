@@ -18,8 +18,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
-#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -28,9 +26,9 @@ namespace internal {
 
 // Relaxes, for every P edge, the mesh vertices within `rings` edges of its path (not nearer to
 // another path, and with all their faces in the two faces of P beside the path) as-rigidly-as-
-// possible towards `reference`'s triangles, for 3 `iterations` sweeps, in
-// the plane where the second face of P is unfolded onto the first across their edge. Each step
-// keeps every triangle at least half its area on the side of `sign` (as relax_polyhedron_charts()).
+// possible towards `reference`'s triangles, in 3 x `iterations` sweeps, in the plane where the
+// second face of P is unfolded onto the first across their edge. Every triangle stays on the
+// side of `sign` (as in relax_polyhedron_charts()).
 // Rewrites `chart` of every face at a moved vertex in the frame of the first face: the lengths
 // it gives are P's metric; the faces' frames are no longer their own face of P. Returns the
 // number of vertices relaxed.
@@ -40,7 +38,6 @@ std::size_t relax_across_polyhedron_edges(const Mesh_arrays<TM>& m, const Polyhe
 {
   const std::size_t nv = m.number_of_vertices(), nf = m.number_of_faces();
   const std::vector<int>& corner_of = *cut.corner_of;
-  const std::vector<int>& path_of = *cut.path_of_vertex;
   const std::vector<int>& pface = *cut.pface;
   const std::vector<std::array<int, 2>>& pedges = *cut.pedges;
   const std::size_t np = pedges.size();
@@ -178,14 +175,11 @@ std::size_t relax_across_polyhedron_edges(const Mesh_arrays<TM>& m, const Polyhe
     const int c = col[i][std::size_t(k)];
     return c >= 0 ? Point_2(x[c], y[c]) : chart[std::size_t(faces[i])][std::size_t(k)];
   };
-  auto doubled_area = [&](const Point_2 p[3]) {
-    return sign * ((p[1].x() - p[0].x()) * (p[2].y() - p[0].y()) - (p[2].x() - p[0].x()) * (p[1].y() - p[0].y()));
-  };
   std::vector<double> floor(faces.size());
   std::vector<std::vector<int>> band_faces(np), band_columns(np);   // the bands are independent problems
   for(std::size_t i = 0; i < faces.size(); ++i) {
     const Point_2 p[3] = {at(i, 0), at(i, 1), at(i, 2)};
-    floor[i] = (std::min)(0.5 * doubled_area(p), 0.1 * std::abs(ref[i][1].x() * ref[i][2].y()));
+    floor[i] = (std::min)(0.5 * signed_doubled_area(p, sign), 0.1 * std::abs(ref[i][1].x() * ref[i][2].y()));
     band_faces[std::size_t(face_band[std::size_t(faces[i])])].push_back(int(i));
   }
   for(int c = 0; c < n; ++c) band_columns[std::size_t(band[std::size_t(unknown[std::size_t(c)])])].push_back(c);
@@ -219,7 +213,7 @@ std::size_t relax_across_polyhedron_edges(const Mesh_arrays<TM>& m, const Polyhe
           const Point_2 p[3] = {at(i, 0), at(i, 1), at(i, 2)};
           Point_2 v[3] = {Point_2(0, 0), Point_2(0, 0), Point_2(0, 0)};
           v[k] = Point_2(dx, dy);
-          alpha = (std::min)(alpha, area_floor_step(p, v, sign, (std::max)(0.5 * doubled_area(p), floor[i])));
+          alpha = (std::min)(alpha, area_floor_step(p, v, sign, (std::max)(0.5 * signed_doubled_area(p, sign), floor[i])));
         }
         x[c] += alpha * dx;
         y[c] += alpha * dy;
