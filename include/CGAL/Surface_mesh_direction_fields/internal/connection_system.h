@@ -16,6 +16,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/topology.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/tree_cotree.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/two_domain_cholesky.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/two_domain_ordering.h>
 
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
