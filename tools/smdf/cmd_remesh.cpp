@@ -569,7 +569,7 @@ Command remesh_command()
            {"view", "A,E[,UP]", "view of --svg: azimuth,elevation in degrees, up axis x|y|z"},
            {"width", "PX", "width of the --svg picture in pixels (default 800)"},
            {"knot-svg", "FILE", "write a woven Celtic knot along the quad remesh's medial graph (Lai et al. Fig. 13)"},
-           {"relaxation", "K", "with --polycube: at most K rounds of stretch-minimising reweighting and K steps of as-rigid-as-possible relaxation of the polyhedron's charts, then 3K sweeps across its edges near the paths (default 10; 0: the plain Tutte embedding)"},
+           {"relaxation", "K", "with --polycube: one round of stretch-minimising reweighting, then at most K steps of as-rigid-as-possible relaxation of the polyhedron's charts and 3K sweeps across its edges near the paths (default 10; 0: the plain Tutte embedding)"},
            {"progress", "", "report each stage on stderr with the elapsed time"}},
           "regular quad or triangle remesh from a flat cone metric",
           "Lai et al. 2010, section 5: develops a flat cone metric of the mesh (its own edge lengths,\n"

@@ -24,7 +24,6 @@
 #include <string>
 #include <tuple>
 #include <unordered_map>
-#include <unordered_set>
 #include <vector>
 
 namespace CGAL {
@@ -364,76 +363,120 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
     }
     return false;
   };
-  typedef std::array<std::size_t, 4> Face_key;   // corners from the smallest, unused ones -1
-  struct Face_key_hash {
-    std::size_t operator()(const Face_key& k) const
-    {
-      std::size_t x = 0;
-      for(std::size_t c : k) x = internal::hash_mix(x, std::hash<std::size_t>()(c));
-      return x;
-    }
+  // The grid's edges first: from every grid point that is not a cone, one walk of one edge
+  // length in each of the grid's directions (in the frame of the point's seat) to the point
+  // where it ends. A face is then read off these edges with the rotation system of the grid:
+  // having arrived at point j from i, the face's next edge leaves j in the direction before the
+  // one that leads back to i (directions counterclockwise). So each face costs no walk of its
+  // own, and each edge is walked twice (once from each end) instead of twice per face corner.
+  // Faces at a cone (whose directions are not the grid's) or where the edges are ambiguous are
+  // walked edge after edge from their start, across the frames met on the way.
+  const int dirs = square ? 4 : 6;
+  const std::size_t none = std::size_t(-1), off = std::size_t(-2);   // across the boundary; ends off the grid points
+  auto is_cone = [&](std::size_t i) { return points[i].kind == 2 && dev.cone_index_[std::size_t(points[i].id)] >= 0; };
+  const std::vector<internal::Lattice_motion>::size_type direction_count = std::size_t(dirs);
+  std::vector<internal::Lattice_motion> rotation_of(direction_count);   // the step rotation to the power dir
+  for(int dir = 1; dir < dirs; ++dir) rotation_of[std::size_t(dir)] = step_rotation * rotation_of[std::size_t(dir - 1)];
+  // the grid point reached from point i's seat by the segment from `at` to `to` in face f's frame
+  auto reach = [&](int f, const Point_2& at, const Point_2& to, internal::Lattice_motion& carried, int& where, Point_2& target) -> std::size_t {
+    internal::Lattice_motion c = carried;
+    if(!walk(f, at, to, c, where)) return none;
+    target = (c * carried.inverse())(to);
+    carried = c;
+    const Where w = classify(where, target);
+    const auto it = w.kind < 0 ? id_of.end() : id_of.find(key_of(w));
+    return it == id_of.end() ? off : it->second;
   };
-  std::unordered_set<Face_key, Face_key_hash> face_set;   // hashed: every face is met from each of its corners
-  face_set.reserve(points.size() * (square ? 1 : 2));
-  // The walks from each grid point read shared data only: the points are split in two halves
-  // walked on two threads (each face met from each of its corners), then merged in point order.
-  typedef std::array<std::size_t, 5> Found;   // the corners (unused ones -1), then their count
-  std::vector<Found> found[2];
+  std::vector<std::size_t> neighbour(points.size() * std::size_t(dirs), none);   // per point and direction: the point at the edge's other end
   bool off_grid[2] = {false, false};
-  auto walk_faces = [&](std::size_t begin, std::size_t end, int part) {
+  auto walk_edges = [&](std::size_t begin, std::size_t end, int part) {
     for(std::size_t i = begin; i < end && !off_grid[part]; ++i) {
-      if(points[i].kind == 2 && dev.cone_index_[std::size_t(points[i].id)] >= 0) continue;
-      for(int dir = 0; dir < (square ? 4 : 6); ++dir) {
-        internal::Lattice_motion r;
-        for(int k = 0; k < dir; ++k) r = step_rotation * r;
-        Found corners;
-        corners.fill(std::size_t(-1));
-        corners[0] = i;
-        corners[4] = 1;
-        int f = seat[i].first;
-        Point_2 at = seat[i].second;
-        internal::Lattice_motion carried;   // from the start frame to the current one
-        bool ok = true;
-        for(int k = 1; k < sides && ok; ++k) {   // along d, then d rotated by the grid's angle at each corner
-          // square: d, then +rot90(d), then -d; triangle: d, then rot120(d)
-          std::array<double, 2> d = r.rotate(1, 0);
-          if(square) { for(int j = 1; j < k; ++j) d = step_rotation.rotate(d[0], d[1]); }
-          else if(k == 2) { d = step_rotation.rotate(d[0], d[1]); d = step_rotation.rotate(d[0], d[1]); }
-          const std::array<double, 2> dc = carried.rotate(d[0], d[1]);
-          const Point_2 to(at.x() + dc[0], at.y() + dc[1]);
-          int where = -1;
-          internal::Lattice_motion c = carried;
-          if(!walk(f, at, to, c, where)) { ok = false; break; }
-          const Point_2 target = (c * carried.inverse())(to);
-          carried = c;
-          const Where w = classify(where, target);
-          const auto it = w.kind < 0 ? id_of.end() : id_of.find(key_of(w));
-          if(it == id_of.end()) { off_grid[part] = true; break; }
-          corners[std::size_t(corners[4]++)] = it->second;
-          f = where;
-          at = target;
-        }
-        if(ok && !off_grid[part]) found[part].push_back(corners);   // (a walk across the boundary: no face there)
+      if(is_cone(i)) continue;
+      for(int dir = 0; dir < dirs; ++dir) {
+        const std::array<double, 2> d = rotation_of[std::size_t(dir)].rotate(1, 0);
+        const Point_2 at = seat[i].second, to(at.x() + d[0], at.y() + d[1]);
+        internal::Lattice_motion carried;
+        int where = -1;
+        Point_2 target;
+        const std::size_t j = reach(seat[i].first, at, to, carried, where, target);
+        if(j == off) { off_grid[part] = true; break; }
+        neighbour[i * std::size_t(dirs) + std::size_t(dir)] = j;
       }
     }
   };
   const std::size_t half = points.size() / 2;
-  internal::run_on_two_threads([&](int part) { walk_faces(part == 0 ? 0 : half, part == 0 ? half : points.size(), part); },
-                               points.size() >= 20000);
+  const bool concurrent = points.size() >= 20000;
+  internal::run_on_two_threads([&](int part) { walk_edges(part == 0 ? 0 : half, part == 0 ? half : points.size(), part); }, concurrent);
+  // the face at point i left of its edge in direction dir, walked edge after edge
+  typedef std::array<std::size_t, 5> Found;   // the corners (unused ones -1), then their count
+  auto walk_face = [&](std::size_t i, int dir, Found& corners) -> std::size_t {   // none, off, or the corner count
+    int f = seat[i].first;
+    Point_2 at = seat[i].second;
+    internal::Lattice_motion carried;   // from the start frame to the current one
+    for(int k = 1; k < sides; ++k) {   // along d, then d rotated by the grid's angle at each corner
+      // square: d, then +rot90(d), then -d; triangle: d, then rot120(d)
+      std::array<double, 2> d = rotation_of[std::size_t(dir)].rotate(1, 0);
+      if(square) { for(int j = 1; j < k; ++j) d = step_rotation.rotate(d[0], d[1]); }
+      else if(k == 2) { d = step_rotation.rotate(d[0], d[1]); d = step_rotation.rotate(d[0], d[1]); }
+      const std::array<double, 2> dc = carried.rotate(d[0], d[1]);
+      const Point_2 to(at.x() + dc[0], at.y() + dc[1]);
+      int where = -1;
+      Point_2 target;
+      const std::size_t j = reach(f, at, to, carried, where, target);
+      if(j == none || j == off) return j;
+      corners[std::size_t(k)] = j;
+      f = where;
+      at = target;
+    }
+    return std::size_t(sides);
+  };
+  // the same face read off the edges: none when it crosses the boundary, off when it must be walked
+  auto read_face = [&](std::size_t i, int dir, Found& corners) -> std::size_t {
+    std::size_t from = i, at = neighbour[i * std::size_t(dirs) + std::size_t(dir)];
+    for(int k = 1; k < sides; ++k) {
+      if(at == none) return none;
+      corners[std::size_t(k)] = at;
+      if(k + 1 == sides) break;
+      if(is_cone(at)) return off;
+      int back = -1;
+      for(int b = 0; b < dirs; ++b)
+        if(neighbour[at * std::size_t(dirs) + std::size_t(b)] == from) { if(back >= 0) return off; back = b; }
+      if(back < 0) return off;
+      from = at;
+      at = neighbour[from * std::size_t(dirs) + std::size_t((back + dirs - 1) % dirs)];
+    }
+    return std::size_t(sides);
+  };
+  // Each face is kept by the first of its corners (in point order) that is not a cone: from that
+  // corner only, so no face is kept twice. Two threads, each over half of the points.
+  std::vector<Found> found[2];
+  auto find_faces = [&](std::size_t begin, std::size_t end, int part) {
+    for(std::size_t i = begin; i < end && !off_grid[part]; ++i) {
+      if(is_cone(i)) continue;
+      for(int dir = 0; dir < dirs; ++dir) {
+        Found corners;
+        corners.fill(none);
+        corners[0] = i;
+        std::size_t count = read_face(i, dir, corners);
+        if(count == off) count = walk_face(i, dir, corners);
+        if(count == off) { off_grid[part] = true; break; }
+        if(count == none) continue;   // a face across the boundary: none there
+        bool first = true;
+        for(std::size_t k = 1; k < count; ++k) if(corners[k] < i && !is_cone(corners[k])) first = false;
+        corners[4] = count;
+        if(first) found[part].push_back(corners);
+      }
+    }
+  };
+  if(!off_grid[0] && !off_grid[1])
+    internal::run_on_two_threads([&](int part) { find_faces(part == 0 ? 0 : half, part == 0 ? half : points.size(), part); }, concurrent);
   if(off_grid[0] || off_grid[1]) {
     st.message = "a grid edge ends off the grid points (inconsistent development)";
     return st;
   }
   std::vector<std::vector<std::size_t>> out_faces;
   for(const std::vector<Found>& part : found)
-    for(const Found& corners : part) {
-      const std::size_t count = corners[4];
-      Face_key key;   // one face, whichever corner it was found from
-      key.fill(std::size_t(-1));
-      const std::size_t first = std::size_t(std::min_element(corners.begin(), corners.begin() + count) - corners.begin());
-      for(std::size_t k = 0; k < count; ++k) key[k] = corners[(first + k) % count];
-      if(face_set.insert(key).second) out_faces.emplace_back(corners.begin(), corners.begin() + count);
-    }
+    for(const Found& corners : part) out_faces.emplace_back(corners.begin(), corners.begin() + std::ptrdiff_t(corners[4]));
 
   // 5. the output mesh
   typedef typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;

@@ -17,6 +17,7 @@
 #include <CGAL/Surface_mesh_direction_fields/Cholmod_cholesky.h>
 #include <CGAL/Surface_mesh_direction_fields/intrinsic_triangle.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh_arrays.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/two_threads.h>
 
 #include <Eigen/SparseCore>
 
@@ -318,34 +319,43 @@ int relax_polyhedron_charts(const Mesh_arrays<TM>& m, const Polyhedron_cut_view&
     if(path_of[v] >= 0) { in_path[std::size_t(column[v])] = 1; block_index[std::size_t(column[v])] = n_path++; }
     else { block_index[std::size_t(column[v])] = n_inner; block_index[std::size_t(column[v] + 1)] = n_inner++; axis[std::size_t(column[v] + 1)] = 1; }
   }
-  std::vector<Eigen::Triplet<double, int>> tl, tb, tc;   // L and B (lower triangles), C (inner columns x path parameters)
-  tl.reserve(nf * 6);
-  for(std::size_t f = 0; f < nf; ++f)
-    for(int k = 0; k < 3; ++k) {
-      const Slot* s[2] = {&slot[f][std::size_t(k)], &slot[f][std::size_t((k + 1) % 3)]};
-      const double w = weight[f][std::size_t(k)];
-      for(int x = 0; x < 2; ++x)
-        for(int i = 0; i < s[x]->count; ++i)
-          for(int y = 0; y < 2; ++y)
-            for(int j = 0; j < s[y]->count; ++j) {
-              const double coef = (x == y ? w : -w) * (s[x]->dir[i][0] * s[y]->dir[j][0] + s[x]->dir[i][1] * s[y]->dir[j][1]);
-              const int r = s[x]->col[i], c = s[y]->col[j];
-              if(coef == 0) continue;
-              const bool pr = in_path[std::size_t(r)], pc = in_path[std::size_t(c)];
-              const int br = block_index[std::size_t(r)], bc = block_index[std::size_t(c)];
-              if(!pr && !pc) { if(i == 0 && j == 0 && br >= bc) tl.emplace_back(br, bc, coef); }   // x with x (y with y: the same)
-              else if(pr && pc) { if(br >= bc) tb.emplace_back(br, bc, coef); }
-              else if(!pr) tc.emplace_back(r, bc, coef);
-            }
-    }
-  Cholmod_cholesky::Matrix L(n_inner, n_inner), B(n_path, n_path);
-  L.setFromTriplets(tl.begin(), tl.end());
-  B.setFromTriplets(tb.begin(), tb.end());
-  Eigen::SparseMatrix<double> C(n, n_path);   // rows: all columns (path rows stay empty)
-  C.setFromTriplets(tc.begin(), tc.end());
-  std::vector<Eigen::Triplet<double, int>>().swap(tl);
-  std::vector<Eigen::Triplet<double, int>>().swap(tb);
-  std::vector<Eigen::Triplet<double, int>>().swap(tc);
+  // Assembled on two threads, each from half of the faces into its own matrices, then summed.
+  const bool concurrent = nf >= 20000;
+  const std::size_t half = nf / 2;
+  Cholmod_cholesky::Matrix L_part[2], B_part[2];
+  Eigen::SparseMatrix<double> C_part[2];
+  run_on_two_threads([&](int part) {
+    std::vector<Eigen::Triplet<double, int>> tl, tb, tc;   // L and B (lower triangles), C (inner columns x path parameters)
+    const std::size_t f0 = part == 0 ? 0 : half, f1 = part == 0 ? half : nf;
+    tl.reserve((f1 - f0) * 6);
+    for(std::size_t f = f0; f < f1; ++f)
+      for(int k = 0; k < 3; ++k) {
+        const Slot* s[2] = {&slot[f][std::size_t(k)], &slot[f][std::size_t((k + 1) % 3)]};
+        const double w = weight[f][std::size_t(k)];
+        for(int x = 0; x < 2; ++x)
+          for(int i = 0; i < s[x]->count; ++i)
+            for(int y = 0; y < 2; ++y)
+              for(int j = 0; j < s[y]->count; ++j) {
+                const double coef = (x == y ? w : -w) * (s[x]->dir[i][0] * s[y]->dir[j][0] + s[x]->dir[i][1] * s[y]->dir[j][1]);
+                const int r = s[x]->col[i], c = s[y]->col[j];
+                if(coef == 0) continue;
+                const bool pr = in_path[std::size_t(r)], pc = in_path[std::size_t(c)];
+                const int br = block_index[std::size_t(r)], bc = block_index[std::size_t(c)];
+                if(!pr && !pc) { if(i == 0 && j == 0 && br >= bc) tl.emplace_back(br, bc, coef); }   // x with x (y with y: the same)
+                else if(pr && pc) { if(br >= bc) tb.emplace_back(br, bc, coef); }
+                else if(!pr) tc.emplace_back(r, bc, coef);
+              }
+      }
+    L_part[part].resize(n_inner, n_inner);
+    B_part[part].resize(n_path, n_path);
+    C_part[part].resize(n, n_path);   // rows: all columns (path rows stay empty)
+    L_part[part].setFromTriplets(tl.begin(), tl.end());
+    B_part[part].setFromTriplets(tb.begin(), tb.end());
+    C_part[part].setFromTriplets(tc.begin(), tc.end());
+  }, concurrent);
+  const Cholmod_cholesky::Matrix L = L_part[0] + L_part[1], B = B_part[0] + B_part[1];
+  const Eigen::SparseMatrix<double> C = C_part[0] + C_part[1];
+  for(int part = 0; part < 2; ++part) { L_part[part] = Cholmod_cholesky::Matrix(); B_part[part] = Cholmod_cholesky::Matrix(); C_part[part] = Eigen::SparseMatrix<double>(); }
   Cholmod_cholesky inner_solver, path_solver;
   if((n_inner > 0 && !inner_solver.factor(L, message)) || (n_path > 0 && !path_solver.factor(B, message))) {
     message = "the relaxation's system could not be factored: " + message;
@@ -380,8 +390,10 @@ int relax_polyhedron_charts(const Mesh_arrays<TM>& m, const Polyhedron_cut_view&
   // area (signed as at the start) and of every gap along a path (after Smith and Schaefer 2015's
   // line search): the first root for each triangle, quadratic in the fraction, and each gap, linear
   auto largest_step = [&](const Eigen::VectorXd& x, const Eigen::VectorXd& d) {
-    double alpha = std::numeric_limits<double>::infinity();
-    for(std::size_t f = 0; f < nf; ++f) {
+    double part_alpha[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+    run_on_two_threads([&](int part) {
+     double& alpha = part_alpha[part];
+     for(std::size_t f = part == 0 ? 0 : half; f < (part == 0 ? half : nf); ++f) {
       Point_2 p[3], v[3];
       for(int k = 0; k < 3; ++k) {
         p[k] = position(x, f, k);
@@ -391,7 +403,9 @@ int relax_polyhedron_charts(const Mesh_arrays<TM>& m, const Polyhedron_cut_view&
         v[k] = Point_2(dx, dy);
       }
       alpha = (std::min)(alpha, half_area_step(p, v, sign));   // area at least halved: far from folding
-    }
+     }
+    }, concurrent);
+    double alpha = (std::min)(part_alpha[0], part_alpha[1]);
     for(std::size_t k = 0; k < cut.paths->size(); ++k) {
       const std::vector<int>& p = (*cut.paths)[k];
       if(p.size() <= 2) continue;
@@ -405,10 +419,12 @@ int relax_polyhedron_charts(const Mesh_arrays<TM>& m, const Polyhedron_cut_view&
     return alpha;
   };
   int steps = 0;
-  Eigen::VectorXd rhs(n);
+  Eigen::VectorXd rhs(n), rhs_part(n);
   for(int it = 0; it < iterations; ++it) {
-    rhs.setZero();
-    for(std::size_t f = 0; f < nf; ++f) {
+    run_on_two_threads([&](int part) {   // the local steps of the two halves of the faces, each into its own right-hand side
+     Eigen::VectorXd& rhs_t = part == 0 ? rhs : rhs_part;
+     rhs_t.setZero();
+     for(std::size_t f = part == 0 ? 0 : half; f < (part == 0 ? half : nf); ++f) {
       // local step: the rotation closest to the map from the reference triangle to the chart's
       const Point_2 x[3] = {position(z, f, 0), position(z, f, 1), position(z, f, 2)};
       const std::array<double, 2> rot = closest_rotation(x, ref[f], weight[f]);
@@ -420,10 +436,12 @@ int relax_polyhedron_charts(const Mesh_arrays<TM>& m, const Polyhedron_cut_view&
         const double ep[2] = {ref[f][std::size_t(k)].x() - ref[f][std::size_t(k1)].x(), ref[f][std::size_t(k)].y() - ref[f][std::size_t(k1)].y()};
         const double goal[2] = {c * ep[0] - s * ep[1] - (sa.base.x() - sb.base.x()), s * ep[0] + c * ep[1] - (sa.base.y() - sb.base.y())};
         const double w = weight[f][std::size_t(k)];
-        for(int i = 0; i < sa.count; ++i) rhs[sa.col[i]] += w * (sa.dir[i][0] * goal[0] + sa.dir[i][1] * goal[1]);
-        for(int i = 0; i < sb.count; ++i) rhs[sb.col[i]] -= w * (sb.dir[i][0] * goal[0] + sb.dir[i][1] * goal[1]);
+        for(int i = 0; i < sa.count; ++i) rhs_t[sa.col[i]] += w * (sa.dir[i][0] * goal[0] + sa.dir[i][1] * goal[1]);
+        for(int i = 0; i < sb.count; ++i) rhs_t[sb.col[i]] -= w * (sb.dir[i][0] * goal[0] + sb.dir[i][1] * goal[1]);
       }
-    }
+     }
+    }, concurrent);
+    rhs += rhs_part;
     const Eigen::VectorXd d = global_step(rhs) - z;
     const double alpha = (std::min)(1., largest_step(z, d));
     if(!(alpha > 1e-6)) break;   // blocked by a triangle about to fold: stay where the charts are bijective
