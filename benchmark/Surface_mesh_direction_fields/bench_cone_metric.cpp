@@ -31,8 +31,9 @@
 //                           (construction and first edit), edit_s (the second edit).
 //                           Targets (issue #12): compensation and edit <= 0.02 s at 20k,
 //                           <= 0.2 s at 400k.
-//   BM_remesh_pipeline/<size> the remeshing pipeline: the metric with the 8 cones (with flips:
-//                           the paths only need its conformal factors), the box polycube metric, development and quad
+//   BM_remesh_pipeline/<size> the remeshing pipeline: the metric with the 8 cones (with flips,
+//                           curvature tolerance 1e-6, as smdf remesh: the paths only need its
+//                           conformal factors), the box polycube metric, development and quad
 //                           tessellation with about as many quads as input faces. Counters
 //                           metric_s, compensation_s, tessellation_s, output_quads, read_back_ok
 //                           (valences and no inverted face). Targets (issue #13): <= 1 s at
@@ -320,7 +321,7 @@ void BM_remesh_pipeline(benchmark::State& state)
       auto box = work.add_property_map<Mesh::Edge_index, double>("e:bench_box", 0.).first;
       for(Vertex v : cones) put(target, v, CGAL_PI / 2);
       auto t0 = std::chrono::steady_clock::now();
-      const SMDF::Cone_metric_status cm = SMDF::compute_cone_metric(work, target, flat, SMDF::parameters::conformal_factor_map(u));
+      const SMDF::Cone_metric_status cm = SMDF::compute_cone_metric(work, target, flat, SMDF::parameters::conformal_factor_map(u).curvature_tolerance(1e-6));
       metric_s += since(t0);
       if(!cm.converged) { ok = false; message = "flat cone metric: " + cm.message; }
       flips = cm.edge_flips;
