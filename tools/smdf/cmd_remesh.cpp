@@ -6,6 +6,7 @@
 
 #include "commands.h"
 #include "common.h"
+#include "remesh_measures.h"
 #include "remesh_pictures.h"
 
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
@@ -16,9 +17,6 @@
 #include <CGAL/Surface_mesh_direction_fields/polycube_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/polyhedron_remeshing.h>
 
-#include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <array>
@@ -29,8 +27,6 @@
 #include <map>
 #include <cmath>
 #include <string>
-#include <exception>
-#include <thread>
 #include <vector>
 
 namespace smdf_cli {
@@ -123,90 +119,6 @@ double metric_area(const Mesh& mesh, const Edge_length_property& l)
     a += std::sqrt((std::max)(0., s * (s - x) * (s - y) * (s - z)));
   }
   return a;
-}
-
-// Corner angles (degrees) and, for quads, scaled Jacobians of the remesh.
-Json quality(const Mesh& out)
-{
-  double amin = 360, amax = 0, jmin = 1, jsum = 0;
-  std::size_t jn = 0;
-  for(face_descriptor f : faces(out)) {
-    std::vector<K::Point_3> p;
-    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, out), out)) p.push_back(out.point(target(h, out)));
-    K::Vector_3 n(0, 0, 0);
-    for(std::size_t i = 0; i < p.size(); ++i) n = n + CGAL::cross_product(p[i] - CGAL::ORIGIN, p[(i + 1) % p.size()] - CGAL::ORIGIN);
-    for(std::size_t i = 0; i < p.size(); ++i) {
-      const K::Vector_3 a = p[(i + 1) % p.size()] - p[i], b = p[(i + p.size() - 1) % p.size()] - p[i];
-      const double la = std::sqrt(a.squared_length()), lb = std::sqrt(b.squared_length());
-      if(!(la > 0) || !(lb > 0)) continue;
-      const double ang = std::atan2(std::sqrt(CGAL::cross_product(a, b).squared_length()), a * b) * 180 / CGAL_PI;
-      amin = (std::min)(amin, ang);
-      amax = (std::max)(amax, ang);
-      if(p.size() == 4) {
-        const double nl = std::sqrt(n.squared_length());
-        const double j = nl > 0 ? (CGAL::cross_product(a, b) * n) / (la * lb * nl) : 0.;
-        jmin = (std::min)(jmin, j);
-        jsum += j;
-        ++jn;
-      }
-    }
-  }
-  Json q = Json::object();
-  q["min_corner_angle_deg"] = amin;
-  q["max_corner_angle_deg"] = amax;
-  if(jn) { q["min_scaled_jacobian"] = jmin; q["mean_scaled_jacobian"] = jsum / double(jn); }
-  return q;
-}
-
-// Two-sided distance between input and remesh, over the edge length: output vertices to the
-// input surface, input vertices to the remesh (its faces fanned into triangles).
-Json distances(const Mesh& input, const Mesh& out, double h)
-{
-  typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
-  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> Tree;
-  Mesh fan;
-  for(vertex_descriptor v : vertices(out)) fan.add_vertex(out.point(v));
-  std::vector<vertex_descriptor> vs;
-  for(face_descriptor f : faces(out)) {
-    vs.clear();
-    for(halfedge_descriptor hh : CGAL::halfedges_around_face(halfedge(f, out), out)) vs.push_back(target(hh, out));
-    for(std::size_t i = 1; i + 1 < vs.size(); ++i) fan.add_face(vs[0], vs[i], vs[i + 1]);
-  }
-  // largest distance from the points of `from` to the surface of `to`
-  auto farthest = [](const Mesh& from, const Mesh& to) {
-    if(num_faces(to) == 0) return 0.;
-    Tree tree(faces(to).first, faces(to).second, to);
-    double d = 0;
-    for(vertex_descriptor v : vertices(from)) d = (std::max)(d, tree.squared_distance(from.point(v)));
-    return std::sqrt(d);
-  };
-  // the two directions on two threads: at 433k faces about 5 s in all, the largest part of a run
-  double d1 = 0, d2 = 0;
-  std::exception_ptr failure;
-  std::thread other([&] { try { d2 = farthest(input, fan); } catch(...) { failure = std::current_exception(); } });
-  try { d1 = farthest(out, input); } catch(...) { other.join(); throw; }
-  other.join();
-  if(failure) std::rethrow_exception(failure);
-  Json d = Json::object();
-  d["remesh_to_input"] = d1 / h;
-  d["input_to_remesh"] = d2 / h;
-  return d;
-}
-
-// Area of the remesh (its faces fanned into triangles) over that of the input.
-double area_ratio(const Mesh& input, const Mesh& out)
-{
-  double a = 0, b = 0;
-  for(face_descriptor f : faces(input)) {
-    const halfedge_descriptor h = halfedge(f, input);
-    a += std::sqrt(CGAL::squared_area(input.point(source(h, input)), input.point(target(h, input)), input.point(target(next(h, input), input))));
-  }
-  for(face_descriptor f : faces(out)) {
-    std::vector<K::Point_3> p;
-    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, out), out)) p.push_back(out.point(target(h, out)));
-    for(std::size_t i = 1; i + 1 < p.size(); ++i) b += std::sqrt(CGAL::squared_area(p[0], p[i], p[i + 1]));
-  }
-  return a > 0 ? b / a : 0;
 }
 
 // The cones of --cones assigned to the corners of a preset polyhedron: corner i takes the cone
@@ -440,9 +352,9 @@ Json run_remesh(const Args& args)
         out["valences"] = std::move(val);
         out["unexpected_valences"] = rs.unexpected_valences;
         out["inverted_faces"] = rs.inverted_faces;
-        out["quality"] = quality(remesh);
-        out["distance_over_edge_length"] = distances(mesh, remesh, side / n);
-        out["area_ratio"] = area_ratio(mesh, remesh);
+        out["quality"] = remesh_quality(remesh);
+        out["distance_over_edge_length"] = remesh_distances(mesh, remesh, side / n);
+        out["area_ratio"] = remesh_area_ratio(mesh, remesh);
         if(!CGAL::IO::write_polygon_mesh(out_file, remesh, CGAL::parameters::stream_precision(17)))
           throw file_error(out_file, "cannot write the remesh (the extension must be .off or .obj)", "output");
         if(args.has("svg")) write_remesh_svg(args, mesh, remesh, 12);
@@ -546,9 +458,9 @@ Json run_remesh(const Args& args)
     }
     out["irregular_vertices"] = std::move(irr);
     out["inverted_faces"] = st.inverted_faces;
-    out["quality"] = quality(remesh);
-    out["distance_over_edge_length"] = distances(mesh, remesh, h);
-    out["area_ratio"] = area_ratio(mesh, remesh);
+    out["quality"] = remesh_quality(remesh);
+    out["distance_over_edge_length"] = remesh_distances(mesh, remesh, h);
+    out["area_ratio"] = remesh_area_ratio(mesh, remesh);
     if(!CGAL::IO::write_polygon_mesh(out_file, remesh, CGAL::parameters::stream_precision(17)))
       throw file_error(out_file, "cannot write the remesh (the extension must be .off or .obj)", "output");
     if(args.has("svg")) write_remesh_svg(args, mesh, remesh, grid == SMDF::SQUARE_GRID ? 4 : 6);

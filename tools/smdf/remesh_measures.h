@@ -1,0 +1,28 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// smdf remesh: what its JSON says of the remesh besides the library's read-back (valences,
+// inverted faces): corner angles and scaled Jacobians, two-sided distances to the input, area.
+
+#ifndef SMDF_CLI_REMESH_MEASURES_H
+#define SMDF_CLI_REMESH_MEASURES_H
+
+#include "common.h"
+
+namespace smdf_cli {
+
+// {min_corner_angle_deg, max_corner_angle_deg} (degrees) and, when the remesh has quads,
+// {min_scaled_jacobian, mean_scaled_jacobian} of their corners.
+Json remesh_quality(const Mesh& out);
+
+// {remesh_to_input, input_to_remesh}: the largest distance from the remesh's vertices to the
+// input surface and from the input's vertices to the remesh (its faces fanned into triangles),
+// over the edge length h.
+Json remesh_distances(const Mesh& input, const Mesh& out, double h);
+
+// Area of the remesh (its faces fanned into triangles) over that of the input.
+double remesh_area_ratio(const Mesh& input, const Mesh& out);
+
+} // namespace smdf_cli
+
+#endif // SMDF_CLI_REMESH_MEASURES_H
