@@ -21,6 +21,7 @@
 #include <CGAL/Surface_mesh_direction_fields/polycube_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/polyhedron_remeshing.h>
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
+#include <CGAL/Surface_mesh_direction_fields/delaunay_refinement.h>
 #include <CGAL/Surface_mesh_direction_fields/IO/read_triangle_mesh.h>
 
 #include <CGAL/boost/graph/IO/OFF.h>
@@ -639,13 +640,154 @@ void flipped_flat_metric(const std::string& dir)
                  "a path around a triangle is shortcut to its third edge");
 }
 
+// conforming_delaunay_refinement(), read back from its output alone: a valid mesh of the same
+// Euler characteristic, boundary and area; the input's vertices first and unmoved; every vertex
+// on the input surface and every face inside the input face it names; every interior edge
+// Delaunay (opposite angles recomputed from the points); the output lengths the points'
+// distances. On Surface_mesh and Polyhedron_3 the same refinement.
+template <typename Input>
+SMDF::Delaunay_refinement_status check_refinement(const Input& input, const Surface_mesh& in_sm, Surface_mesh& out, const std::string& what)
+{
+  auto lengths = out.add_property_map<Surface_mesh::Edge_index, double>("e:refined", -1.).first;
+  const SMDF::Delaunay_refinement_status st =
+      SMDF::conforming_delaunay_refinement(input, out, SMDF::parameters::default_values(), SMDF::parameters::edge_length_map(lengths));
+  SMDF_CHECK_MSG(st.success && st.faces == num_faces(out) && st.face_origin.size() == num_faces(out) &&
+                     st.inserted.size() + num_vertices(in_sm) == num_vertices(out),
+                 what << ": refined (" << st.message << ")");
+  if(!st.success) return st;
+  auto chi = [](const Surface_mesh& m) { return long(num_vertices(m)) - long(num_edges(m)) + long(num_faces(m)); };
+  auto loops = [](const Surface_mesh& m) {
+    std::size_t n = 0;
+    std::vector<char> seen(num_halfedges(m), 0);
+    for(auto h : halfedges(m))
+      if(is_border(h, m) && !seen[std::size_t(h)]) { ++n; for(auto g : CGAL::halfedges_around_face(h, m)) seen[std::size_t(g)] = 1; }
+    return n;
+  };
+  SMDF_CHECK_MSG(CGAL::is_valid_polygon_mesh(out) && CGAL::is_triangle_mesh(out) && chi(out) == chi(in_sm) && loops(out) == loops(in_sm),
+                 what << ": a valid triangle mesh of the input's Euler characteristic " << chi(in_sm) << " and " << loops(in_sm) << " boundary loops");
+  double moved = 0, far = 0, outside = 0, non_delaunay = 0, length_error = 0, scale = 0;
+  for(auto v : vertices(in_sm)) {
+    moved = std::max(moved, std::sqrt(CGAL::squared_distance(in_sm.point(v), out.point(v))));
+    scale = std::max(scale, std::sqrt((in_sm.point(v) - CGAL::ORIGIN).squared_length()));
+  }
+  typedef CGAL::AABB_face_graph_triangle_primitive<Surface_mesh> Primitive;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> Tree;
+  Tree tree(faces(in_sm).first, faces(in_sm).second, in_sm);
+  for(auto v : vertices(out)) far = std::max(far, std::sqrt(tree.squared_distance(out.point(v))));
+  std::size_t i = 0;
+  for(auto f : faces(out)) {
+    const auto g = Surface_mesh::Face_index(Surface_mesh::size_type(st.face_origin[i++]));
+    std::vector<K::Point_3> t;
+    for(auto h : CGAL::halfedges_around_face(halfedge(g, in_sm), in_sm)) t.push_back(in_sm.point(target(h, in_sm)));
+    const K::Triangle_3 tri(t[0], t[1], t[2]);
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, out), out)) outside = std::max(outside, std::sqrt(CGAL::squared_distance(tri, out.point(target(h, out)))));
+  }
+  auto angle = [&](Surface_mesh::Halfedge_index h) {   // opposite h, in its face
+    const K::Point_3 a = out.point(source(h, out)), b = out.point(target(h, out)), c = out.point(target(next(h, out), out));
+    return std::atan2(std::sqrt(CGAL::cross_product(a - c, b - c).squared_length()), (a - c) * (b - c));
+  };
+  for(auto e : edges(out)) {
+    const auto h = halfedge(e, out);
+    const double d = std::sqrt(CGAL::squared_distance(out.point(source(h, out)), out.point(target(h, out))));
+    length_error = std::max(length_error, std::abs(lengths[e] - d));
+    if(!is_border(e, out)) non_delaunay = std::max(non_delaunay, angle(h) + angle(opposite(h, out)) - M_PI);
+  }
+  SMDF_CHECK_MSG(moved == 0 && far < 1e-12 * scale && outside < 1e-12 * scale,
+                 what << ": the input vertices unmoved (" << moved << "), every vertex on the input surface (" << far / scale
+                      << ") and every face inside its input face (" << outside / scale << ")");
+  SMDF_CHECK_MSG(non_delaunay < 1e-9, what << ": every interior edge Delaunay (opposite angles - pi at most " << non_delaunay << ")");
+  SMDF_CHECK_MSG(length_error < 1e-12 * scale, what << ": the output lengths are the points' distances (" << length_error / scale << " of the extent)");
+  const double ratio = surface_area(out) / surface_area(in_sm);
+  SMDF_CHECK_MSG(std::abs(ratio - 1) < 1e-12, what << ": the input's area (ratio " << ratio << ")");
+  std::cout << what << ": " << num_faces(in_sm) << " -> " << num_faces(out) << " faces, " << st.inserted.size() << " vertices added" << std::endl;
+  return st;
+}
+
+// The curvature of `lengths` on `mesh`, recomputed: the largest error against the targets.
+template <typename Targets, typename Lengths>
+double curvature_error(const Surface_mesh& mesh, const Targets& targets, const Lengths& lengths)
+{
+  const SMDF::Intrinsic_mesh<Surface_mesh> im(mesh, SMDF::parameters::edge_length_map(lengths));
+  double err = 0;
+  for(auto v : vertices(mesh)) err = std::max(err, std::abs(im.vertex_curvature(v) - targets[v]));
+  return err;
+}
+
+void delaunay_refinement(const std::string& dir)
+{
+  // shared meshes: closed and open, genus 0 and 3, needle triangles
+  for(const char* name : {"cheburashka_igltut.off", "face_bff.obj", "genus3_vhacd.off", "camelhead_igltut.off"}) {
+    Surface_mesh mesh, out;
+    SMDF::read_triangle_mesh(dir + "/meshes/" + name, mesh);
+    check_refinement(mesh, mesh, out, name);
+  }
+  // caps with angles up to 179.9993 degrees: Gabriel sub-segments along their long sides take
+  // about 1 / (smallest angle) splits; the vertex budget stops that with a clear status
+  {
+    Surface_mesh mesh, out;
+    SMDF::read_triangle_mesh(dir + "/meshes/bad-stl-wing_openscad.off", mesh);
+    const auto st = SMDF::conforming_delaunay_refinement(mesh, out);
+    SMDF_CHECK_MSG(!st.success && st.message.find("vertices needed") != std::string::npos && num_faces(out) == 0,
+                   "bad-stl-wing: the refinement stops at its budget (" << st.message << ")");
+    bool thrown = false;
+    try { SMDF::conforming_delaunay_refinement(mesh, mesh); } catch(const SMDF::Input_error&) { thrown = true; }
+    SMDF_CHECK_MSG(thrown, "a non-empty output mesh is rejected");
+  }
+  // Polyhedron_3: the same refinement
+  {
+    Surface_mesh mesh, out, pout;
+    Polyhedron p;
+    SMDF::read_triangle_mesh(dir + "/meshes/cheburashka_igltut.off", mesh);
+    SMDF::read_triangle_mesh(dir + "/meshes/cheburashka_igltut.off", p);
+    const auto a = check_refinement(mesh, mesh, out, "cheburashka");
+    const auto b = check_refinement(p, mesh, pout, "cheburashka (Polyhedron_3)");
+    SMDF_CHECK_MSG(a.inserted == b.inserted && a.face_origin == b.face_origin, "cheburashka: Polyhedron_3 gives the same refinement");
+  }
+  // Cheburashka with eight cones of pi/2: the flow without flips fails on the input
+  // triangulation and converges on the refinement (curvature recomputed from the lengths)
+  Surface_mesh mesh, out;
+  SMDF::read_triangle_mesh(dir + "/meshes/cheburashka_igltut.off", mesh);
+  const auto corners = diagonal_corners(mesh, K::Vector_3(0, 0, 0));
+  auto targets = mesh.add_property_map<Surface_mesh::Vertex_index, double>("v:target", 0.).first;
+  for(auto v : corners) targets[v] = M_PI / 2;
+  auto flat = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:flat", 0).first;
+  const auto on_input = SMDF::compute_cone_metric(mesh, targets, flat, SMDF::parameters::intrinsic_edge_flips(false));
+  SMDF_CHECK_MSG(!on_input.converged, "cheburashka, 8 cones: no convergence on the input triangulation without flips");
+  check_refinement(mesh, mesh, out, "cheburashka refined");
+  auto rtargets = out.add_property_map<Surface_mesh::Vertex_index, double>("v:target", 0.).first;
+  for(auto v : corners) rtargets[v] = M_PI / 2;   // the input's vertices keep their indices
+  auto rflat = out.add_property_map<Surface_mesh::Edge_index, double>("e:flat", 0).first;
+  const auto on_refined = SMDF::compute_cone_metric(out, rtargets, rflat, SMDF::parameters::intrinsic_edge_flips(false));
+  const double err = curvature_error(out, rtargets, rflat);
+  SMDF_CHECK_MSG(on_refined.converged && !on_refined.triangulation_changed && err < 1e-9,
+                 "cheburashka refined, 8 cones: converged without flips (curvature error " << err << ", " << on_refined.message << ")");
+  // the pull-back through a refinement: a cube whose vertices are pushed onto a sphere, under
+  // the cube's own metric (lengths): refined in that metric, the remesh of the refinement lies on
+  // the input (the sphere polyhedron) and reads back as the cube's
+  Surface_mesh ball, rball;
+  smdf_test::soup_to_mesh(cube_soup(3, 5u), ball);
+  auto cube_lengths = ball.add_property_map<Surface_mesh::Edge_index, double>("e:cube", 0).first;
+  for(auto e : edges(ball)) cube_lengths[e] = std::sqrt(CGAL::squared_distance(ball.point(source(e, ball)), ball.point(target(e, ball))));
+  for(auto v : vertices(ball)) {
+    const K::Vector_3 d = ball.point(v) - K::Point_3(0.5, 0.5, 0.5);
+    ball.point(v) = K::Point_3(0.5, 0.5, 0.5) + d / std::sqrt(d.squared_length());
+  }
+  auto rlengths = rball.add_property_map<Surface_mesh::Edge_index, double>("e:cube", 0).first;
+  const auto rs = SMDF::conforming_delaunay_refinement(ball, rball, SMDF::parameters::edge_length_map(cube_lengths), SMDF::parameters::edge_length_map(rlengths));
+  SMDF_CHECK_MSG(rs.success, "sphere-pushed cube refined in the cube's metric: " << rs.message);
+  const auto dev = SMDF::develop_flat_metric(rball, SMDF::parameters::edge_length_map(rlengths));
+  Surface_mesh remesh;
+  const auto ts = SMDF::tessellate_flat_metric(rball, dev, SMDF::SQUARE_GRID, 0.25, remesh);
+  check_remesh(ball, ball, remesh, ts, 4, {{3, 8}}, 96, "sphere-pushed cube, refined (" + std::to_string(rs.inserted.size()) + " vertices added), quads of 0.25");
+}
+
 int main()
 {
   cube();
   octahedron();
   flat_torus();
   const std::string dir = smdf_test::shared_data_dir();
-  if(!dir.empty()) { box_polycube(dir); seam_relaxation(dir); flipped_flat_metric(dir); octahedron_polyhedron(dir); obelisk(dir); }
+  if(!dir.empty()) { box_polycube(dir); seam_relaxation(dir); flipped_flat_metric(dir); delaunay_refinement(dir); octahedron_polyhedron(dir); obelisk(dir); }
   else std::cout << "../shared/data not found: box polycube on shared meshes skipped" << std::endl;
   return smdf_test::finish();
 }

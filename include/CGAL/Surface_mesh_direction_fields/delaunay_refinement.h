@@ -1,0 +1,359 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_DELAUNAY_REFINEMENT_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_DELAUNAY_REFINEMENT_H
+
+// A refinement of a triangle mesh that keeps its surface and makes every edge Delaunay: new
+// vertices only on the input's edges, each input triangle re-triangulated inside itself. A
+// metric that the input triangulation cannot carry without intrinsic flips (compute_cone_metric())
+// often lives on this refinement, which is a triangulation of the same surface: a remesh pulled
+// back through it lies on the input surface (regular remeshing, Lai et al. 2010, section 5).
+
+#include <CGAL/Surface_mesh_direction_fields/Intrinsic_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/errors.h>
+#include <CGAL/Surface_mesh_direction_fields/parameters.h>
+
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsRemeshing
+/// Outcome of conforming_delaunay_refinement(), with the correspondence of the refinement to
+/// the input mesh.
+struct Delaunay_refinement_status
+{
+  /// every interior edge of the output is locally Delaunay: the two angles opposite it sum to
+  /// at most \f$\pi\f$ (read back from the output's lengths)
+  bool success = false;
+  std::string message;                 ///< empty on success
+  std::size_t vertices = 0, faces = 0; ///< of the output
+  /// the vertices added, in the order of creation after the input's vertices: vertex
+  /// `n + k` of the output (`n` the number of input vertices) lies on the input edge of index
+  /// `inserted[k].first` at parameter `inserted[k].second` in (0, 1) from the source of its
+  /// halfedge `halfedge(e, tm)`
+  std::vector<std::pair<std::size_t, double>> inserted;
+  /// per output face, in the order of creation: the index of the input face that contains it
+  std::vector<std::size_t> face_origin;
+  /// the largest sum of the two angles opposite an interior edge of the output, in radians
+  double max_opposite_angle_sum = 0;
+  std::size_t non_delaunay_edges = 0;  ///< interior edges of the output whose sum exceeds \f$\pi + 10^{-9}\f$
+};
+
+namespace internal {
+
+// The per-face state of the refinement: the layout of an input triangle in the plane (from its
+// lengths), and the points of the refinement on its three edges.
+template <typename TriangleMesh>
+struct Delaunay_refiner
+{
+  const Mesh_arrays<TriangleMesh>& m;
+  std::vector<std::vector<double>> inner;   // per edge: sorted parameters in (0, 1) from source(2e)
+  explicit Delaunay_refiner(const Mesh_arrays<TriangleMesh>& arrays) : m(arrays), inner(arrays.number_of_edges()) {}
+
+  struct P2 { double x, y; };
+  static double dot(P2 a, P2 b, P2 c) { return (a.x - c.x) * (b.x - c.x) + (a.y - c.y) * (b.y - c.y); }     // (a-c).(b-c)
+  static double orient(P2 a, P2 b, P2 c) { return (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y); }
+
+  // corners of face f, in the order of its halfedges from face_halfedge (corner k = source(h_k))
+  void layout(int f, std::array<int, 3>& h, std::array<P2, 3>& c) const
+  {
+    h[0] = m.face_halfedge[std::size_t(f)];
+    h[1] = m.next[std::size_t(h[0])];
+    h[2] = m.next[std::size_t(h[1])];
+    const double a = m.edge_length(h[0]), b = m.edge_length(h[1]), d = m.edge_length(h[2]);
+    const double x = (a * a + d * d - b * b) / (2 * a);
+    c[0] = {0, 0};
+    c[1] = {a, 0};
+    c[2] = {x, std::sqrt((std::max)(0., d * d - x * x))};
+  }
+  // parameter along halfedge h of the i-th inner point of its edge
+  double along(int h, std::size_t i) const
+  {
+    const std::vector<double>& t = inner[std::size_t(h >> 1)];
+    return (h & 1) ? 1 - t[t.size() - 1 - i] : t[i];
+  }
+  // the boundary of face f, counterclockwise: corners and inner points, with vertex numbers
+  // (input vertex, or first_inner[e] + i), and for each the halfedge slot k (0..2) it starts
+  // and its parameter along h_k
+  void boundary(int f, const std::vector<std::size_t>& first_inner, std::vector<P2>& p, std::vector<std::size_t>& id,
+                std::vector<int>& slot, std::vector<double>& param, std::array<int, 3>& h) const
+  {
+    std::array<P2, 3> c;
+    layout(f, h, c);
+    p.clear();
+    id.clear();
+    slot.clear();
+    param.clear();
+    for(int k = 0; k < 3; ++k) {
+      const P2 a = c[std::size_t(k)], b = c[std::size_t((k + 1) % 3)];
+      p.push_back(a);
+      id.push_back(std::size_t(m.source(h[std::size_t(k)])));
+      slot.push_back(k);
+      param.push_back(0);
+      const std::size_t e = std::size_t(h[std::size_t(k)] >> 1), n = inner[e].size();
+      for(std::size_t i = 0; i < n; ++i) {
+        const double s = along(h[std::size_t(k)], i);
+        p.push_back({a.x + s * (b.x - a.x), a.y + s * (b.y - a.y)});
+        id.push_back(first_inner[e] + ((h[std::size_t(k)] & 1) ? n - 1 - i : i));
+        slot.push_back(k);
+        param.push_back(s);
+      }
+    }
+  }
+  // Is a sub-segment of edge e, between parameters t0 < t1, encroached in the face of halfedge
+  // h (h >> 1 == e): does a point of that face (the opposite corner, the inner points of the
+  // two other edges) lie inside its diametral circle?
+  bool encroached(int h, double t0, double t1) const
+  {
+    std::array<int, 3> hs;
+    std::array<P2, 3> c;
+    const int f = m.face[std::size_t(h)];
+    layout(f, hs, c);
+    int k = 0;
+    while(hs[std::size_t(k)] != h) ++k;
+    const P2 a = c[std::size_t(k)], b = c[std::size_t((k + 1) % 3)];
+    const double s0 = (h & 1) ? 1 - t1 : t0, s1 = (h & 1) ? 1 - t0 : t1;
+    const P2 p{a.x + s0 * (b.x - a.x), a.y + s0 * (b.y - a.y)}, q{a.x + s1 * (b.x - a.x), a.y + s1 * (b.y - a.y)};
+    const double tol = -1e-9 * dot(p, p, q);   // on the circle (a right angle) is not inside
+    if(dot(p, q, c[std::size_t((k + 2) % 3)]) < tol) return true;
+    for(int j = 1; j <= 2; ++j) {
+      const int g = hs[std::size_t((k + j) % 3)];
+      const P2 u = c[std::size_t((k + j) % 3)], w = c[std::size_t((k + j + 1) % 3)];
+      for(std::size_t i = 0; i < inner[std::size_t(g >> 1)].size(); ++i) {
+        const double s = along(g, i);
+        if(dot(p, q, P2{u.x + s * (w.x - u.x), u.y + s * (w.y - u.y)}) < tol) return true;
+      }
+    }
+    return false;
+  }
+};
+
+} // namespace internal
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsRemeshing
+/// Refines `tm` into `out`, a triangulation of the same surface in which every edge is locally
+/// Delaunay, by adding vertices on the edges of `tm` only (a conforming Delaunay refinement).
+///
+/// Each input edge is split until no sub-segment is encroached, i.e. until no point of the
+/// refinement in either adjacent input triangle lies inside its diametral circle; each input
+/// triangle, with the points on its edges, is then triangulated by the Delaunay triangulation
+/// of these points (a convex polygon). Every sub-segment then sees at most \f$\pi/2\f$ on each
+/// side and every edge inside a triangle is Delaunay, so the output is a Delaunay triangulation
+/// of the metric. A sub-segment at an input vertex is split at a power of two of its length
+/// from that vertex (Ruppert's concentric shells), which keeps small input angles from
+/// splitting without end; elsewhere at its midpoint.
+///
+/// Use: `compute_cone_metric()` without intrinsic flips needs a triangulation that stays valid
+/// under the target metric; a Delaunay one usually does (e.g. Cheburashka with eight cones of
+/// \f$\pi/2\f$: no convergence on the 13,334 input faces, converged on their 76,996-face
+/// refinement). Every output face lies inside one input face (`face_origin`), so a remesh pulled
+/// back through `out` lies on the input surface.
+///
+/// `out` must be empty (its property maps may exist already, e.g. those of `np_out`). The
+/// input vertices become the first output vertices, in the order of `vertex_index_map`;
+/// the others are listed in the status. Throws `Input_error` for the invalid inputs of
+/// `Intrinsic_mesh`.
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{edge_length_map}
+///     \cgalParamDescription{the metric whose Delaunay property is wanted}
+///     \cgalParamDefault{Euclidean lengths from `vertex_point_map`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the positions of `tm`'s vertices; the new vertices are placed by linear interpolation along the input edges}
+///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_iterations}
+///     \cgalParamDescription{the largest number of vertices to add; beyond it the status fails}
+///     \cgalParamDefault{64 times the number of faces, plus 4096}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map, edge_index_map, face_index_map}
+///     \cgalParamDescription{as for `Intrinsic_mesh`: the numbers used in the status}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+/// `np_out`: `edge_length_map`, a writable property map of `out`'s edges that receives the
+/// refinement's lengths in the metric (along an input edge its length times the parameter
+/// span, inside an input triangle the distance in its layout);
+/// `vertex_point_map` of `out`.
+/// \tparam PolygonMesh a model of `MutableFaceGraph` whose vertex points are constructible from
+/// three doubles
+template <typename TriangleMesh, typename PolygonMesh, typename NamedParameters = parameters::Default_named_parameters,
+          typename NamedParametersOut = parameters::Default_named_parameters>
+Delaunay_refinement_status conforming_delaunay_refinement(const TriangleMesh& tm, PolygonMesh& out,
+                                                          const NamedParameters& np = parameters::default_values(),
+                                                          const NamedParametersOut& np_out = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  typedef internal::Delaunay_refiner<TriangleMesh> Refiner;
+  typedef typename Refiner::P2 P2;
+  typedef boost::graph_traits<PolygonMesh> OGT;
+  const Intrinsic_mesh<TriangleMesh> im(tm, np);
+  const internal::Mesh_arrays<TriangleMesh>& m = im.arrays();
+  const std::size_t nv = m.number_of_vertices(), ne = m.number_of_edges(), nf = m.number_of_faces();
+  const std::size_t budget = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 64 * nf + 4096);
+  Delaunay_refinement_status st;
+  if(!CGAL::is_empty(out))   // not cleared: that would remove the property maps of np_out
+    throw Input_error(Input_error::INVALID_ARGUMENT, "conforming_delaunay_refinement: the output mesh must be empty");
+  Refiner r(m);
+
+  // 1. split encroached sub-segments, edge by edge, until none is left
+  std::vector<int> work;
+  std::vector<char> queued(ne, 1);
+  for(std::size_t e = ne; e-- > 0;) work.push_back(int(e));
+  std::size_t added = 0;
+  while(!work.empty()) {
+    const int e = work.back();
+    work.pop_back();
+    queued[std::size_t(e)] = 0;
+    std::vector<double>& t = r.inner[std::size_t(e)];
+    const double L = m.length[std::size_t(e)];
+    for(std::size_t i = 0; i <= t.size();) {
+      const double t0 = i == 0 ? 0. : t[i - 1], t1 = i == t.size() ? 1. : t[i];
+      bool enc = false;
+      for(int side = 0; side < 2 && !enc; ++side)
+        if(m.face[std::size_t(2 * e + side)] >= 0) enc = r.encroached(2 * e + side, t0, t1);
+      if(!enc) { ++i; continue; }
+      double s = (t0 + t1) / 2;
+      if((i == 0) != (i == t.size())) {   // one end is an input vertex: split at a power of two from it
+        const double d = std::exp2(std::round(std::log2((t1 - t0) * L / 2))) / L;
+        s = i == 0 ? d : 1 - d;
+      }
+      if(!(s > t0 && s < t1) || (t1 - t0) < 1e-13 || ++added > budget) {
+        st.message = added > budget ? "more than " + std::to_string(budget) + " vertices needed (number_of_iterations)"
+                                    : "edge " + std::to_string(e) + " would be split below 1e-13 of its length (a needle triangle next to it?)";
+        return st;
+      }
+      t.insert(t.begin() + std::ptrdiff_t(i), s);   // sub-segment i is now (t0, s): check it again
+      for(int side = 0; side < 2; ++side) {
+        const int h = 2 * e + side;
+        if(m.face[std::size_t(h)] < 0) continue;
+        for(int g : {m.next[std::size_t(h)], m.prev(h)})
+          if(!queued[std::size_t(g >> 1)]) { queued[std::size_t(g >> 1)] = 1; work.push_back(g >> 1); }
+      }
+    }
+  }
+
+  // 2. the output's vertices: the input's, then the inner points edge by edge
+  std::vector<std::size_t> first_inner(ne);
+  std::size_t n_out = nv;
+  for(std::size_t e = 0; e < ne; ++e) {
+    first_inner[e] = n_out;
+    for(double t : r.inner[e]) st.inserted.emplace_back(e, t);
+    n_out += r.inner[e].size();
+  }
+  typedef typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
+  const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
+  typedef typename CGAL::GetVertexPointMap<PolygonMesh, NamedParametersOut>::type OVPM;
+  OVPM opm = choose_parameter(get_parameter(np_out, CGAL::internal_np::vertex_point), get_property_map(CGAL::vertex_point, out));
+  typedef typename boost::property_traits<OVPM>::value_type Out_point;
+  auto point3 = [&](std::size_t v) {
+    const auto& p = get(vpm, m.vertices[v]);
+    return std::array<double, 3>{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+  };
+  std::vector<typename OGT::vertex_descriptor> ov(n_out);
+  for(std::size_t v = 0; v < n_out; ++v) {
+    std::array<double, 3> x;
+    if(v < nv) x = point3(v);
+    else {
+      const std::pair<std::size_t, double>& in = st.inserted[v - nv];
+      const std::array<double, 3> a = point3(std::size_t(m.source(int(2 * in.first)))), b = point3(std::size_t(m.target[2 * in.first]));
+      for(int j = 0; j < 3; ++j) x[std::size_t(j)] = a[std::size_t(j)] + in.second * (b[std::size_t(j)] - a[std::size_t(j)]);
+    }
+    ov[v] = add_vertex(out);
+    put(opm, ov[v], Out_point(x[0], x[1], x[2]));
+  }
+
+  // 3. each input face: the Delaunay triangulation of its boundary points (a convex polygon):
+  // the triangle on chord (i, j) takes the point between them that sees it under the largest
+  // angle (smallest cotangent)
+  std::vector<P2> p;
+  std::vector<std::size_t> id;
+  std::vector<int> slot;
+  std::vector<double> param;
+  std::array<int, 3> fh;
+  std::vector<std::array<std::size_t, 3>> tris;
+  std::vector<std::pair<std::size_t, std::size_t>> chords;
+  std::unordered_map<std::size_t, double> opposite;   // per undirected vertex pair: sum of the opposite angles
+  constexpr bool has_lengths = !parameters::is_default_parameter<NamedParametersOut, internal_np::edge_length_t>::value;
+  std::vector<std::pair<typename OGT::halfedge_descriptor, double>> out_lengths;
+  for(std::size_t f = 0; f < nf; ++f) {
+    r.boundary(int(f), first_inner, p, id, slot, param, fh);
+    const std::size_t n = p.size();
+    tris.clear();
+    chords.assign(1, {0, n - 1});
+    while(!chords.empty()) {
+      const std::pair<std::size_t, std::size_t> c = chords.back();
+      chords.pop_back();
+      if(c.second - c.first < 2) continue;
+      std::size_t best = c.first + 1;
+      double best_cot = HUGE_VAL;
+      for(std::size_t k = c.first + 1; k < c.second; ++k) {
+        const double o = Refiner::orient(p[c.first], p[k], p[c.second]);
+        if(!(o > 0)) continue;   // on the chord's line (a point of the same input edge)
+        const double cot = Refiner::dot(p[c.first], p[c.second], p[k]) / o;
+        if(cot < best_cot) { best_cot = cot; best = k; }
+      }
+      tris.push_back({{c.first, best, c.second}});
+      chords.push_back({c.first, best});
+      chords.push_back({best, c.second});
+    }
+    for(const auto& tr : tris) {
+      std::vector<typename OGT::vertex_descriptor> vs{ov[id[tr[0]]], ov[id[tr[1]]], ov[id[tr[2]]]};
+      const typename OGT::face_descriptor of = CGAL::Euler::add_face(vs, out);
+      if(of == OGT::null_face()) {
+        st.message = "the refinement of face " + std::to_string(f) + " is not manifold (degenerate input face?)";
+        return st;
+      }
+      st.face_origin.push_back(f);
+      for(int k = 0; k < 3; ++k) {
+        const std::size_t a = tr[std::size_t(k)], b = tr[std::size_t((k + 1) % 3)], c = tr[std::size_t((k + 2) % 3)];
+        const double o = Refiner::orient(p[a], p[b], p[c]);
+        const double angle = std::atan2(std::abs(o), Refiner::dot(p[a], p[b], p[c]));   // at c, opposite (a, b)
+        const std::size_t u = (std::min)(id[a], id[b]), w = (std::max)(id[a], id[b]);
+        opposite[u * n_out + w] += angle;
+        if constexpr(has_lengths) {
+          // along an input edge: its length times the span (the same from both sides)
+          double l;
+          if(b == (a + 1) % n) l = m.edge_length(fh[std::size_t(slot[a])]) * ((slot[b] == slot[a] ? param[b] : 1.) - param[a]);
+          else l = std::hypot(p[b].x - p[a].x, p[b].y - p[a].y);
+          out_lengths.emplace_back(halfedge(vs[std::size_t(k)], vs[std::size_t((k + 1) % 3)], out).first, l);
+        }
+      }
+    }
+  }
+  for(const auto& kv : opposite) {
+    const std::size_t u = kv.first / n_out, w = kv.first % n_out;
+    const bool interior = !CGAL::is_border(edge(halfedge(ov[u], ov[w], out).first, out), out);
+    if(!interior) continue;
+    st.max_opposite_angle_sum = (std::max)(st.max_opposite_angle_sum, kv.second);
+    if(kv.second > CGAL_PI + 1e-9) ++st.non_delaunay_edges;
+  }
+  if constexpr(has_lengths) {
+    auto olm = get_parameter(np_out, internal_np::edge_length);
+    for(const auto& hl : out_lengths) put(olm, edge(hl.first, out), hl.second);
+  }
+  st.vertices = num_vertices(out);
+  st.faces = num_faces(out);
+  st.success = st.non_delaunay_edges == 0;
+  if(!st.success)
+    st.message = std::to_string(st.non_delaunay_edges) + " edges are not Delaunay (largest opposite angle sum " +
+                 std::to_string(st.max_opposite_angle_sum) + " rad)";
+  return st;
+}
+
+} // namespace Surface_mesh_direction_fields
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_DELAUNAY_REFINEMENT_H
