@@ -1337,8 +1337,31 @@ def test_shared(smdf, c, shared):
         test_shared_robustness(smdf, c, meshes, tmp)
     test_shared_svg(smdf, c, meshes)
     test_shared_cone_metric(smdf, c, meshes)
+    with tempfile.TemporaryDirectory(prefix="smdf_refine_") as tmp:
+        test_shared_remesh_refinement(smdf, c, meshes, tmp)
     with tempfile.TemporaryDirectory(prefix="smdf_rosy_") as tmp:
         test_shared_rosy(smdf, c, meshes, tmp)
+
+
+def test_shared_remesh_refinement(smdf, c, meshes, tmp):
+    """smdf remesh --cones on Cheburashka: its triangulation cannot carry the flat metric of
+    eight cones of pi/2 without flips; the metric is computed on the conforming Delaunay
+    refinement instead (converged, curvature error tiny), whose cut graph then fails the square
+    grid's holonomy test (not a box): exit 3, one stderr line naming the failing edges."""
+    mesh = os.path.join(meshes, "cheburashka_igltut.off")
+    cones = ",".join("%d:pi/2" % v for v in (1776, 5562, 5734, 3548, 6533, 3098, 3868, 6211))
+    rc, o, err = smdf.run(["remesh", mesh, "--cones", cones, "--faces", "2000", "--out", os.path.join(tmp, "c.off")])
+    doc = json.loads(o.decode()) if o else {}
+    m = doc.get("metric", {})
+    ref = m.get("delaunay_refinement", {})
+    lines = err.decode().strip().splitlines()
+    c.check(rc == 3 and doc.get("success") is False and ref.get("success") is True and ref.get("faces", 0) > 13334
+            and "cannot carry" in ref.get("input_triangulation_message", "") and m.get("converged") is True
+            and m.get("max_curvature_error", 1) < 1e-9,
+            "remesh cheburashka --cones: the metric on the Delaunay refinement (%r faces), converged (%r)"
+            % (ref.get("faces"), m.get("max_curvature_error")))
+    c.check(len(lines) == 1 and "not symmetries" in lines[0] and doc.get("failing_cut_edge_count", 0) > 0,
+            "remesh cheburashka --cones: exit 3, the failing cut edges named in one line (%r)" % lines[-1:])
 
 
 def test_shared_svg(smdf, c, meshes):

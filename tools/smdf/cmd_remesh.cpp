@@ -10,6 +10,7 @@
 #include "remesh_pictures.h"
 
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
+#include <CGAL/Surface_mesh_direction_fields/delaunay_refinement.h>
 #include <CGAL/Surface_mesh_direction_fields/flat_development.h>
 #include <CGAL/Surface_mesh_direction_fields/grid_tessellation.h>
 #include <CGAL/Surface_mesh_direction_fields/intrinsic_geometry.h>
@@ -214,27 +215,50 @@ Json run_remesh(const Args& args)
   const double unit_area = grid == SMDF::SQUARE_GRID ? 1. : std::sqrt(3.) / 4;
   // 1. the metric
   Edge_length_property lengths;
+  Mesh refined;           // the input's conforming Delaunay refinement, if the metric needs it
+  Mesh* surface = &mesh;  // the triangulation that carries the metric
   double metric_s = 0, compensation_s = 0;
   Json metric = Json::object();
   if(args.has("lengths")) { lengths = read_edge_lengths(args.value("lengths"), mesh); metric["source"] = "lengths"; }
   else if(!cones.empty() && !args.has("polycube")) {
-    // the flat cone metric with the given cones, on the input triangulation (the remesh is
-    // pulled back through it: no intrinsic flips)
+    // the flat cone metric with the given cones, on the input triangulation; if that cannot
+    // carry it, on its conforming Delaunay refinement (a triangulation of the same surface: the
+    // remesh is pulled back through it onto the input, no intrinsic flips needed)
     stage("flat cone metric");
-    auto targets = mesh.add_property_map<vertex_descriptor, double>("v:smdf_remesh_target", 0.).first;
-    for(const auto& c : cones) targets[c.first] = c.second;
-    lengths = mesh.add_property_map<edge_descriptor, double>("e:smdf_remesh_length", 0.).first;
-    const SMDF::Cone_metric_status cm = on_file(file, [&] {
-      return SMDF::compute_cone_metric(mesh, targets, lengths, SMDF::parameters::intrinsic_edge_flips(false));
-    });
+    auto flow = [&](Mesh& on, Edge_length_property& l) {
+      auto targets = on.add_property_map<vertex_descriptor, double>("v:smdf_remesh_target", 0.).first;
+      for(const auto& c : cones) targets[c.first] = c.second;   // a refinement keeps the input's vertex indices
+      l = on.add_property_map<edge_descriptor, double>("e:smdf_remesh_length", 0.).first;
+      return on_file(file, [&] { return SMDF::compute_cone_metric(on, targets, l, SMDF::parameters::intrinsic_edge_flips(false)); });
+    };
+    SMDF::Cone_metric_status cm = flow(mesh, lengths);
     metric["source"] = "cones";
+    if(!cm.converged) {
+      stage("flat cone metric on the Delaunay refinement");
+      const SMDF::Delaunay_refinement_status rs = on_file(file, [&] { return SMDF::conforming_delaunay_refinement(mesh, refined); });
+      Json r = Json::object();
+      r["input_triangulation_message"] = cm.message;
+      r["success"] = rs.success;
+      r["faces"] = rs.faces;
+      r["inserted_vertices"] = rs.inserted.size();
+      metric["delaunay_refinement"] = std::move(r);
+      if(!rs.success) {
+        out["metric"] = metric;
+        out["success"] = false;
+        throw Failed_result{out, file + ": the flat cone metric with these cones does not converge on the input triangulation (" + cm.message +
+                                     "), and its Delaunay refinement failed: " + rs.message, 3};
+      }
+      cm = flow(refined, lengths);
+      surface = &refined;
+    }
     metric["converged"] = cm.converged;
     metric["iterations"] = cm.iterations;
     metric["max_curvature_error"] = cm.max_curvature_error;
     if(!cm.converged) {
       out["metric"] = metric;
       out["success"] = false;
-      throw Failed_result{out, file + ": the flat cone metric with these cones does not converge on the input triangulation: " + cm.message, 3};
+      throw Failed_result{out, file + ": the flat cone metric with these cones does not converge on the input triangulation" +
+                                   std::string(surface == &refined ? " nor on its Delaunay refinement: " : ": ") + cm.message, 3};
     }
   } else {
     lengths = mesh.add_property_map<edge_descriptor, double>("e:smdf_remesh_length", 0.).first;
@@ -258,7 +282,7 @@ Json run_remesh(const Args& args)
     if(!cm.converged) for(vertex_descriptor v : vertices(mesh)) u[v] = 0;
     metric_s += clock.lap();   // the flat cone metric is the metric; compensation_s is P's
   };
-  double h = requested_h > 0 ? requested_h : std::sqrt(metric_area(mesh, lengths) / (double(requested_faces) * unit_area));
+  double h = requested_h > 0 ? requested_h : std::sqrt(metric_area(*surface, lengths) / (double(requested_faces) * unit_area));
   if(args.has("polycube") && polycube != "box") {
     // a polyhedron of unit squares and equilateral triangles: the octahedron, or from a file
     std::vector<vertex_descriptor> corners;
@@ -409,9 +433,9 @@ Json run_remesh(const Args& args)
   out["metric"] = metric;
   // 2. develop and tessellate; with --faces, the admissible edge length nearest to the request
   stage("development and tessellation");
-  const auto dev = on_file(file, [&] { return SMDF::develop_flat_metric(mesh, SMDF::parameters::edge_length_map(lengths)); });
+  const auto dev = on_file(file, [&] { return SMDF::develop_flat_metric(*surface, SMDF::parameters::edge_length_map(lengths)); });
   Mesh remesh;
-  SMDF::Grid_tessellation_status st = SMDF::tessellate_flat_metric(mesh, dev, grid, h, remesh);
+  SMDF::Grid_tessellation_status st = SMDF::tessellate_flat_metric(*surface, dev, grid, h, remesh);
   if(!st.success && requested_faces > 0 && st.compatibility.compatible && st.compatibility.spacing > 0 &&
      st.message.find("does not divide") != std::string::npos) {
     const double s = st.compatibility.spacing, wx = grid == SMDF::SQUARE_GRID ? 0. : 0.5, wy = grid == SMDF::SQUARE_GRID ? 1. : std::sqrt(3.) / 2;
@@ -422,7 +446,7 @@ Json run_remesh(const Args& args)
         if(g > 0.5 && (best == 0 || std::abs(std::log(s / g / h)) < std::abs(std::log(best / h)))) best = s / g;
       }
     h = best;
-    st = SMDF::tessellate_flat_metric(mesh, dev, grid, h, remesh);
+    st = SMDF::tessellate_flat_metric(*surface, dev, grid, h, remesh);
   }
   const double tessellation_s = clock.lap();
   out["edge_length"] = h;
@@ -492,7 +516,9 @@ Command remesh_command()
            {"progress", "", "report each stage on stderr with the elapsed time"}},
           "regular quad or triangle remesh from a flat cone metric",
           "Lai et al. 2010, section 5: develops a flat cone metric of the mesh (its own edge lengths,\n"
-          "--lengths, the metric with --cones computed on the input triangulation, or the metric of a\n"
+          "--lengths, the metric with --cones computed without flips on the input triangulation or,\n"
+          "where that cannot carry it, on its conforming Delaunay refinement (vertices added on the\n"
+          "input's edges only, so the remesh still lies on the input), or the metric of a\n"
           "polyhedron: --polycube box | octahedron | obelisk | FILE, genus 0 only; with --cones the box's\n"
           "or octahedron's corners are the given cones, by direction from the centroid, and a FILE's\n"
           "corners must carry exactly the given curvatures; P's edges become shortest paths under\n"
@@ -503,7 +529,9 @@ Command remesh_command()
           "grid (Theorem 3.5) and the cones grid points; otherwise the failing edges are reported.\n"
           "Output vertices lie on the input triangles (barycentric placement); every interior\n"
           "vertex has valence 4 (6) except at a cone of curvature K: 4 - K/(pi/2) (6 - K/(pi/3)).\n"
-          "Prints {grid, metric: {source, flat_cone_metric_converged, flat_cone_metric_edge_flips, corners,\n"
+          "Prints {grid, metric: {source, converged, iterations, max_curvature_error,\n"
+          "delaunay_refinement: {input_triangulation_message, success, faces, inserted_vertices} (when\n"
+          "used), flat_cone_metric_converged, flat_cone_metric_edge_flips, corners,\n"
           "dimensions or side_length, max_path_stretch, relaxation_steps, seam_relaxed_vertices},\n"
           "edge_length, cut_edges, cones, grid_spacing_of_metric, failing_cut_edges (first 20),\n"
           "failing_cut_edge_count, vertices, faces_by_size, valences (interior vertices),\n"
