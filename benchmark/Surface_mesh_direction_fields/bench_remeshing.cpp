@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The Surface_mesh_direction_fields authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-// Benchmarks of regular remeshing (Lai et al. 2010, section 5) on the surface of a cube cut into
+// Benchmarks of regular remeshing (Lai et al. 2010, section 5). The remesh on the surface of a cube cut into
 // k x k squares of two triangles per side (12 k^2 faces: 10k to 1M for the standard sizes),
 // whose own metric is flat with eight cones of pi/2: develop_flat_metric() and
 // tessellate_flat_metric() into quads of edge length 1/k' with 6 k'^2 about half the input's
@@ -10,6 +10,7 @@
 // holonomy fits the grid.
 #include "benchmark_util.h"
 
+#include <CGAL/Surface_mesh_direction_fields/delaunay_refinement.h>
 #include <CGAL/Surface_mesh_direction_fields/flat_development.h>
 #include <CGAL/Surface_mesh_direction_fields/grid_tessellation.h>
 
@@ -103,7 +104,32 @@ static void BM_develop_cube(benchmark::State& state)
   state.counters["cut_edges"] = double(cut);
 }
 
+// conforming_delaunay_refinement() of the standard benchmark meshes (the base mesh decimated or
+// subdivided, see benchmark_util.h): what a metric that the input triangulation cannot carry
+// costs before its flow. Counters: output faces over input faces, read-back (all Delaunay).
+static void BM_delaunay_refinement(benchmark::State& state)
+{
+  const smdf_bench::Bench_mesh* b = smdf_bench::setup(state);
+  if(!b) return;
+  smdf_bench::Memory_probe mem;
+  SMDF::Delaunay_refinement_status st;
+  for(auto _ : state) {
+    Mesh out;
+    st = SMDF::conforming_delaunay_refinement(b->mesh, out);
+    benchmark::DoNotOptimize(num_faces(out));
+  }
+  mem.report(state);
+  state.counters["output_faces"] = double(st.faces);
+  state.counters["growth"] = double(st.faces) / double(num_faces(b->mesh));
+  state.counters["read_back_ok"] = st.success ? 1 : 0;
+  if(!st.success) {
+    smdf_bench::had_errors() = true;
+    state.SkipWithError(st.message.c_str());
+  }
+}
+
 BENCHMARK(BM_remesh_cube)->Apply(smdf_bench::standard_options);
+BENCHMARK(BM_delaunay_refinement)->Apply(smdf_bench::standard_options);
 BENCHMARK(BM_develop_cube)->Apply(smdf_bench::standard_options);
 
 SMDF_BENCHMARK_MAIN();

@@ -721,14 +721,14 @@ void delaunay_refinement(const std::string& dir)
     SMDF::read_triangle_mesh(dir + "/meshes/" + name, mesh);
     check_refinement(mesh, mesh, out, name);
   }
-  // caps with angles up to 179.9993 degrees: Gabriel sub-segments along their long sides take
-  // about 1 / (smallest angle) splits; the vertex budget stops that with a clear status
+  // caps with angles up to 179.9993 degrees: Delaunay sub-segments along their long sides take
+  // about 1 / (smallest angle) splits; the limit per edge stops that with a clear status
   {
     Surface_mesh mesh, out;
     SMDF::read_triangle_mesh(dir + "/meshes/bad-stl-wing_openscad.off", mesh);
     const auto st = SMDF::conforming_delaunay_refinement(mesh, out);
-    SMDF_CHECK_MSG(!st.success && st.message.find("vertices needed") != std::string::npos && num_faces(out) == 0,
-                   "bad-stl-wing: the refinement stops at its budget (" << st.message << ")");
+    SMDF_CHECK_MSG(!st.success && st.message.find("too thin") != std::string::npos && num_faces(out) == 0,
+                   "bad-stl-wing: the refinement stops at its limit per edge (" << st.message << ")");
     bool thrown = false;
     try { SMDF::conforming_delaunay_refinement(mesh, mesh); } catch(const SMDF::Input_error&) { thrown = true; }
     SMDF_CHECK_MSG(thrown, "a non-empty output mesh is rejected");

@@ -20,8 +20,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <sstream>
 #include <string>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -111,12 +111,14 @@ struct Delaunay_refiner
       }
     }
   }
-  // Is a sub-segment of edge e, between parameters t0 < t1, encroached in the face of halfedge
-  // h (h >> 1 == e): does a point of that face (the opposite corner, the inner points of the
-  // two other edges) lie inside its diametral circle? Returns -1 if not, otherwise the relative
-  // position in [0, 1] on the sub-segment of the foot of the encroaching point nearest its
-  // middle.
-  double encroached(int h, double t0, double t1) const
+  // The cotangent of the angle under which the apex of a sub-segment of edge e (parameters
+  // t0 < t1) sees it in the face of halfedge h (h >> 1 == e): the apex is the point of that
+  // face (the opposite corner, the inner points of the two other edges) that sees it under the
+  // largest angle, the third corner of its triangle in the face's Delaunay triangulation (a
+  // sub-segment is on the convex hull of the face's points, so it is an edge of that
+  // triangulation). `foot` receives the relative position in [0, 1], in the edge's direction,
+  // of the apex's foot on it.
+  double apex_cot(int h, double t0, double t1, double& foot) const
   {
     std::array<int, 3> hs;
     std::array<P2, 3> c;
@@ -127,14 +129,17 @@ struct Delaunay_refiner
     const P2 a = c[std::size_t(k)], b = c[std::size_t((k + 1) % 3)];
     const double s0 = (h & 1) ? 1 - t1 : t0, s1 = (h & 1) ? 1 - t0 : t1;
     const P2 p{a.x + s0 * (b.x - a.x), a.y + s0 * (b.y - a.y)}, q{a.x + s1 * (b.x - a.x), a.y + s1 * (b.y - a.y)};
-    const double pq = dot(p, p, q), tol = -1e-9 * pq;   // on the circle (a right angle) is not inside
-    double foot = -1;
-    auto test = [&](P2 x) {
-      if(!(dot(p, q, x) < tol)) return;
+    double best = HUGE_VAL;
+    auto test = [&](P2 x) {   // the points of the face lie to the left of p -> q
+      const double o = orient(p, q, x);
+      if(!(o > 0)) return;
+      const double cot = dot(p, q, x) / o;   // cotangents: no trigonometry in the inner loop
+      if(cot >= best) return;
+      best = cot;
+      const double pq = dot(p, p, q);
       double u = ((x.x - p.x) * (q.x - p.x) + (x.y - p.y) * (q.y - p.y)) / pq;
-      if(h & 1) u = 1 - u;   // in the edge's direction
-      u = (std::min)(1., (std::max)(0., u));
-      if(foot < 0 || std::abs(u - 0.5) < std::abs(foot - 0.5)) foot = u;
+      if(h & 1) u = 1 - u;
+      foot = (std::min)(1., (std::max)(0., u));
     };
     test(c[std::size_t((k + 2) % 3)]);
     for(int j = 1; j <= 2; ++j) {
@@ -145,7 +150,7 @@ struct Delaunay_refiner
         test(P2{u.x + s * (w.x - u.x), u.y + s * (w.y - u.y)});
       }
     }
-    return foot;
+    return best;
   }
 };
 
@@ -155,13 +160,13 @@ struct Delaunay_refiner
 /// Refines `tm` into `out`, a triangulation of the same surface in which every edge is locally
 /// Delaunay, by adding vertices on the edges of `tm` only (a conforming Delaunay refinement).
 ///
-/// Each input edge is split until no sub-segment is encroached, i.e. until no point of the
-/// refinement in either adjacent input triangle lies inside its diametral circle; each input
-/// triangle, with the points on its edges, is then triangulated by the Delaunay triangulation
-/// of these points (a convex polygon). Every sub-segment then sees at most \f$\pi/2\f$ on each
-/// side and every edge inside a triangle is Delaunay, so the output is a Delaunay triangulation
-/// of the metric. A sub-segment is split at the foot of the encroaching point, kept within its
-/// middle 60 %; but one at an input vertex at a power of two of its length from that vertex
+/// Each input triangle, with the points of the refinement on its edges, is triangulated by the
+/// Delaunay triangulation of these points (a convex polygon, whose sides, the sub-segments of
+/// the input edges, are therefore edges of it); edges inside a triangle are then Delaunay. An
+/// input edge is split until each of its sub-segments is Delaunay too: the two apexes (the
+/// points of the two adjacent triangles that see it under the largest angle) see it under at
+/// most \f$\pi\f$ together. A sub-segment is split at the foot of the wider apex, kept within
+/// its middle 60 %; one at an input vertex at a power of two of its length from that vertex
 /// (Ruppert's concentric shells), which keeps small input angles from splitting without end.
 ///
 /// Use: `compute_cone_metric()` without intrinsic flips needs a triangulation that stays valid
@@ -185,7 +190,8 @@ struct Delaunay_refiner
 ///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_iterations}
-///     \cgalParamDescription{the largest number of vertices to add; beyond it the status fails}
+///     \cgalParamDescription{the largest number of vertices to add; beyond it, or beyond 1024 on one
+///       input edge (next to a needle triangle), the status fails with a message}
 ///     \cgalParamDefault{64 times the number of faces, plus 4096}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_index_map, edge_index_map, face_index_map}
@@ -218,7 +224,7 @@ Delaunay_refinement_status conforming_delaunay_refinement(const TriangleMesh& tm
     throw Input_error(Input_error::INVALID_ARGUMENT, "conforming_delaunay_refinement: the output mesh must be empty");
   Refiner r(m);
 
-  // 1. split encroached sub-segments, edge by edge, until none is left
+  // 1. split the sub-segments that are not Delaunay, edge by edge, until none is left
   std::vector<int> work;
   std::vector<char> queued(ne, 1);
   for(std::size_t e = ne; e-- > 0;) work.push_back(int(e));
@@ -231,11 +237,13 @@ Delaunay_refinement_status conforming_delaunay_refinement(const TriangleMesh& tm
     const double L = m.length[std::size_t(e)];
     for(std::size_t i = 0; i <= t.size();) {
       const double t0 = i == 0 ? 0. : t[i - 1], t1 = i == t.size() ? 1. : t[i];
-      double foot = -1;
-      for(int side = 0; side < 2 && foot < 0; ++side)
-        if(m.face[std::size_t(2 * e + side)] >= 0) foot = r.encroached(2 * e + side, t0, t1);
-      if(foot < 0) { ++i; continue; }
-      // at the foot of the encroaching point (kept off the ends): fewer splits than the middle
+      // Delaunay across the input edge: the apexes on its two sides see it under at most pi
+      if(m.is_border_edge(e)) break;
+      double foot0 = 0, foot1 = 0;
+      const double c0 = r.apex_cot(2 * e, t0, t1, foot0), c1 = r.apex_cot(2 * e + 1, t0, t1, foot1);
+      if(c0 + c1 >= -1e-12) { ++i; continue; }   // angles summing to at most pi
+      const double foot = c0 <= c1 ? foot0 : foot1;
+      // at the foot of the wider apex (kept off the ends): fewer splits than the middle
       double s = t0 + (t1 - t0) * (std::min)(0.8, (std::max)(0.2, foot));
       if((i == 0) != (i == t.size())) {
         // one end is an input vertex: split at a power of two from it (points at equal
@@ -243,9 +251,19 @@ Delaunay_refinement_status conforming_delaunay_refinement(const TriangleMesh& tm
         const double d = std::exp2(std::round(std::log2((t1 - t0) * L / 2))) / L;
         s = i == 0 ? d : 1 - d;
       }
-      if(!(s > t0 && s < t1) || (t1 - t0) < 1e-13 || ++added > budget) {
-        st.message = added > budget ? "more than " + std::to_string(budget) + " vertices needed (number_of_iterations)"
-                                    : "edge " + std::to_string(e) + " would be split below 1e-13 of its length (a needle triangle next to it?)";
+      // A needle (angle theta) takes about 1/theta points along its long sides, and each test
+      // scans the points of a face: 1024 per edge bounds that (quadratic) work.
+      if(!(s > t0 && s < t1) || (t1 - t0) < 1e-13 || t.size() >= 1024 || ++added > budget) {
+        std::ostringstream os;
+        if(added > budget) os << "more than " << budget << " vertices needed (number_of_iterations)";
+        else {
+          double smallest = CGAL_PI;
+          for(int side = 0; side < 2; ++side)
+            for(int g = 2 * e + side, k = 0; k < 3; ++k, g = m.next[std::size_t(g)]) smallest = (std::min)(smallest, m.angle[std::size_t(g)]);
+          os << "edge " << e << " needs more than " << (t.size() >= 1024 ? "1024 points" : "splits below 1e-13 of its length")
+             << ": its triangles are too thin (smallest angle " << smallest * 180 / CGAL_PI << " degrees)";
+        }
+        st.message = os.str();
         return st;
       }
       t.insert(t.begin() + std::ptrdiff_t(i), s);   // sub-segment i is now (t0, s): check it again
@@ -290,39 +308,55 @@ Delaunay_refinement_status conforming_delaunay_refinement(const TriangleMesh& tm
 
   // 3. each input face: the Delaunay triangulation of its boundary points (a convex polygon):
   // the triangle on chord (i, j) takes the point between them that sees it under the largest
-  // angle (smallest cotangent)
+  // angle (smallest cotangent). The angles opposite each edge are summed on the way: a chord's
+  // two triangles are made one after the other, a sub-segment's in the two input faces.
+  std::vector<std::size_t> seg_base(ne + 1, 0);   // sub-segment j of edge e: seg_base[e] + j
+  for(std::size_t e = 0; e < ne; ++e) seg_base[e + 1] = seg_base[e] + r.inner[e].size() + 1;
+  std::vector<double> seg_angle(seg_base[ne], 0.);
   std::vector<P2> p;
   std::vector<std::size_t> id;
   std::vector<int> slot;
   std::vector<double> param;
   std::array<int, 3> fh;
-  std::vector<std::array<std::size_t, 3>> tris;
-  std::vector<std::pair<std::size_t, std::size_t>> chords;
-  std::unordered_map<std::size_t, double> opposite;   // per undirected vertex pair: sum of the opposite angles
+  struct Chord { std::size_t i, j; double angle; };   // angle: opposite it in the triangle made first (-1 for the root)
+  std::vector<Chord> chords;
   constexpr bool has_lengths = !parameters::is_default_parameter<NamedParametersOut, internal_np::edge_length_t>::value;
-  std::vector<std::pair<typename OGT::halfedge_descriptor, double>> out_lengths;
   for(std::size_t f = 0; f < nf; ++f) {
     r.boundary(int(f), first_inner, p, id, slot, param, fh);
     const std::size_t n = p.size();
-    tris.clear();
-    chords.assign(1, {0, n - 1});
+    std::array<std::size_t, 3> corner{{0, 0, 0}};   // the index of each corner among the points
+    for(std::size_t a = n; a-- > 0;) corner[std::size_t(slot[a])] = a;
+    // boundary sub-segment from point a to point a + 1 (mod n): its index among all sub-segments
+    auto segment = [&](std::size_t a) {
+      const int h = fh[std::size_t(slot[a])];
+      const std::size_t e = std::size_t(h >> 1), nsub = r.inner[e].size() + 1, j = a - corner[std::size_t(slot[a])];
+      return seg_base[e] + ((h & 1) ? nsub - 1 - j : j);
+    };
+    auto angle_at = [&](std::size_t a, std::size_t b, std::size_t c) {   // at c, opposite (a, b)
+      return std::atan2(std::abs(Refiner::orient(p[a], p[b], p[c])), Refiner::dot(p[a], p[b], p[c]));
+    };
+    chords.assign(1, Chord{0, n - 1, -1.});
     while(!chords.empty()) {
-      const std::pair<std::size_t, std::size_t> c = chords.back();
+      const Chord c = chords.back();
       chords.pop_back();
-      if(c.second - c.first < 2) continue;
-      std::size_t best = c.first + 1;
+      if(c.j - c.i < 2) { seg_angle[segment(c.i)] += c.angle; continue; }   // a side of the polygon
+      std::size_t best = c.i + 1;
       double best_cot = HUGE_VAL;
-      for(std::size_t k = c.first + 1; k < c.second; ++k) {
-        const double o = Refiner::orient(p[c.first], p[k], p[c.second]);
+      for(std::size_t k = c.i + 1; k < c.j; ++k) {
+        const double o = Refiner::orient(p[c.i], p[k], p[c.j]);
         if(!(o > 0)) continue;   // on the chord's line (a point of the same input edge)
-        const double cot = Refiner::dot(p[c.first], p[c.second], p[k]) / o;
+        const double cot = Refiner::dot(p[c.i], p[c.j], p[k]) / o;
         if(cot < best_cot) { best_cot = cot; best = k; }
       }
-      tris.push_back({{c.first, best, c.second}});
-      chords.push_back({c.first, best});
-      chords.push_back({best, c.second});
-    }
-    for(const auto& tr : tris) {
+      const double opposite = angle_at(c.i, c.j, best);
+      if(c.angle < 0) seg_angle[segment(n - 1)] += opposite;   // the root: the side from n - 1 to 0
+      else {
+        st.max_opposite_angle_sum = (std::max)(st.max_opposite_angle_sum, c.angle + opposite);
+        if(c.angle + opposite > CGAL_PI + 1e-9) ++st.non_delaunay_edges;
+      }
+      chords.push_back(Chord{c.i, best, angle_at(c.i, best, c.j)});
+      chords.push_back(Chord{best, c.j, angle_at(best, c.j, c.i)});
+      const std::array<std::size_t, 3> tr{{c.i, best, c.j}};
       std::vector<typename OGT::vertex_descriptor> vs{ov[id[tr[0]]], ov[id[tr[1]]], ov[id[tr[2]]]};
       const typename OGT::face_descriptor of = CGAL::Euler::add_face(vs, out);
       if(of == OGT::null_face()) {
@@ -330,33 +364,26 @@ Delaunay_refinement_status conforming_delaunay_refinement(const TriangleMesh& tm
         return st;
       }
       st.face_origin.push_back(f);
-      for(int k = 0; k < 3; ++k) {
-        const std::size_t a = tr[std::size_t(k)], b = tr[std::size_t((k + 1) % 3)], c = tr[std::size_t((k + 2) % 3)];
-        const double o = Refiner::orient(p[a], p[b], p[c]);
-        const double angle = std::atan2(std::abs(o), Refiner::dot(p[a], p[b], p[c]));   // at c, opposite (a, b)
-        const std::size_t u = (std::min)(id[a], id[b]), w = (std::max)(id[a], id[b]);
-        opposite[u * n_out + w] += angle;
-        if constexpr(has_lengths) {
+      if constexpr(has_lengths) {
+        auto olm = get_parameter(np_out, internal_np::edge_length);
+        for(typename OGT::halfedge_descriptor oh : CGAL::halfedges_around_face(halfedge(of, out), out)) {
+          int k = 0;
+          while(vs[std::size_t(k)] != source(oh, out)) ++k;
+          const std::size_t a = tr[std::size_t(k)], b = tr[std::size_t((k + 1) % 3)];
           // along an input edge: its length times the span (the same from both sides)
-          double l;
-          if(b == (a + 1) % n) l = m.edge_length(fh[std::size_t(slot[a])]) * ((slot[b] == slot[a] ? param[b] : 1.) - param[a]);
-          else l = std::hypot(p[b].x - p[a].x, p[b].y - p[a].y);
-          out_lengths.emplace_back(halfedge(vs[std::size_t(k)], vs[std::size_t((k + 1) % 3)], out).first, l);
+          const double l = b == (a + 1) % n ? m.edge_length(fh[std::size_t(slot[a])]) * ((slot[b] == slot[a] ? param[b] : 1.) - param[a])
+                                            : std::hypot(p[b].x - p[a].x, p[b].y - p[a].y);
+          put(olm, edge(oh, out), l);
         }
       }
     }
   }
-  for(const auto& kv : opposite) {
-    const std::size_t u = kv.first / n_out, w = kv.first % n_out;
-    const bool interior = !CGAL::is_border(edge(halfedge(ov[u], ov[w], out).first, out), out);
-    if(!interior) continue;
-    st.max_opposite_angle_sum = (std::max)(st.max_opposite_angle_sum, kv.second);
-    if(kv.second > CGAL_PI + 1e-9) ++st.non_delaunay_edges;
-  }
-  if constexpr(has_lengths) {
-    auto olm = get_parameter(np_out, internal_np::edge_length);
-    for(const auto& hl : out_lengths) put(olm, edge(hl.first, out), hl.second);
-  }
+  for(std::size_t e = 0; e < ne; ++e)
+    if(!m.is_border_edge(int(e)))
+      for(std::size_t j = seg_base[e]; j < seg_base[e + 1]; ++j) {
+        st.max_opposite_angle_sum = (std::max)(st.max_opposite_angle_sum, seg_angle[j]);
+        if(seg_angle[j] > CGAL_PI + 1e-9) ++st.non_delaunay_edges;
+      }
   st.vertices = num_vertices(out);
   st.faces = num_faces(out);
   st.success = st.non_delaunay_edges == 0;
