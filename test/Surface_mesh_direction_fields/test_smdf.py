@@ -1362,6 +1362,20 @@ def test_shared_remesh_refinement(smdf, c, meshes, tmp):
             % (ref.get("faces"), m.get("max_curvature_error")))
     c.check(len(lines) == 1 and "not symmetries" in lines[0] and doc.get("failing_cut_edge_count", 0) > 0,
             "remesh cheburashka --cones: exit 3, the failing cut edges named in one line (%r)" % lines[-1:])
+    # cone-metric --refine: the same metric, its files describe the refinement and read back
+    lengths, tri = os.path.join(tmp, "l.txt"), os.path.join(tmp, "t.off")
+    r = smdf.json(["cone-metric", mesh, "--cones", cones, "--refine", "--lengths-out", lengths, "--triangulation-out", tri],
+                  "cone-metric cheburashka --refine")
+    c.check(r is not None and r.get("converged") is True and r.get("edge_flips") == 0 and r["delaunay_refinement"]["faces"] > 13334,
+            "cone-metric --refine: converged without flips on the refinement (%r)" % (r and r.get("delaunay_refinement")))
+    h = smdf.json(["holonomy", tri, "--lengths", lengths], "holonomy of the refinement's metric")
+    c.check(h is not None and h.get("gauss_bonnet_error", 1) < 1e-9 and abs(h.get("total_angle_defect", 0) - 4 * math.pi) < 1e-9,
+            "cone-metric --refine: --triangulation-out and --lengths-out read back by holonomy --lengths")
+    rc, o, err = smdf.run(["cone-metric", os.path.join(meshes, "bad-stl-wing_openscad.off"), "--refine"])
+    lines = err.decode().strip().splitlines()
+    c.check(rc == 3 and json.loads(o.decode() or "{}").get("converged") is False and len(lines) == 1
+            and "Delaunay refinement failed" in lines[0] and "too thin" in lines[0],
+            "cone-metric --refine on needles: exit 3, one line naming the thin edge (%r)" % lines[-1:])
 
 
 def test_shared_svg(smdf, c, meshes):

@@ -7,6 +7,7 @@
 #include "common.h"
 
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
+#include <CGAL/Surface_mesh_direction_fields/delaunay_refinement.h>
 #include <CGAL/Surface_mesh_direction_fields/parameters.h>
 #include <CGAL/Surface_mesh_direction_fields/topology.h>
 
@@ -156,7 +157,7 @@ SMDF::Cone_metric_status compute_metric(const Args& args, const std::string& fil
                                      SMDF::parameters::conformal_factor_map(ufac)
                                          .number_of_iterations(int(opt.iterations))
                                          .curvature_tolerance(opt.tolerance)
-                                         .intrinsic_edge_flips(!args.has("no-flips"))
+                                         .intrinsic_edge_flips(!args.has("no-flips") && !args.has("refine"))
                                          .visitor(visitor));
   } catch(const SMDF::Input_error& e) {
     if(e.kind() != SMDF::Input_error::INCONSISTENT_INDICES) throw file_error(file, e.what(), SMDF::Input_error::kind_name(e.kind()));
@@ -233,8 +234,8 @@ Json status_json(const Args& args, const Mesh& mesh, Vertex_real_property target
   out["max_curvature_error"] = st.max_curvature_error;
   out["rounding_level"] = st.rounding_level;
   out["time_s"] = st.seconds;
-  out["method"] = args.has("no-flips")
-                    ? "discrete conformal vertex scaling (Newton, CHOLMOD) on the input triangulation"
+  out["method"] = args.has("refine")  ? "discrete conformal vertex scaling (Newton, CHOLMOD) on the conforming Delaunay refinement of the input"
+                  : args.has("no-flips") ? "discrete conformal vertex scaling (Newton, CHOLMOD) on the input triangulation"
                     : "discrete conformal vertex scaling (Newton, CHOLMOD), continued on an intrinsic "
                       "Delaunay triangulation (edge flips) if the input triangulation cannot carry the metric";
   out["message"] = st.message;
@@ -349,8 +350,25 @@ Json run_cone_metric(const Args& args)
   const std::string& file = args.positional[0];
   const Cone_metric_options opt = cone_metric_options(args);
 
-  Mesh mesh;
-  load_mesh(file, mesh);
+  Mesh input, refined;
+  load_mesh(file, input);
+  Json refinement;
+  if(args.has("refine")) {   // the metric on a triangulation of the same surface made of pieces of the input's triangles
+    const SMDF::Delaunay_refinement_status rs = on_file(file, [&] { return SMDF::conforming_delaunay_refinement(input, refined); });
+    refinement = Json::object();
+    refinement["success"] = rs.success;
+    refinement["faces"] = rs.faces;
+    refinement["inserted_vertices"] = rs.inserted.size();
+    refinement["max_opposite_angle_sum"] = rs.max_opposite_angle_sum;
+    if(!rs.success) {
+      Json out = Json::object();
+      out["status"] = "not_converged";
+      out["converged"] = false;
+      out["delaunay_refinement"] = refinement;
+      throw Failed_result{out, file + ": the Delaunay refinement failed: " + rs.message, 3};
+    }
+  }
+  Mesh& mesh = args.has("refine") ? refined : input;
   if(opt.want_uv) require_disk(args, file, mesh);
   const Vertex_real_property targets = set_targets(mesh, opt);
   const Edge_length_property lengths = mesh.add_property_map<edge_descriptor, double>("e:smdf_cone_length", 0.).first;
@@ -363,6 +381,7 @@ Json run_cone_metric(const Args& args)
   if(args.has("triangulation-out")) write_triangulation(args.value("triangulation-out"), mesh, st);
 
   Json out = status_json(args, mesh, targets, st);
+  if(args.has("refine")) out["delaunay_refinement"] = refinement;
   if(!st.converged) {
     std::ostringstream os;
     os.imbue(std::locale::classic());
@@ -388,6 +407,7 @@ Command cone_metric_command()
            {"iterations", "n", "maximum number of Newton iterations (default 200)"},
            {"tolerance", "t", "max curvature error accepted, radians (default 1e-10)"},
            {"no-flips", "", "keep the input triangulation (no intrinsic edge flips)"},
+           {"refine", "", "compute the metric without flips on the input's conforming Delaunay refinement (vertices added on the input's edges; the output files describe the refinement)"},
            {"progress", "", "print the error of every iteration to stderr (default: only on a terminal)"}},
           "flat cone metric with prescribed cone angles (discrete conformal map)",
           "Computes edge lengths, conformally equivalent to the Euclidean ones (l_ij = l0_ij\n"
@@ -402,7 +422,14 @@ Command cone_metric_command()
           "Newton's method runs on the input triangulation first; if that triangulation cannot\n"
           "carry the target metric (triangles degenerate), the flow continues on an intrinsic\n"
           "Delaunay triangulation of the same vertices (edge flips; same numbers of edges and faces),\n"
-          "unless --no-flips is given.\n"
+          "unless --no-flips is given. --refine instead computes it, without flips, on the input's\n"
+          "conforming Delaunay refinement: vertices are added on the input's edges only (after the\n"
+          "input's, which keep their numbers) and each input triangle is re-triangulated inside\n"
+          "itself until every edge is Delaunay; a metric the input cannot carry usually exists there,\n"
+          "and that triangulation lies on the input surface. The JSON then has delaunay_refinement:\n"
+          "{success, faces, inserted_vertices, max_opposite_angle_sum}, and --lengths-out,\n"
+          "--triangulation-out (with the new vertices' positions), --uv-out and --svg describe the\n"
+          "refinement.\n"
           "Angles K, kappa: a decimal or p/q in radians, or a multiple of pi written [c][*]pi[/d]\n"
           "(pi, -pi, pi/2, 3*pi/4, -4pi, 0.5pi). Each vertex may be given once, by one option.\n"
           "Prints {status: \"converged\"|\"not_converged\", converged, iterations,\n"
