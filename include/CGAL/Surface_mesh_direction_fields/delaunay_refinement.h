@@ -171,7 +171,7 @@ struct Delaunay_refiner
 ///
 /// Use: `compute_cone_metric()` without intrinsic flips needs a triangulation that stays valid
 /// under the target metric; a Delaunay one usually does (e.g. Cheburashka with eight cones of
-/// \f$\pi/2\f$: no convergence on the 13,334 input faces, converged on their 56,318-face
+/// \f$\pi/2\f$: no convergence on the 13,334 input faces, converged on their 23,196-face
 /// refinement). Every output face lies inside one input face (`face_origin`), so a remesh pulled
 /// back through `out` lies on the input surface.
 ///
