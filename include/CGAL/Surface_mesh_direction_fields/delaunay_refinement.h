@@ -59,6 +59,7 @@ struct Delaunay_refiner
 {
   const Mesh_arrays<TriangleMesh>& m;
   std::vector<std::vector<double>> inner;   // per edge: sorted parameters in (0, 1) from source(2e)
+  mutable std::size_t tests = 0;            // points tested by apex_cot(), the refinement's work
   explicit Delaunay_refiner(const Mesh_arrays<TriangleMesh>& arrays) : m(arrays), inner(arrays.number_of_edges()) {}
 
   struct P2 { double x, y; };
@@ -130,7 +131,8 @@ struct Delaunay_refiner
     const double s0 = (h & 1) ? 1 - t1 : t0, s1 = (h & 1) ? 1 - t0 : t1;
     const P2 p{a.x + s0 * (b.x - a.x), a.y + s0 * (b.y - a.y)}, q{a.x + s1 * (b.x - a.x), a.y + s1 * (b.y - a.y)};
     double best = HUGE_VAL;
-    auto test = [&](P2 x) {   // the points of the face lie to the left of p -> q
+    auto test = [&](P2 x) {
+      ++tests;   // the points of the face lie to the left of p -> q
       const double o = orient(p, q, x);
       if(!(o > 0)) return;
       const double cot = dot(p, q, x) / o;   // cotangents: no trigonometry in the inner loop
@@ -190,8 +192,10 @@ struct Delaunay_refiner
 ///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_iterations}
-///     \cgalParamDescription{the largest number of vertices to add; beyond it, or beyond 1024 on one
-///       input edge (next to a needle triangle), the status fails with a message}
+///     \cgalParamDescription{the largest number of vertices to add; beyond it, beyond 1024 on one
+///       input edge (next to a needle triangle), or beyond \f$4096 F + 10^8\f$ points tested for
+///       the Delaunay property (\f$F\f$ input faces; 60 to 310 per face on ordinary meshes), the
+///       status fails with a message}
 ///     \cgalParamDefault{64 times the number of faces, plus 4096}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_index_map, edge_index_map, face_index_map}
@@ -252,10 +256,13 @@ Delaunay_refinement_status conforming_delaunay_refinement(const TriangleMesh& tm
         s = i == 0 ? d : 1 - d;
       }
       // A needle (angle theta) takes about 1/theta points along its long sides, and each test
-      // scans the points of a face: 1024 per edge bounds that (quadratic) work.
-      if(!(s > t0 && s < t1) || (t1 - t0) < 1e-13 || t.size() >= 1024 || ++added > budget) {
+      // scans the points of a face: 1024 per edge bounds that (quadratic) work, and a cap on the
+      // points tested the sum of it (60 to 310 per input face on the shared and benchmark meshes).
+      const bool too_much_work = r.tests > 4096 * nf + 100000000;
+      if(!(s > t0 && s < t1) || (t1 - t0) < 1e-13 || t.size() >= 1024 || ++added > budget || too_much_work) {
         std::ostringstream os;
         if(added > budget) os << "more than " << budget << " vertices needed (number_of_iterations)";
+        else if(too_much_work) os << "more than " << r.tests << " point tests needed (many needle triangles?)";
         else {
           double smallest = CGAL_PI;
           for(int side = 0; side < 2; ++side)
