@@ -22,6 +22,7 @@
 #include <CGAL/Surface_mesh_direction_fields/polyhedron_remeshing.h>
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/delaunay_refinement.h>
+#include <CGAL/Surface_mesh_direction_fields/topology.h>
 #include <CGAL/Surface_mesh_direction_fields/IO/read_triangle_mesh.h>
 
 #include <CGAL/boost/graph/IO/OFF.h>
@@ -655,16 +656,11 @@ SMDF::Delaunay_refinement_status check_refinement(const Input& input, const Surf
                      st.inserted.size() + num_vertices(in_sm) == num_vertices(out),
                  what << ": refined (" << st.message << ")");
   if(!st.success) return st;
-  auto chi = [](const Surface_mesh& m) { return long(num_vertices(m)) - long(num_edges(m)) + long(num_faces(m)); };
-  auto loops = [](const Surface_mesh& m) {
-    std::size_t n = 0;
-    std::vector<char> seen(num_halfedges(m), 0);
-    for(auto h : halfedges(m))
-      if(is_border(h, m) && !seen[std::size_t(h)]) { ++n; for(auto g : CGAL::halfedges_around_face(h, m)) seen[std::size_t(g)] = 1; }
-    return n;
-  };
-  SMDF_CHECK_MSG(CGAL::is_valid_polygon_mesh(out) && CGAL::is_triangle_mesh(out) && chi(out) == chi(in_sm) && loops(out) == loops(in_sm),
-                 what << ": a valid triangle mesh of the input's Euler characteristic " << chi(in_sm) << " and " << loops(in_sm) << " boundary loops");
+  const auto tin = SMDF::mesh_topology(in_sm), tout = SMDF::mesh_topology(out);
+  SMDF_CHECK_MSG(CGAL::is_valid_polygon_mesh(out) && CGAL::is_triangle_mesh(out) && tout.euler_characteristic() == tin.euler_characteristic() &&
+                     tout.boundary_loops.size() == tin.boundary_loops.size(),
+                 what << ": a valid triangle mesh of the input's Euler characteristic " << tin.euler_characteristic() << " and "
+                      << tin.boundary_loops.size() << " boundary loops");
   double moved = 0, far = 0, outside = 0, non_delaunay = 0, length_error = 0, scale = 0;
   for(auto v : vertices(in_sm)) {
     moved = std::max(moved, std::sqrt(CGAL::squared_distance(in_sm.point(v), out.point(v))));
