@@ -121,7 +121,7 @@ struct Tests
   // Returns true if it converged.
   template <typename LengthMap>
   bool run(const Mesh& mesh, const Cones& cones, LengthMap out, const std::string& what,
-           int max_iterations = 200, bool flips = true)
+           int max_iterations = 200, bool flips = true, bool input_first = true)
   {
     auto tgt = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
     for(auto v : vertices(mesh)) put(tgt, v, 0.);
@@ -132,7 +132,7 @@ struct Tests
     SMDF::Cone_metric_status st = SMDF::compute_cone_metric(
         mesh, tgt, out,
         SMDF::parameters::conformal_factor_map(ufac).number_of_iterations(max_iterations)
-            .intrinsic_edge_flips(flips)
+            .intrinsic_edge_flips(flips).input_triangulation_first(input_first)
             .visitor([&](int it, double err) { ++calls; last_it = it; last_err = err; }));
     std::cout << what << ": converged " << st.converged << ", " << st.iterations << " iterations, error "
               << st.max_curvature_error << ", " << st.seconds << " s";
@@ -687,6 +687,17 @@ int main()
       c[*std::next(vertices(mesh).begin(), 2500)] = M_PI / 2;
       ts.punched(mesh, c, "spot_c3d.obj, cones of index +3/2 (hole), +1/4, +1/4");
     }
+  }
+  // Starting on the intrinsic Delaunay triangulation (input_triangulation_first(false)): the
+  // same checks of the metric; Spot's input triangulation carries the 8 cones, Cheburashka's
+  // does not (its flow is abandoned there), the camel head is a disk with needles.
+  for(const char* file : {"spot_c3d.obj", "cheburashka_igltut.off", "camelhead_igltut.off"}) {
+    Surface_mesh mesh;
+    if(!read(md + file, mesh)) continue;
+    const Tests<Surface_mesh>::Cones c = ts.standard_targets(mesh);
+    auto out = get(CGAL::dynamic_edge_property_t<double>(), mesh);
+    SMDF_CHECK(ts.run(mesh, c, out, std::string(file) + ", " + ts.describe(mesh, c) + ", Delaunay from the start", 200,
+                      true, false));
   }
   {
     Surface_mesh spot, dt;

@@ -88,14 +88,17 @@ void check_gauss_bonnet(const Mesh_arrays<TM>& m, const Topology_arrays& topo, c
 
 // --- 3. the Newton flow (Flow: Vertex_scaling_flow)
 
-// Newton, first on the input triangulation, then (if needed and allowed) with intrinsic flips.
-// u: the conformal factors, 0 on input; len: the lengths of the result.
+// Newton, first on the input triangulation (unless input_first is false), then (if needed and
+// allowed) with intrinsic flips. u: the conformal factors, 0 on input; len: the lengths of the
+// result.
 template <typename Flow, typename Visitor>
 Vertex_scaling_result run_vertex_scaling(Flow& flow, const std::vector<double>& target,
                                          std::vector<double>& u, std::vector<double>& len,
                                          int max_iterations, double tol, Visitor& visitor,
-                                         bool allow_flips)
+                                         bool allow_flips, bool input_first = true)
 {
+  if(allow_flips && !input_first)
+    return flow.run(target, u, len, max_iterations, tol, visitor, Flow::FLIPS);
   // With flips available, the input triangulation is abandoned after a step cut to t <= 1/8 by
   // degenerating triangles (before taking it if it is the first step), 2 consecutive steps cut
   // to t <= 1/4, or 3 cut steps without 10% progress: on a decimated 20k-face armadillo with 8 cones the cut steps keep shrinking (t = 1/8 ... 1/128) while the
@@ -105,7 +108,7 @@ Vertex_scaling_result run_vertex_scaling(Flow& flow, const std::vector<double>& 
       flow.run(target, u, len, max_iterations, tol, visitor, allow_flips ? Flow::FIXED_BEFORE_FLIPS : Flow::FIXED);
   if(!r.converged && allow_flips && r.iterations < max_iterations) {
     Vertex_scaling_result r2 =
-        flow.run(target, u, len, max_iterations - r.iterations, tol, visitor, Flow::FLIPS, r.iterations);
+        flow.run(target, u, len, max_iterations - r.iterations, tol, visitor, Flow::FLIPS, r.iterations, true);
     r2.iterations += r.iterations;
     r = r2;
   }

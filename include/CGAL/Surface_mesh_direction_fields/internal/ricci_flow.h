@@ -281,17 +281,18 @@ public:
   };
 
   // u: in/out conformal factors (start value on input); len: output lengths; first_iteration:
-  // iterations done by an earlier run (numbering of the callback and messages).
+  // iterations done by an earlier run (numbering of the callback and messages); follows: whether
+  // this run continues an earlier one (which reported iteration 0).
   template <typename Callback>
   Vertex_scaling_result run(const std::vector<double>& target, std::vector<double>& u,
                             std::vector<double>& len, int max_iterations, double tol,
-                            Callback& callback, Mode mode, int first_iteration = 0)
+                            Callback& callback, Mode mode, int first_iteration = 0,
+                            bool follows = false)
   {
     Newton_state s(target, tol, mode, first_iteration);
     s.cur.len.swap(len);   // the current iterate's lengths are the caller's
     if(start(s, u)) {
-      // iteration 0 is reported once, by the first phase (the flip phase follows a fixed one)
-      if(first_iteration == 0 && !s.flip) callback(0, max_error(s.cur.k, target));
+      if(!follows) callback(0, max_error(s.cur.k, target));
       while(s.err > tol && s.it < max_iterations) {
         // rejected trial points of the last line search may have flipped edges
         if(s.flip) restore();
