@@ -99,13 +99,39 @@ std::size_t polyhedron_edge_paths(const Mesh_arrays<TM>& m, const std::vector<in
     }
     return d[std::size_t(t)];
   };
-  // the distance between the two corners of every edge of P, without obstacles: the orders
+  // the path from s to t that `from` holds: its vertices and halfedges, from s
+  auto trace = [&](int s, int t, const std::vector<int>& from, std::vector<int>& p, std::vector<int>& hs) {
+    p.assign(1, t);
+    hs.clear();
+    for(int v = t; v != s;) {
+      const int h = from[std::size_t(v)];
+      hs.push_back(h);
+      v = m.source(h);
+      p.push_back(v);
+    }
+    std::reverse(p.begin(), p.end());
+    std::reverse(hs.begin(), hs.end());
+  };
+  // every edge of P without obstacles: its distance (for the orders) and a shortest path, taken
+  // as it is below whenever it avoids the earlier paths (a box on Spot: 12 of the 12, on the
+  // armadillo at 433k faces 11; paths 0.59 -> 0.25 s there)
   std::vector<double> reach(np, 0.);
+  std::vector<std::vector<int>> free_path(np), free_halfedges(np);
   run_on_two_threads([&](int t) {   // (without obstacles the searches only read shared data)
     std::vector<int> from;
-    for(std::size_t k = std::size_t(t); k < np; k += 2)
-      reach[k] = shortest(corner_vertex[std::size_t(pedges[k][0])], corner_vertex[std::size_t(pedges[k][1])], false, from);
+    for(std::size_t k = std::size_t(t); k < np; k += 2) {
+      const int s = corner_vertex[std::size_t(pedges[k][0])], e = corner_vertex[std::size_t(pedges[k][1])];
+      reach[k] = shortest(s, e, false, from);
+      if(from[std::size_t(e)] >= 0) trace(s, e, from, free_path[k], free_halfedges[k]);
+    }
   }, nv >= 10000);
+  // whether a path crosses no earlier path (inner vertex or edge) and no corner but its ends
+  auto avoids = [&](const std::vector<int>& p, const std::vector<int>& hs) {
+    for(std::size_t i = 1; i + 1 < p.size(); ++i)
+      if(used[std::size_t(p[i])] || corner_of[std::size_t(p[i])] >= 0) return false;
+    for(int h : hs) if(path_of_edge[std::size_t(h >> 1)] >= 0) return false;
+    return true;
+  };
   std::vector<std::size_t> order(np);
   for(int attempt = 0; attempt < 3; ++attempt) {   // shortest first, longest first, P's order
     for(std::size_t k = 0; k < np; ++k) order[k] = k;
@@ -118,25 +144,22 @@ std::size_t polyhedron_edge_paths(const Mesh_arrays<TM>& m, const std::vector<in
     for(std::size_t kk = 0; kk < np && message.empty(); ++kk) {
       const std::size_t k = order[kk];
       const int s = corner_vertex[std::size_t(pedges[k][0])], t = corner_vertex[std::size_t(pedges[k][1])];
-      std::vector<int> from;
-      shortest(s, t, true, from);
-      if(from[std::size_t(t)] < 0) {
+      std::vector<int> p, hs;
+      if(!free_halfedges[k].empty() && avoids(free_path[k], free_halfedges[k])) {
+        p = free_path[k];   // a shortest path without obstacles that avoids them is one with them
+        hs = free_halfedges[k];
+      } else {
+        std::vector<int> from;
+        shortest(s, t, true, from);
+        if(from[std::size_t(t)] >= 0) trace(s, t, from, p, hs);
+      }
+      if(hs.empty()) {
         std::ostringstream os;
         os << "no path from corner " << pedges[k][0] << " (vertex " << s << ") to corner " << pedges[k][1] << " (vertex " << t
            << ") avoids the earlier paths (place the corners farther apart, or refine the mesh)";
         message = os.str();
         break;
       }
-      std::vector<int> p(1, t);
-      std::vector<int> hs;
-      for(int v = t; v != s;) {
-        const int h = from[std::size_t(v)];
-        hs.push_back(h);
-        v = m.source(h);
-        p.push_back(v);
-      }
-      std::reverse(p.begin(), p.end());
-      std::reverse(hs.begin(), hs.end());
       shortcut_chords(m, p, hs);
       for(int h : hs) path_of_edge[std::size_t(h >> 1)] = int(k);
       path_edges += hs.size();
