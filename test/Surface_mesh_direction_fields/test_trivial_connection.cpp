@@ -883,6 +883,69 @@ void robustness(const Surface_mesh& spot, const std::string& name)
 // connection turns edges by more than the limit (genus 9 with turning numbers 0, genus 133 with
 // the smoothest ones), the default stays within 5% of the limit, costs more energy than the
 // minimum norm (which is optimal), and still reads back exactly with its matching.
+// The last resort of rotation limiting (Trivial_connection_status::rotation_lower_bound and
+// minimax_blend): where the reweighting leaves an edge beyond pi, either the connection of lowest
+// largest rotation is blended in and every edge ends below pi, or a dual cycle proves that no
+// connection with these indices and turning numbers can get there. Checked against the bound
+// of the cycles around single vertices, |2 pi k_v - K_v| / (edges at v), and by read-back.
+void bounded_rotations(const std::string& dir)
+{
+  int proofs = 0, blends = 0;
+  for(const char* file : {"cheese_cgal.off", "casting_vhacd.off", "bob_small_gc.off"}) {
+    Surface_mesh mesh;
+    SMDF::read_triangle_mesh(dir + "/meshes/" + file, mesh);
+    const long chi = SMDF::mesh_topology(mesh).euler_characteristic();
+    std::vector<Surface_mesh::Vertex_index> interior(vertices(mesh).begin(), vertices(mesh).end());
+    std::mt19937 rng(5);
+    for(int set = 0; set < 3; ++set) {
+      std::shuffle(interior.begin(), interior.end(), rng);
+      std::map<Surface_mesh::Vertex_index, double> sing;
+      std::size_t k = 0;
+      for(long i = 0; i < 4 * std::labs(chi); ++i) sing[interior[k++]] = chi > 0 ? 0.25 : -0.25;
+      for(int i = 0; i < 4; ++i) { sing[interior[k++]] = 0.25; sing[interior[k++]] = -0.25; }
+      // cheese: its turning numbers 0 force rotations far beyond pi; casting and bob: cotan weights
+      // (their minimum norm turns edges by up to 10 rad) and a limit above pi, which the
+      // reweighting stops at, leave the edges beyond pi to the last resort
+      const bool cheese = std::string(file) == "cheese_cgal.off";
+      const double limit = cheese ? 0.8 * M_PI : 3.5;
+      SMDF::Trivial_connection<Surface_mesh> tc(mesh, SMDF::parameters::symmetry_order(4).rotation_limit(limit).connection_weights(
+                                                          cheese ? SMDF::UNIT_WEIGHTS : SMDF::COTAN_WEIGHTS));
+      for(const auto& s : sing) tc.set_singularity(s.first, s.second);
+      const auto st = tc.solve();
+      const std::string what = std::string(file) + " set " + std::to_string(set);
+      SMDF_CHECK_MSG(st.success, what << ": " << st.message);
+      std::cout << what << ": largest rotation " << st.max_rotation << ", " << st.rotation_limit_rounds << " rounds, lower bound "
+                << st.rotation_lower_bound << ", blend " << st.minimax_blend << std::endl;
+      if(st.minimax_blend > 0) {
+        ++blends;
+        SMDF_CHECK_MSG(st.edges_beyond_pi == 0 && st.max_rotation <= (std::min)(limit, M_PI),
+                       what << ": the blend brings every edge within the limit or below pi (" << st.max_rotation << ")");
+      } else if(st.edges_beyond_pi > 0) {
+        ++proofs;
+        double local = 0;   // the cycles around single vertices
+        const std::vector<double>& K = tc.intrinsic_mesh().curvatures();
+        for(auto v : vertices(mesh)) {
+          if(is_border(v, mesh)) continue;
+          const double turn = std::abs(2 * M_PI * tc.singularity_index(v) - K[std::size_t(v)]);
+          local = (std::max)(local, turn / double(degree(v, mesh)));
+        }
+        SMDF_CHECK_MSG(st.rotation_lower_bound >= M_PI && st.rotation_lower_bound <= st.max_rotation * (1 + 1e-9) &&
+                           st.rotation_lower_bound >= local * (1 - 1e-9),
+                       what << ": a proven bound " << st.rotation_lower_bound << " in [max(pi, " << local << "), " << st.max_rotation << "]");
+      }
+      auto angles = get(CGAL::dynamic_face_property_t<double>(), mesh);
+      auto matching = get(CGAL::dynamic_edge_property_t<int>(), mesh);
+      tc.field_angles(angles);
+      SMDF_CHECK(tc.field_matching(angles, matching) < 1e-9);
+      const auto ft = SMDF::field_singularities(mesh, angles, SMDF::parameters::symmetry_order(4).matching(matching));
+      std::map<Surface_mesh::Vertex_index, double> got(ft.singularities.begin(), ft.singularities.end());
+      SMDF_CHECK_MSG(got == sing, what << ": the field reads back exactly with its matching");
+    }
+  }
+  std::cout << "bounded rotations: " << blends << " blends, " << proofs << " proofs" << std::endl;
+  SMDF_CHECK_MSG(proofs > 0 && blends > 0, "both outcomes of the last resort were met (the test means something)");
+}
+
 void rotation_limiting(const std::string& dir)
 {
   for(const char* file : {"casting_vhacd.off", "cheese_cgal.off"}) {
@@ -927,10 +990,46 @@ void rotation_limiting(const std::string& dir)
     }
     SMDF_CHECK_MSG(limited > 0, file << ": the minimum-norm connection exceeded the limit at least once (the test means something)");
   }
+  bounded_rotations(dir);
+}
+
+// The lowest largest rotation (internal/rotation_minimax.h) on graphs whose answer is known: a
+// ring of 5 nodes (one cycle: its mean rotation), a theta graph (three paths between two nodes:
+// the largest mean of its three cycles) and a tree (no cycle: 0).
+void rotation_minimax_core()
+{
+  struct Case { int nodes; std::vector<std::array<int, 2>> ends; std::vector<double> x0; double answer; };
+  const std::vector<Case> cases = {
+    {5, {{{1, 0}}, {{2, 1}}, {{3, 2}}, {{4, 3}}, {{0, 4}}}, {3., 0., 0., 0., 2.}, 1.},
+    // paths 0-2-1 (x 1, 1), 0-3-1 (x -2, 0), 0-1 (x 0.5), each column c changing by p[a] - p[b]:
+    // cycles 0-2-1 / 0-3-1: turns 2 - (-2) = 4 over 4 edges; 0-2-1 / 0-1: 2 - 0.5 over 3
+    {4, {{{2, 0}}, {{1, 2}}, {{3, 0}}, {{1, 3}}, {{1, 0}}}, {1., 1., -2., 0., 0.5}, 1.},
+    {4, {{{1, 0}}, {{2, 1}}, {{3, 1}}}, {5., -3., 2.}, 0.},
+  };
+  for(std::size_t i = 0; i < cases.size(); ++i) {
+    const Case& c = cases[i];
+    const SMDF::internal::Rotation_constraint_graph g(c.nodes, c.ends);
+    const Eigen::VectorXd x0 = Eigen::Map<const Eigen::VectorXd>(c.x0.data(), Eigen::Index(c.x0.size()));
+    double lo = 0, hi = 0;
+    std::vector<double> p;
+    SMDF::internal::lowest_largest_rotation(g, x0, 30, 1000000, lo, hi, p);
+    SMDF_CHECK_MSG(lo <= c.answer + 1e-12 && c.answer <= hi + 1e-12 && hi - lo <= 1e-3 * hi + 1e-6,
+                   "minimax case " << i << ": [" << lo << ", " << hi << "] brackets " << c.answer);
+    double largest = 0;
+    for(std::size_t k = 0; k < c.ends.size(); ++k)
+      largest = (std::max)(largest, std::abs(c.x0[k] + p[std::size_t(c.ends[k][0])] - p[std::size_t(c.ends[k][1])]));
+    SMDF_CHECK_MSG(largest <= hi + 1e-12, "minimax case " << i << ": the potentials keep every rotation within " << hi << " (" << largest << ")");
+    double mean = 0;
+    int length = 0;
+    SMDF_CHECK_MSG(c.answer == 0 || SMDF::internal::rotations_within(g, x0, 0.99 * c.answer, p, mean, length, 1000000) ==
+                                        SMDF::internal::Rotation_bound_outcome::CYCLE && std::abs(mean - c.answer) < 1e-12,
+                   "minimax case " << i << ": below the answer a cycle of mean " << c.answer << " is found (" << mean << ")");
+  }
 }
 
 int main()
 {
+  rotation_minimax_core();
   two_domain_solver();
   exact_kernel();
   separate_triangles();

@@ -23,6 +23,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/field_propagation.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/guide_solver.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/lattice_minimum.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/rotation_minimax.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/sparse_solvers.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -104,6 +105,15 @@ struct Trivial_connection_status
   /// rounds of rotation limiting in this solve (see the `rotation_limit` parameter): 0 when the
   /// minimum-norm connection was within the limit
   int rotation_limit_rounds = 0;
+  /// when the reweighting rounds of rotation limiting leave an edge beyond \f$\pi\f$: a lower
+  /// bound, proven by a dual cycle whose mean rotation it is, on \f$\max_e |x_e|\f$ over every
+  /// connection with these indices and turning numbers (0 when not computed or no cycle was
+  /// needed to decide)
+  double rotation_lower_bound = 0;
+  /// the weight \f$\lambda\f$ with which the connection of lowest largest rotation was blended
+  /// into the reweighted one, \f$(1 - \lambda) x + \lambda x_\infty\f$, to bring every edge
+  /// within the limit (or below \f$\pi\f$); 0 when not used
+  double minimax_blend = 0;
 };
 
 /// \ingroup PkgSurfaceMeshDirectionFieldsTrivialConnections
@@ -197,7 +207,14 @@ public:
   ///       (choose_smoothest_generator_turning_numbers()) they are chosen again on every round.
   ///       The result is then no longer the minimum-norm connection but one whose rotations stay
   ///       bounded (the status reports the rounds); the kept factorisation is that of the
-  ///       plain weights, so a solve within the limit still costs one solve. 0 turns it off (the
+  ///       plain weights, so a solve within the limit still costs one solve. If an edge is still
+  ///       beyond \f$\pi\f$ after the rounds (and there are no directional constraints), the
+  ///       connection of lowest largest rotation with the same holonomies is computed (a
+  ///       largest-mean-cycle problem on the dual graph, by bisection and Bellman-Ford) and blended
+  ///       in with the smallest weight that brings every edge within the limit (and below
+  ///       \f$\pi\f$, also for a limit above it), or below \f$\pi\f$ if the limit cannot be
+  ///       reached; when no connection can stay below
+  ///       \f$\pi\f$, a dual cycle proves it (`rotation_lower_bound`). 0 turns it off (the
   ///       paper's minimum-norm solution). Not with guide directions or `SPQR_MINIMUM_NORM`}
   ///     \cgalParamType{`double`, non-negative}
   ///     \cgalParamDefault{\f$0.8\pi\f$ (chosen on the shared test meshes: see the manual's section on the choice of weights)}
@@ -719,6 +736,40 @@ private:
       st.rotation_limit_rounds = round;
     }
     sys_.W_ = W0;
+    if(xc.cwiseAbs().maxCoeff() > M_PI && sys_.first_constraint_row_ == sys_.rows_) bound_rotations(b, xc, st);
+  }
+
+  // The last resort of rotation limiting: the connection of lowest largest rotation with the
+  // holonomies of xc (rotation_minimax.h), blended into xc with the smallest weight that brings
+  // every edge within the limit, or below pi.
+  void bound_rotations(const Eigen::VectorXd& b, Eigen::VectorXd& xc, Trivial_connection_status& st)
+  {
+    std::vector<std::array<int, 2>> ends(sys_.edge_of_col_.size());
+    for(std::size_t c = 0; c < ends.size(); ++c)   // x_e changes by p[face(h)] - p[face(opposite(h))], h = halfedge(e)
+      ends[c] = {{m_.face[std::size_t(2 * sys_.edge_of_col_[c])], m_.face[std::size_t(2 * sys_.edge_of_col_[c] + 1)]}};
+    const internal::Rotation_constraint_graph g(int(m_.number_of_faces()), ends);
+    double lo = 0, hi = 0;
+    std::vector<double> p;
+    // budget per bound: 1000 passes over the arcs
+    internal::lowest_largest_rotation(g, xc, 16, 2000 * ends.size() + 1000000, lo, hi, p);
+    st.rotation_lower_bound = lo;
+    const double below_pi = M_PI * (1 - 1e-6), first_goal = (std::min)(rotation_limit_, below_pi);
+    const double goal = hi < first_goal ? first_goal : hi < below_pi ? below_pi : 0.;
+    if(goal == 0) return;
+    Eigen::VectorXd xinf = xc;
+    for(std::size_t c = 0; c < ends.size(); ++c) xinf[Eigen::Index(c)] += p[std::size_t(ends[c][0])] - p[std::size_t(ends[c][1])];
+    double lambda = 0;   // the smallest weight that brings every |(1 - lambda) a + lambda b| within the goal (|b| <= hi < goal)
+    for(Eigen::Index c = 0; c < xc.size(); ++c) {
+      const double a = xc[c], v = xinf[c];
+      if(a > goal) lambda = (std::max)(lambda, (a - goal) / (a - v));
+      else if(a < -goal) lambda = (std::max)(lambda, (-goal - a) / (v - a));
+    }
+    lambda = (std::min)(1., lambda * (1 + 1e-9));
+    xc = (1 - lambda) * xc + lambda * xinf;
+    // the potentials' rounding in the holonomies: one correction step on the kept factorisation
+    const Eigen::VectorXd r = sys_.A_ * xc + b;
+    xc -= sys_.W_.asDiagonal() * (sys_.A_.transpose() * Eigen::VectorXd(chol_.solve(r)));
+    st.minimax_blend = lambda;
   }
 
   Cholesky_hints factor_hints() const

@@ -1,0 +1,137 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ROTATION_MINIMAX_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ROTATION_MINIMAX_H
+
+// The lowest largest rotation of a trivial connection. Two connections with the same holonomy
+// around every dual cycle differ by the coboundary of a potential p on the faces: the
+// adjustment angle of the edge between faces a and b changes by p[a] - p[b]. Keeping every
+// |x0_e + p[a] - p[b]| <= T is a system of difference constraints, solvable (Bellman-Ford) unless
+// some dual cycle turns by more than T times its number of edges; so the lowest largest
+// rotation over all connections with the holonomies of x0 is the largest mean rotation of a
+// dual cycle, and a cycle with a mean above T proves that no such connection stays within T.
+
+#include <Eigen/Core>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+namespace internal {
+
+// The dual graph of the unknowns: arc k runs from tail[k] to head[k] and bounds p[head] -
+// p[tail] by T - sign[k] x0[column[k]] (two arcs per column, one per direction).
+struct Rotation_constraint_graph
+{
+  int nodes = 0;
+  std::vector<int> first, tail, head, column;   // arcs in compressed rows by tail
+  std::vector<double> sign;
+
+  // ends[c] = (a, b): the unknown of column c changes by p[a] - p[b]
+  Rotation_constraint_graph(int n, const std::vector<std::array<int, 2>>& ends) : nodes(n), first(std::size_t(n) + 1, 0)
+  {
+    for(const auto& e : ends) { ++first[std::size_t(e[0]) + 1]; ++first[std::size_t(e[1]) + 1]; }
+    for(int v = 0; v < n; ++v) first[std::size_t(v) + 1] += first[std::size_t(v)];
+    const std::size_t arcs = 2 * ends.size();
+    tail.resize(arcs); head.resize(arcs); column.resize(arcs); sign.resize(arcs);
+    std::vector<int> fill(first.begin(), first.end() - 1);
+    for(std::size_t c = 0; c < ends.size(); ++c) {
+      const int a = ends[c][0], b = ends[c][1];
+      // p[a] - p[b] <= T - x0_c: arc b -> a; p[b] - p[a] <= T + x0_c: arc a -> b
+      const int k1 = fill[std::size_t(b)]++, k2 = fill[std::size_t(a)]++;
+      tail[std::size_t(k1)] = b; head[std::size_t(k1)] = a; column[std::size_t(k1)] = int(c); sign[std::size_t(k1)] = 1;
+      tail[std::size_t(k2)] = a; head[std::size_t(k2)] = b; column[std::size_t(k2)] = int(c); sign[std::size_t(k2)] = -1;
+    }
+  }
+};
+
+enum class Rotation_bound_outcome { WITHIN, CYCLE, UNDECIDED };
+
+// Whether the potentials exist for bound T (Bellman-Ford from all nodes at 0, first-in first-out,
+// at most `budget` arc relaxations). WITHIN: `p` holds them; CYCLE: a dual cycle of
+// `cycle_length` edges turns by `cycle_mean` per edge on average, more than T.
+inline Rotation_bound_outcome rotations_within(const Rotation_constraint_graph& g, const Eigen::VectorXd& x0, double T,
+                                               std::vector<double>& p, double& cycle_mean, int& cycle_length, std::size_t budget)
+{
+  const int n = g.nodes;
+  p.assign(std::size_t(n), 0.);
+  std::vector<int> pred(std::size_t(n), -1), queue(std::size_t(n) + 1), color(std::size_t(n), 0);
+  std::vector<char> queued(std::size_t(n), 1);
+  std::size_t front = 0, back = 0;
+  for(int v = 0; v < n; ++v) queue[back++] = v;
+  const std::size_t ring = queue.size();
+  std::size_t work = 0, waiting = std::size_t(n), improvements = 0;
+  auto weight = [&](int k) { return T - g.sign[std::size_t(k)] * x0[g.column[std::size_t(k)]]; };
+  // A cycle of the predecessor arcs has negative weight: looked for after every n improvements
+  // (walks to the roots, each node once), which finds a negative cycle long before a path of n
+  // arcs would.
+  auto negative_cycle = [&]() {
+    std::fill(color.begin(), color.end(), 0);
+    for(int s = 0; s < n; ++s) {
+      int x = s;
+      while(x >= 0 && color[std::size_t(x)] == 0) { color[std::size_t(x)] = s + 1; x = pred[std::size_t(x)] >= 0 ? g.tail[std::size_t(pred[std::size_t(x)])] : -1; }
+      if(x < 0 || color[std::size_t(x)] != s + 1) continue;
+      double turn = 0, total = 0;
+      int length = 0;
+      const int w = x;
+      do {
+        const int a = pred[std::size_t(x)];
+        turn += g.sign[std::size_t(a)] * x0[g.column[std::size_t(a)]];
+        total += weight(a);
+        ++length;
+        x = g.tail[std::size_t(a)];
+      } while(x != w);
+      if(total < 0) { cycle_mean = turn / length; cycle_length = length; return true; }
+    }
+    return false;
+  };
+  while(waiting > 0) {
+    const int u = queue[front];
+    front = (front + 1) % ring;
+    --waiting;
+    queued[std::size_t(u)] = 0;
+    for(int k = g.first[std::size_t(u)]; k < g.first[std::size_t(u) + 1]; ++k) {
+      if(++work > budget) return Rotation_bound_outcome::UNDECIDED;
+      const int v = g.head[std::size_t(k)];
+      const double dv = p[std::size_t(u)] + weight(k);
+      if(!(dv < p[std::size_t(v)] - 1e-13 * (1 + std::abs(p[std::size_t(v)])))) continue;
+      p[std::size_t(v)] = dv;
+      pred[std::size_t(v)] = k;
+      if(++improvements % std::size_t(n) == 0 && negative_cycle()) return Rotation_bound_outcome::CYCLE;
+      if(!queued[std::size_t(v)]) { queued[std::size_t(v)] = 1; queue[back] = v; back = (back + 1) % ring; ++waiting; }
+    }
+  }
+  return Rotation_bound_outcome::WITHIN;
+}
+
+// Bisection for the lowest largest rotation over the connections x0 + coboundary: on return
+// [lo, hi] brackets it (lo proven by a cycle, 0 if none was found; hi = max |x0| at worst), `p`
+// holds potentials that keep every rotation within hi. Stops after `steps` decisions, at a
+// relative width of 1e-3, or at the first undecided bound.
+inline void lowest_largest_rotation(const Rotation_constraint_graph& g, const Eigen::VectorXd& x0, int steps, std::size_t budget,
+                                    double& lo, double& hi, std::vector<double>& p)
+{
+  lo = 0;
+  hi = x0.size() ? x0.cwiseAbs().maxCoeff() : 0.;
+  p.assign(std::size_t(g.nodes), 0.);
+  std::vector<double> q;
+  for(int s = 0; s < steps && hi - lo > 1e-3 * hi; ++s) {
+    const double T = 0.5 * (lo + hi);
+    double mean = 0;
+    int length = 0;
+    const Rotation_bound_outcome r = rotations_within(g, x0, T, q, mean, length, budget);
+    if(r == Rotation_bound_outcome::UNDECIDED) break;
+    if(r == Rotation_bound_outcome::WITHIN) { hi = T; p.swap(q); }
+    else lo = (std::min)(hi, (std::max)(T, mean));
+  }
+}
+
+} // namespace internal
+} // namespace Surface_mesh_direction_fields
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_ROTATION_MINIMAX_H
