@@ -65,7 +65,9 @@ const int orders[] = {1, 2, 4, 6};
 struct Tally
 {
   int solves = 0, principal_exact = 0, beyond_pi_solves = 0;
-  int certified_beyond_pi = 0;   // solves whose singularities force some |x_e| > pi (lower_bound())
+  int proven_beyond_pi = 0;       // solves where a dual cycle proves some |x_e| > pi for these turning numbers
+  int proven_any_turning = 0;     // ... for any turning numbers (Trivial_connection_status::rotation_bound_any_turning)
+  int turned = 0;                 // solves whose turning numbers the search for rotations below pi moved
   long beyond_half = 0, beyond_pi = 0;
   double max_rotation = 0, log_energy_ratio = 0, log_unit_energy_ratio = 0;   // sums of log(E / E of the cotan rule)
   void add(const Tally& t)
@@ -73,7 +75,9 @@ struct Tally
     solves += t.solves;
     principal_exact += t.principal_exact;
     beyond_pi_solves += t.beyond_pi_solves;
-    certified_beyond_pi += t.certified_beyond_pi;
+    proven_beyond_pi += t.proven_beyond_pi;
+    proven_any_turning += t.proven_any_turning;
+    turned += t.turned;
     beyond_half += t.beyond_half;
     beyond_pi += t.beyond_pi;
     max_rotation = (std::max)(max_rotation, t.max_rotation);
@@ -108,42 +112,13 @@ std::vector<double> reference_cotan_weights(const Mesh& mesh)
 std::vector<std::pair<Vertex, double>> random_singularities(const Mesh& mesh, long chi, int N, std::mt19937& rng)
 {
   std::vector<Vertex> interior;
-  for(Vertex v : vertices(mesh)) if(!is_border(v, mesh)) interior.push_back(v);
+  for(Vertex v : vertices(mesh)) if(!is_border(v, mesh) && degree(v, mesh) > 0) interior.push_back(v);   // not isolated
   std::shuffle(interior.begin(), interior.end(), rng);
   std::vector<double> idx(std::size_t(N * std::labs(chi)), chi > 0 ? 1. / N : -1. / N);
   for(int p = 0; p < 4; ++p) { idx.push_back(1. / N); idx.push_back(-1. / N); }
   std::vector<std::pair<Vertex, double>> s;
   for(std::size_t i = 0; i < idx.size() && i < interior.size(); ++i) s.emplace_back(interior[i], idx[i]);
   return s;
-}
-
-// A lower bound on max_e |x_e| over all connections with these indices: for a set S of interior
-// vertices the dual cycles of S add up to the cycle around S (edges inside S cancel), so
-// |sum_S (2 pi k_v - K_v)| <= |edges leaving S| max |x_e|. S runs over single vertices, the
-// two ends of an edge and the three corners of a face.
-double lower_bound(const Mesh& mesh, const SMDF::Trivial_connection<Mesh>& tc)
-{
-  const std::vector<double>& K = tc.intrinsic_mesh().curvatures();
-  auto rhs = [&](Vertex v) { return 2 * M_PI * tc.singularity_index(v) - K[std::size_t(v)]; };
-  auto bound = [&](const std::vector<Vertex>& S) {
-    double sum = 0;
-    int leaving = 0;
-    for(Vertex v : S) {
-      if(is_border(v, mesh)) return 0.;
-      sum += rhs(v);
-      for(auto h : halfedges_around_target(halfedge(v, mesh), mesh))
-        if(!is_border(edge(h, mesh), mesh) && std::find(S.begin(), S.end(), source(h, mesh)) == S.end()) ++leaving;
-    }
-    return leaving ? std::abs(sum) / leaving : 0.;
-  };
-  double lb = 0;
-  for(Vertex v : vertices(mesh)) lb = (std::max)(lb, bound({v}));
-  for(Edge e : edges(mesh)) lb = (std::max)(lb, bound({source(halfedge(e, mesh), mesh), target(halfedge(e, mesh), mesh)}));
-  for(Face f : faces(mesh)) {
-    const auto h = halfedge(f, mesh);
-    lb = (std::max)(lb, bound({source(h, mesh), target(h, mesh), target(next(h, mesh), mesh)}));
-  }
-  return lb;
 }
 
 // One solve: its tally (energy ratio filled in by the caller), or an error message.
@@ -185,12 +160,17 @@ Outcome measure(const Mesh& mesh, SMDF::Trivial_connection<Mesh>& tc, const std:
   o.t.beyond_half = long(st.edges_beyond_half_period);
   o.t.beyond_pi = long(st.edges_beyond_pi);
   o.t.beyond_pi_solves = st.edges_beyond_pi > 0;
+  o.t.turned = st.generators_turned_for_rotation > 0;
   if(st.edges_beyond_pi > 0) {
-    const double lb = lower_bound(mesh, tc);
-    o.t.certified_beyond_pi = lb > M_PI;
+    o.t.proven_beyond_pi = st.rotation_lower_bound > M_PI;
+    o.t.proven_any_turning = st.rotation_bound_any_turning > M_PI;
     std::cerr << "  N=" << N << ": largest rotation " << st.max_rotation << " (" << st.rotation_limit_rounds
-              << " limiting rounds), lower bound over all connections " << lb << "\n";
+              << " limiting rounds), lower bound for these turning numbers " << st.rotation_lower_bound
+              << ", for any turning numbers " << st.rotation_bound_any_turning << "\n";
   }
+  if(st.generators_turned_for_rotation > 0)
+    std::cerr << "  N=" << N << ": " << st.generators_turned_for_rotation << " turning numbers moved, largest rotation "
+              << st.max_rotation << "\n";
   for(Edge e : edges(mesh)) {
     if(is_border(e, mesh)) continue;
     const double x = tc.adjustment_angle(halfedge(e, mesh));
@@ -307,13 +287,14 @@ int main(int argc, char** argv)
   }
   for(int mode = 0; mode < 2; ++mode) {
     std::cout << "\n### Generator turning numbers " << (mode == 0 ? "0" : "smoothest (meshes with generators)") << "\n\n";
-    std::cout << "| Weights | principal read-back exact | solves with an edge > pi (of which forced) | edges > pi/N | edges > pi | largest rotation | cotan energy ratio | unit energy ratio |\n";
-    std::cout << "| --- | --- | --- | --- | --- | --- | --- | --- |\n";
+    std::cout << "| Weights | principal read-back exact | solves with an edge > pi (proven unavoidable: for these turning numbers / for any) | solves with turning numbers moved | edges > pi/N | edges > pi | largest rotation | cotan energy ratio | unit energy ratio |\n";
+    std::cout << "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
     for(int r = 0; r < rule_count; ++r) {
       const Tally& t = totals[mode][r];
       if(t.solves == 0) continue;
       std::cout << "| " << rules[r].name << " | " << t.principal_exact << "/" << t.solves << " ("
-                << fixed(100. * t.principal_exact / t.solves, 1) << "%) | " << t.beyond_pi_solves << " (" << t.certified_beyond_pi << ") | " << t.beyond_half
+                << fixed(100. * t.principal_exact / t.solves, 1) << "%) | " << t.beyond_pi_solves << " (" << t.proven_beyond_pi << " / "
+                << t.proven_any_turning << ") | " << t.turned << " | " << t.beyond_half
                 << " | " << t.beyond_pi << " | " << fixed(t.max_rotation, 2) << " | " << fixed(std::exp(t.log_energy_ratio / t.solves), 3)
                 << " | " << fixed(std::exp(t.log_unit_energy_ratio / t.solves), 3) << " |\n";
     }

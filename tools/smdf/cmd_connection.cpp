@@ -313,6 +313,10 @@ Json run_connection(const Args& args)
   out["edges_beyond_pi"] = st.edges_beyond_pi;
   out["rotation_limit"] = opt.rotation_limit;
   out["rotation_limit_rounds"] = st.rotation_limit_rounds;
+  out["rotation_lower_bound"] = st.rotation_lower_bound;
+  out["rotation_bound_any_turning"] = st.rotation_bound_any_turning;
+  out["generators_turned_for_rotation"] = st.generators_turned_for_rotation;
+  out["minimax_blend"] = st.minimax_blend;
   if(st.condition_estimate > 0) out["condition_estimate"] = st.condition_estimate;
   out["max_matching_rounding"] = off_lattice;
 
@@ -359,7 +363,13 @@ Command connection_command()
           "edges_turning_at_least_pi_over_N} (what a reader without the matching sees), energy,\n"
           "residual, scaled_residual, max_holonomy_error, max_rotation (largest |x_e|),\n"
           "edges_beyond_half_period (|x_e| > pi/N), edges_beyond_pi, rotation_limit,\n"
-          "rotation_limit_rounds (refactorisations spent bounding |x_e|), condition_estimate (only when\n"
+          "rotation_limit_rounds (refactorisations spent bounding |x_e|), rotation_lower_bound (when an\n"
+          "edge stays beyond pi: every connection with these indices and turning numbers turns some\n"
+          "edge by at least this, proven by a dual cycle), rotation_bound_any_turning (the same\n"
+          "whatever the turning numbers, when a cycle around no handle proves it),\n"
+          "generators_turned_for_rotation (turning numbers moved from the smoothest ones to get every\n"
+          "edge below pi), minimax_blend (weight of the connection of lowest largest rotation\n"
+          "blended in), condition_estimate (only when\n"
           "the holonomy error exceeds 1e-12), max_matching_rounding, success, timings:\n"
           "{setup_s, solve_s, field_s, edit_median_s}}; with --generator-turning smoothest also\n"
           "smoothest_generator_turning: {turning_numbers, energy, energy_with_zero_turning, exact}\n"

@@ -110,9 +110,19 @@ struct Trivial_connection_status
   /// connection with these indices and turning numbers (0 when not computed or no cycle was
   /// needed to decide)
   double rotation_lower_bound = 0;
+  /// with smoothest turning numbers, when no connection with them stays below \f$\pi\f$ and
+  /// the search over turning numbers meets a dual cycle that winds around no generator: its mean
+  /// rotation, more than \f$\pi\f$, a lower bound on \f$\max_e |x_e|\f$ over every
+  /// connection with these indices, whatever the turning numbers (0 otherwise)
+  double rotation_bound_any_turning = 0;
+  /// with smoothest turning numbers: the number of generators whose turning number the search
+  /// for a connection below \f$\pi\f$ moved away from the smoothest ones (0 when not needed
+  /// or not successful)
+  std::size_t generators_turned_for_rotation = 0;
   /// the weight \f$\lambda\f$ with which the connection of lowest largest rotation was blended
   /// into the reweighted one, \f$(1 - \lambda) x + \lambda x_\infty\f$, to bring every edge
-  /// within the limit (or below \f$\pi\f$); 0 when not used
+  /// within the limit, or below \f$\pi\f$, or when no connection can, within
+  /// `rotation_lower_bound` (up to the bisection's relative width \f$10^{-3}\f$); 0 when not used
   double minimax_blend = 0;
 };
 
@@ -706,10 +716,26 @@ private:
 
   // Rotation limiting (the rotation_limit parameter) on the solution xc for b: edges beyond the
   // limit are penalised and the system refactored; the base weights are restored at the end,
-  // so chol_ stays valid. With smoothest turning numbers b changes with them.
+  // so chol_ stays valid. With smoothest turning numbers b changes with them, and where no
+  // connection with them stays below pi, the turning numbers are searched for ones that let it.
   void limit_rotations(Eigen::VectorXd& b, Eigen::VectorXd& xc, Trivial_connection_status& st)
   {
     if(!(rotation_limit_ > 0) || solver_kind_ != CHOLMOD_NORMAL_EQUATIONS || !guides_.empty() || sys_.rows_ == 0) return;
+    reweight(b, xc, st, smoothest_);
+    if(!(xc.cwiseAbs().maxCoeff() > M_PI) || sys_.first_constraint_row_ != sys_.rows_) return;
+    const internal::Rotation_constraint_graph g = rotation_graph();
+    if(smoothest_ && !gens_.empty() && search_turning_numbers(g, st)) {
+      b = sys_.rhs(m_, K_, index_, z_, turning_, constraint_angles_, N_);
+      xc = sys_.W_.asDiagonal() * (sys_.A_.transpose() * Eigen::VectorXd(chol_.solve(-b)));
+      reweight(b, xc, st, false);
+    }
+    if(xc.cwiseAbs().maxCoeff() > M_PI) bound_rotations(g, b, xc, st);
+  }
+
+  // The reweighting rounds of rotation limiting (choosing the smoothest turning numbers again on
+  // every round if `choose_turning`).
+  void reweight(Eigen::VectorXd& b, Eigen::VectorXd& xc, Trivial_connection_status& st, bool choose_turning)
+  {
     const Eigen::VectorXd W0 = sys_.W_;
     Solver chol;
     for(int round = 1; round <= 8 && xc.cwiseAbs().maxCoeff() > 1.05 * rotation_limit_; ++round) {
@@ -720,7 +746,7 @@ private:
       }
       std::string message;
       if(!internal::factor_with_hints(chol, sys_.normal_matrix(), factor_hints(), message)) break;   // keep the last solution
-      if(smoothest_) {
+      if(choose_turning) {
         Smoothest_turning_numbers r;
         smoothest_turning(chol, r);
         b = sys_.rhs(m_, K_, index_, z_, turning_, constraint_angles_, N_);
@@ -733,32 +759,103 @@ private:
         if(r.cwiseAbs().maxCoeff() <= 1e-13 * scale) break;
         xc -= sys_.W_.asDiagonal() * (sys_.A_.transpose() * Eigen::VectorXd(chol.solve(r)));
       }
-      st.rotation_limit_rounds = round;
+      st.rotation_limit_rounds += 1;
     }
     sys_.W_ = W0;
-    if(xc.cwiseAbs().maxCoeff() > M_PI && sys_.first_constraint_row_ == sys_.rows_) bound_rotations(b, xc, st);
+  }
+
+  // The dual graph of the unknowns for rotation_minimax.h: x_e changes by
+  // p[face(h)] - p[face(opposite(h))], h = halfedge(e).
+  internal::Rotation_constraint_graph rotation_graph() const
+  {
+    std::vector<std::array<int, 2>> ends(sys_.edge_of_col_.size());
+    for(std::size_t c = 0; c < ends.size(); ++c)
+      ends[c] = {{m_.face[std::size_t(2 * sys_.edge_of_col_[c])], m_.face[std::size_t(2 * sys_.edge_of_col_[c] + 1)]}};
+    return internal::Rotation_constraint_graph(int(m_.number_of_faces()), ends);
+  }
+
+  // Turning numbers of the smoothest mode that let some connection stay below pi, by cutting
+  // planes: a dual cycle C that turns by more than pi per edge on average (Bellman-Ford at
+  // T = pi) is a combination mu of the rows of A, found by one solve (A W A^T mu = A W s_C for
+  // its signed indicator s_C = A^T mu); its turn changes by 2 pi mu_g / N per step of generator
+  // g. The turning numbers are then moved, by the fewest steps a greedy search finds, until every
+  // cycle met so far is within pi, and the test repeats. A cycle winding around no generator,
+  // or cycles around one generator that no number of steps brings all within pi, prove that no
+  // turning numbers can help (rotation_bound_any_turning). Returns whether it changed the turning
+  // numbers and every edge can now stay below pi.
+  bool search_turning_numbers(const internal::Rotation_constraint_graph& g, Trivial_connection_status& st)
+  {
+    const double goal = M_PI * (1 - 1e-6);
+    const std::size_t budget = 1000 * g.tail.size() + 1000000;   // 1000 passes over the arcs
+    const std::vector<double> start = turning_;
+    std::vector<long> d(gens_.size(), 0);
+    std::vector<internal::Turning_cycle> cycles;
+    std::vector<double> p;
+    std::vector<int> arcs;
+    for(int iteration = 0; iteration < 200; ++iteration) {
+      for(std::size_t k = 0; k < d.size(); ++k) turning_[k] = start[k] + double(d[k]) / N_;
+      const Eigen::VectorXd b = sys_.rhs(m_, K_, index_, z_, turning_, constraint_angles_, N_);
+      const Eigen::VectorXd x = sys_.W_.asDiagonal() * (sys_.A_.transpose() * Eigen::VectorXd(chol_.solve(-b)));
+      double mean = 0;
+      int length = 0;
+      const internal::Rotation_bound_outcome r = internal::rotations_within(g, x, goal, p, mean, length, budget, &arcs);
+      if(r == internal::Rotation_bound_outcome::WITHIN) {
+        st.generators_turned_for_rotation = std::size_t(std::count_if(d.begin(), d.end(), [](long v) { return v != 0; }));
+        return iteration > 0;
+      }
+      if(r == internal::Rotation_bound_outcome::UNDECIDED) break;
+      // the cycle's coefficients on the rows of A
+      Eigen::VectorXd sC = Eigen::VectorXd::Zero(x.size());
+      internal::Turning_cycle cycle;
+      for(int a : arcs) {
+        sC[g.column[std::size_t(a)]] += g.sign[std::size_t(a)];
+        cycle.turn += g.sign[std::size_t(a)] * x[g.column[std::size_t(a)]];
+      }
+      cycle.length = int(arcs.size());
+      const Eigen::VectorXd mu = chol_.solve(Eigen::VectorXd(sys_.A_ * (sys_.W_.asDiagonal() * sC)));
+      if(!((Eigen::VectorXd(sys_.A_.transpose() * mu) - sC).cwiseAbs().maxCoeff() < 1e-6)) break;   // not a combination of rows   // not a combination of rows
+      bool integral = true;
+      for(std::size_t k = 0; k < gens_.size() && integral; ++k) {
+        const double m = mu[sys_.first_generator_row_ + Eigen::Index(k)];
+        const long mr = std::lround(m);
+        integral = std::abs(m - double(mr)) <= 1e-6;
+        if(mr != 0) cycle.winding.emplace_back(int(k), mr);
+      }
+      if(!integral) break;
+      if(cycle.winding.empty()) {   // winds around no generator: no turning numbers change its turn
+        st.rotation_bound_any_turning = std::abs(cycle.turn) / cycle.length;
+        break;
+      }
+      // its turn as if measured where the search began
+      for(const auto& gm : cycle.winding) cycle.turn -= (2 * M_PI / N_) * double(gm.second) * double(d[std::size_t(gm.first)]);
+      cycles.push_back(cycle);
+      if(!internal::fit_turning_steps(cycles, N_, goal, d)) {
+        // no turning numbers keep these cycles within pi: a proof when they wind around one generator
+        st.rotation_bound_any_turning = (std::max)(0., internal::one_generator_bound(cycles, N_, d));
+        break;
+      }
+    }
+    turning_ = start;
+    return false;
   }
 
   // The last resort of rotation limiting: the connection of lowest largest rotation with the
   // holonomies of xc (rotation_minimax.h), blended into xc with the smallest weight that brings
-  // every edge within the limit, or below pi.
-  void bound_rotations(const Eigen::VectorXd& b, Eigen::VectorXd& xc, Trivial_connection_status& st)
+  // every edge within the limit, or below pi, or else within that lowest largest rotation.
+  void bound_rotations(const internal::Rotation_constraint_graph& g, const Eigen::VectorXd& b, Eigen::VectorXd& xc,
+                       Trivial_connection_status& st)
   {
-    std::vector<std::array<int, 2>> ends(sys_.edge_of_col_.size());
-    for(std::size_t c = 0; c < ends.size(); ++c)   // x_e changes by p[face(h)] - p[face(opposite(h))], h = halfedge(e)
-      ends[c] = {{m_.face[std::size_t(2 * sys_.edge_of_col_[c])], m_.face[std::size_t(2 * sys_.edge_of_col_[c] + 1)]}};
-    const internal::Rotation_constraint_graph g(int(m_.number_of_faces()), ends);
     double lo = 0, hi = 0;
     std::vector<double> p;
     // budget per bound: 1000 passes over the arcs
-    internal::lowest_largest_rotation(g, xc, 16, 2000 * ends.size() + 1000000, lo, hi, p);
+    internal::lowest_largest_rotation(g, xc, 16, 1000 * g.tail.size() + 1000000, lo, hi, p);
     st.rotation_lower_bound = lo;
     const double below_pi = M_PI * (1 - 1e-6), first_goal = (std::min)(rotation_limit_, below_pi);
-    const double goal = hi < first_goal ? first_goal : hi < below_pi ? below_pi : 0.;
-    if(goal == 0) return;
+    const double goal = hi < first_goal ? first_goal : hi < below_pi ? below_pi : hi;
+    if(!(hi < xc.cwiseAbs().maxCoeff())) return;
     Eigen::VectorXd xinf = xc;
-    for(std::size_t c = 0; c < ends.size(); ++c) xinf[Eigen::Index(c)] += p[std::size_t(ends[c][0])] - p[std::size_t(ends[c][1])];
-    double lambda = 0;   // the smallest weight that brings every |(1 - lambda) a + lambda b| within the goal (|b| <= hi < goal)
+    for(std::size_t c = 0; c < g.ends.size(); ++c) xinf[Eigen::Index(c)] += p[std::size_t(g.ends[c][0])] - p[std::size_t(g.ends[c][1])];
+    double lambda = 0;   // the smallest weight that brings every |(1 - lambda) a + lambda b| within the goal (|b| <= hi <= goal)
     for(Eigen::Index c = 0; c < xc.size(); ++c) {
       const double a = xc[c], v = xinf[c];
       if(a > goal) lambda = (std::max)(lambda, (a - goal) / (a - v));

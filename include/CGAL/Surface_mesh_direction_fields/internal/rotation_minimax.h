@@ -14,9 +14,11 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -30,9 +32,10 @@ struct Rotation_constraint_graph
   int nodes = 0;
   std::vector<int> first, tail, head, column;   // arcs in compressed rows by tail
   std::vector<double> sign;
+  std::vector<std::array<int, 2>> ends;   // ends[c] = (a, b): the unknown of column c changes by p[a] - p[b]
 
-  // ends[c] = (a, b): the unknown of column c changes by p[a] - p[b]
-  Rotation_constraint_graph(int n, const std::vector<std::array<int, 2>>& ends) : nodes(n), first(std::size_t(n) + 1, 0)
+  Rotation_constraint_graph(int n, const std::vector<std::array<int, 2>>& column_ends)
+      : nodes(n), first(std::size_t(n) + 1, 0), ends(column_ends)
   {
     for(const auto& e : ends) { ++first[std::size_t(e[0]) + 1]; ++first[std::size_t(e[1]) + 1]; }
     for(int v = 0; v < n; ++v) first[std::size_t(v) + 1] += first[std::size_t(v)];
@@ -53,9 +56,11 @@ enum class Rotation_bound_outcome { WITHIN, CYCLE, UNDECIDED };
 
 // Whether the potentials exist for bound T (Bellman-Ford from all nodes at 0, first-in first-out,
 // at most `budget` arc relaxations). WITHIN: `p` holds them; CYCLE: a dual cycle of
-// `cycle_length` edges turns by `cycle_mean` per edge on average, more than T.
+// `cycle_length` edges turns by `cycle_mean` per edge on average, more than T (its arcs in
+// `cycle_arcs` if given: the cycle turns by the sum of sign[k] x0[column[k]] over them).
 inline Rotation_bound_outcome rotations_within(const Rotation_constraint_graph& g, const Eigen::VectorXd& x0, double T,
-                                               std::vector<double>& p, double& cycle_mean, int& cycle_length, std::size_t budget)
+                                               std::vector<double>& p, double& cycle_mean, int& cycle_length, std::size_t budget,
+                                               std::vector<int>* cycle_arcs = nullptr)
 {
   const int n = g.nodes;
   p.assign(std::size_t(n), 0.);
@@ -78,8 +83,10 @@ inline Rotation_bound_outcome rotations_within(const Rotation_constraint_graph& 
       double turn = 0, total = 0;
       int length = 0;
       const int w = x;
+      if(cycle_arcs) cycle_arcs->clear();
       do {
         const int a = pred[std::size_t(x)];
+        if(cycle_arcs) cycle_arcs->push_back(a);
         turn += g.sign[std::size_t(a)] * x0[g.column[std::size_t(a)]];
         total += weight(a);
         ++length;
@@ -128,6 +135,97 @@ inline void lowest_largest_rotation(const Rotation_constraint_graph& g, const Ei
     if(r == Rotation_bound_outcome::WITHIN) { hi = T; p.swap(q); }
     else lo = (std::min)(hi, (std::max)(T, mean));
   }
+}
+
+// A dual cycle met by the search over turning numbers (Trivial_connection with smoothest turning
+// numbers): with the turning numbers moved by d (in steps of 1/N from where the search began) it
+// turns by turn + (2 pi / N) sum over (g, m) in winding of m d[g], over `length` edges; the
+// winding numbers m are its coefficients on the generators' rows (its homology class).
+struct Turning_cycle
+{
+  double turn = 0;
+  int length = 1;
+  std::vector<std::pair<int, long>> winding;
+};
+
+inline double cycle_turn(const Turning_cycle& c, const std::vector<long>& d, int N)
+{
+  double t = c.turn;
+  for(const auto& gm : c.winding) t += (2 * M_PI / N) * double(gm.second) * double(d[std::size_t(gm.first)]);
+  return t;
+}
+
+// Moves d so that every cycle turns by at most `goal` per edge on average: greedily, by the single
+// move (one generator, a whole number of steps) that most lowers the total excess
+// sum max(0, |turn| / length - goal), the fewer steps the better among equal ones. Returns whether
+// every cycle ends within the goal (false: no single move helps any more).
+inline bool fit_turning_steps(const std::vector<Turning_cycle>& cycles, int N, double goal, std::vector<long>& d)
+{
+  auto excess = [&]() {
+    double e = 0;
+    for(const Turning_cycle& c : cycles) e += (std::max)(0., std::abs(cycle_turn(c, d, N)) / c.length - goal);
+    return e;
+  };
+  double current = excess();
+  for(int move = 0; move < 100000 && current > 0; ++move) {
+    int best_g = -1;
+    long best_step = 0;
+    double best = current;
+    for(const Turning_cycle& c : cycles) {
+      const double turn = cycle_turn(c, d, N);
+      if(std::abs(turn) / c.length <= goal) continue;
+      for(const auto& gm : c.winding) {
+        const double ideal = -turn / ((2 * M_PI / N) * double(gm.second));   // the steps that bring this cycle's turn to 0
+        const long candidates[3] = {long(std::floor(ideal)), long(std::ceil(ideal)), ideal > 0 ? 1L : -1L};
+        for(long step : candidates) {
+          if(step == 0) continue;
+          long& dg = d[std::size_t(gm.first)];
+          dg += step;
+          const double e = excess();
+          dg -= step;
+          if(e < best - 1e-12 * (1 + best) || (best_g >= 0 && e <= best && std::labs(step) < std::labs(best_step))) {
+            best = e;
+            best_g = gm.first;
+            best_step = step;
+          }
+        }
+      }
+    }
+    if(best_g < 0) return false;
+    d[std::size_t(best_g)] += best_step;
+    current = best;
+  }
+  return current <= 0;
+}
+
+// When every cycle winds around one generator g only: the least, over all turning numbers, of the
+// largest mean rotation |turn| / length of these cycles (a convex function of d[g]: walked down
+// from d[g] by single steps); every connection turns some edge by at least this. -1 when the
+// cycles wind around several generators.
+inline double one_generator_bound(const std::vector<Turning_cycle>& cycles, int N, std::vector<long> d)
+{
+  int g = -1;
+  for(const Turning_cycle& c : cycles)
+    for(const auto& gm : c.winding) {
+      if(g >= 0 && gm.first != g) return -1;
+      g = gm.first;
+    }
+  if(g < 0) return -1;
+  auto largest = [&]() {
+    double m = 0;
+    for(const Turning_cycle& c : cycles) m = (std::max)(m, std::abs(cycle_turn(c, d, N)) / c.length);
+    return m;
+  };
+  double best = largest();
+  for(long step : {1L, -1L}) {
+    for(;;) {
+      d[std::size_t(g)] += step;
+      const double m = largest();
+      if(!(m < best)) { d[std::size_t(g)] -= step; break; }
+      best = m;
+    }
+  }
+  return best;
 }
 
 } // namespace internal
