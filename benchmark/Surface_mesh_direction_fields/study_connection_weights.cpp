@@ -70,6 +70,7 @@ struct Tally
   int turned = 0;                 // solves whose turning numbers the search for rotations below pi moved
   long beyond_half = 0, beyond_pi = 0;
   double max_rotation = 0, log_energy_ratio = 0, log_unit_energy_ratio = 0;   // sums of log(E / E of the cotan rule)
+  double own_energy = 0;   // sum of the rule's own energy ||Dx||^2 (Trivial_connection_status::energy)
   void add(const Tally& t)
   {
     solves += t.solves;
@@ -81,6 +82,7 @@ struct Tally
     beyond_half += t.beyond_half;
     beyond_pi += t.beyond_pi;
     max_rotation = (std::max)(max_rotation, t.max_rotation);
+    own_energy += t.own_energy;
     log_energy_ratio += t.log_energy_ratio;
     log_unit_energy_ratio += t.log_unit_energy_ratio;
   }
@@ -157,6 +159,7 @@ Outcome measure(const Mesh& mesh, SMDF::Trivial_connection<Mesh>& tc, const std:
   o.t.solves = 1;
   o.t.principal_exact = same(SMDF::field_singularities(mesh, angles, SMDF::parameters::symmetry_order(N)));
   o.t.max_rotation = st.max_rotation;
+  o.t.own_energy = st.energy;
   o.t.beyond_half = long(st.edges_beyond_half_period);
   o.t.beyond_pi = long(st.edges_beyond_pi);
   o.t.beyond_pi_solves = st.edges_beyond_pi > 0;
@@ -248,6 +251,7 @@ int main(int argc, char** argv)
   bool failed = false;
   Tally totals[2][rule_count];   // [turning: 0 / smoothest][rule]
   std::vector<std::string> rows[2];
+  std::vector<std::string> turning_rows;   // energies with turning numbers 0 and smoothest
   for(const std::string& file : files) {
     const std::string name = file.substr(file.find_last_of('/') + 1);
     Mesh mesh;
@@ -283,6 +287,16 @@ int main(int argc, char** argv)
       }
       rows[mode].push_back(row);
     }
+    if(per_mesh[1][rule_count - 1].solves > 0) {
+      std::string row = "| `" + name + "` | " + std::to_string(topo.components[0].genus) + " | " + std::to_string(topo.betti_1()) + " |";
+      for(int r : {0, rule_count - 1}) {
+        const Tally &z = per_mesh[0][r], &sm = per_mesh[1][r];
+        if(z.solves == 0 || sm.solves == 0) { row += " |"; continue; }
+        const double e0 = z.own_energy / z.solves, es = sm.own_energy / sm.solves;
+        row += " " + fixed(e0, 1) + " / " + fixed(es, 1) + " (" + fixed(es / e0, 3) + ") |";
+      }
+      turning_rows.push_back(row);
+    }
     std::cerr << name << ": done\n";
   }
   for(int mode = 0; mode < 2; ++mode) {
@@ -305,5 +319,9 @@ int main(int argc, char** argv)
     std::cout << "\n";
     for(const std::string& row : rows[mode]) std::cout << row << "\n";
   }
+  std::cout << "\n### Energy with generator turning numbers 0 / smoothest\n\nMean ||Dx||^2 over the solves of each mesh (its own weights), "
+               "turning numbers 0 / smoothest (ratio).\n\n| Mesh | genus | generators | "
+            << rules[0].name << " | " << rules[rule_count - 1].name << " |\n| --- | --- | --- | --- | --- |\n";
+  for(const std::string& row : turning_rows) std::cout << row << "\n";
   return failed ? 1 : 0;
 }

@@ -393,6 +393,7 @@ def test_torus(smdf, c, torus, tmp):
     test_connection(smdf, c, torus, tmp, verts, faces)
     test_svg(smdf, c, torus, tmp, faces)
     test_cone_metric(smdf, c, torus, tmp, verts, faces)
+    test_connection_on_cone_metric(smdf, c, torus, tmp)
     test_rosy(smdf, c, torus, tmp)
     test_remesh(smdf, c, torus, tmp)
 
@@ -825,6 +826,60 @@ def read_rows(path):
         return [line.split() for line in f if line.strip()]
 
 
+def vertex_cycle_sums(path):
+    """Sum of the adjustment angles around every vertex's dual cycle, from a --connection-out
+    file (i j angle per interior edge, crossing halfedge i -> j from its right face into its
+    left face: counterclockwise around i, clockwise around j)."""
+    sums = {}
+    for row in read_rows(path):
+        i, j, a = int(row[0]), int(row[1]), float(row[2])
+        sums[i] = sums.get(i, 0.0) + a
+        sums[j] = sums.get(j, 0.0) - a
+    return sums
+
+
+def test_connection_on_cone_metric(smdf, c, torus, tmp):
+    """The metric-driven loop from the tool (Lai et al.): connection --lengths on the flat cone
+    metric written by cone-metric --lengths-out. With indices K / 2 pi at the cones the
+    trivial connection of a genus-0 metric is its Levi-Civita connection (x = 0); on a torus
+    only the generator periods remain: x is closed (every vertex cycle sums to 0) and non-zero
+    because the metric's holonomy around the handles is no multiple of 2 pi / N."""
+    spot = os.path.join(os.path.dirname(torus), "spot.off")
+    corners = [2202, 1077, 2587, 1488, 2221, 1090, 533, 248]
+    lengths = os.path.join(tmp, "spot_cone_metric.txt")
+    m = smdf.json(["cone-metric", spot, "--cones", ",".join("%d:pi/2" % v for v in corners), "--no-flips",
+                   "--lengths-out", lengths], "cone-metric spot, eight cones of pi/2")
+    c.check(m is not None and m.get("converged") is True and m.get("max_curvature_error", 1) < 1e-10,
+            "cone-metric spot: converged (%r)" % (m and m.get("max_curvature_error")))
+    sing = ",".join("%d:1/4" % v for v in corners)
+    r = smdf.json(["connection", spot, "--lengths", lengths, "--N", "4", "--singularities", sing],
+                  "connection spot --lengths (flat cone metric)")
+    if r:
+        c.check(r.get("success") is True and r.get("metric") == "lengths" and r.get("found") == r.get("prescribed")
+                and len(r["found"]) == 8 and r.get("max_rotation", 1) < 1e-10,
+                "connection on spot's flat cone metric with indices K / 2 pi at the cones: x = 0 (largest |x_e| %r)"
+                % r.get("max_rotation"))
+    lengths = os.path.join(tmp, "torus_cone_metric.txt")
+    m = smdf.json(["cone-metric", torus, "--cones", "0:pi/2,100:-pi/2", "--no-flips", "--lengths-out", lengths],
+                  "cone-metric torus, cones of pi/2 and -pi/2")
+    c.check(m is not None and m.get("converged") is True, "cone-metric torus: converged")
+    h = smdf.json(["holonomy", torus, "--lengths", lengths], "holonomy of the torus's cone metric")
+    conn = os.path.join(tmp, "torus_cone_connection.txt")
+    r = smdf.json(["connection", torus, "--lengths", lengths, "--N", "4", "--singularities", "0:1/4,100:-1/4",
+                   "--generator-turning", "smoothest", "--connection-out", conn], "connection torus --lengths (cone metric)")
+    if r and h:
+        sums = vertex_cycle_sums(conn)
+        periods = [g["levi_civita_holonomy"] for g in h["generators"]]
+        off_lattice = max(abs(p - round(p / (math.pi / 2)) * (math.pi / 2)) for p in periods)
+        c.check(r.get("success") is True and r.get("found") == r.get("prescribed") and len(sums) > 0
+                and max(abs(v) for v in sums.values()) < 1e-9,
+                "connection on the torus's cone metric: every vertex cycle of x sums to 0 (largest %r)"
+                % (max(abs(v) for v in sums.values()) if sums else None))
+        c.check(off_lattice > 0.1 and r.get("max_rotation", 0) > 1e-3,
+                "connection on the torus's cone metric: only the generator periods remain, non-zero (holonomies %r, "
+                "largest |x_e| %r)" % (periods, r.get("max_rotation")))
+
+
 def test_connection(smdf, c, torus, tmp, verts, faces):
     nv, nf = len(verts), len(faces)
     edges = {(min(f[i], f[(i + 1) % 3]), max(f[i], f[(i + 1) % 3])) for f in faces for i in range(3)}
@@ -843,6 +898,10 @@ def test_connection(smdf, c, torus, tmp, verts, faces):
         c.check(r.get("prescribed") == want, "connection: prescribed %r" % r.get("prescribed"))
         c.check(r.get("found") == want, "connection: found == prescribed (%r)" % r.get("found"))
         c.check(r.get("generator_turning_numbers") == [0, 0], "connection: turning numbers [0, 0]")
+        c.check(all(r.get(k) == 0 for k in ("rotation_lower_bound", "rotation_bound_any_turning",
+                                             "generators_turned_for_rotation", "minimax_blend"))
+                and r.get("edges_beyond_pi") == 0,
+                "connection: no edge beyond pi, so no bound, search or blend reported")
         c.check(r.get("success") is True and r.get("residual", 1) < 1e-9 and
                 r.get("max_holonomy_error", 1) < 1e-9 and r.get("energy", -1) > 0,
                 "connection: success, residual %r, holonomy error %r"
