@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The README's two entry points (CONVENTIONS section 9):
 #   ./run.sh example   install missing Debian packages, build smdf (Release), run it on data/spot.off
 #   ./run.sh test      install missing Debian packages, build everything, run ctest
@@ -18,10 +19,10 @@ JOBS=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 PACKAGES=(cmake g++ libcgal-dev libeigen3-dev libsuitesparse-dev libboost-dev libbenchmark-dev ccache doxygen python3 libopenblas0-pthread clang libclang-rt-14-dev)
 
 usage() {
-  echo "usage: $0 example|test" >&2
+  echo "usage: $0 example|test|sanitize|fuzz" >&2
   echo "  example  build the smdf tool and run it on data/spot.off (cross field, cone metric, SVGs)" >&2
   echo "  test     build everything and run the test suite (ctest)" >&2
-  echo "  sanitize build the tests and smdf with ASan + UBSan and run them" >&2
+  echo "  sanitize build the library's tests with ASan + UBSan and run them" >&2
   echo "  fuzz     build the libFuzzer targets with clang and run each for a bounded time" >&2
   exit 2
 }

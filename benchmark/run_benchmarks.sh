@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Builds the benchmark drivers and runs them at every size (benchmark/README.md).
 #
 #   benchmark/run_benchmarks.sh [driver] [extra Google Benchmark flags...]

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Run with `cmake -P` by the CTest test `downstream_find_package` (see
 # Surface_mesh_direction_fieldsTesting.cmake): install the build tree into a fresh prefix,
 # then configure, build and run a standalone consumer that uses find_package() on it.

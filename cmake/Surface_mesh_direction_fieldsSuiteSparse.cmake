@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Finds SuiteSparse's CHOLMOD and SPQR and defines the imported targets
 #   SuiteSparse::CHOLMOD   cholmod + amd, colamd, camd, ccolamd, suitesparseconfig, LAPACK, BLAS
 #   SuiteSparse::SPQR      spqr + SuiteSparse::CHOLMOD

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Test helpers for Surface_mesh_direction_fields (included by the top-level CMakeLists.txt).
 #
 #   smdf_add_test(<name> <target> [args...])

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # smdf_unity_groups(target dir): compile the smdf tool's heavy sources in dir as two unity files
 # (used by the tool and by the fuzz target that links the whole tool).
 include_guard(GLOBAL)

@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
 // Benchmark of compute_cone_metric() (cone_metric.h): discrete conformal vertex scaling, Newton +
 // CHOLMOD, on a genus-0 mesh with 8 cones of pi/2 (a "cube" metric: 8 * pi/2 = 4 pi = 2 pi chi).
 //

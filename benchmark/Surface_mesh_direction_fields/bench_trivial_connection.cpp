@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
 // Benchmarks of Trivial_connection (Trivial_connection.h) on meshes of 10k, 100k, 400k and 1M
 // faces (see benchmark_util.h for how the meshes are made and benchmark/README.md for the output).
 //

@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
 // Shared helpers of the Surface_mesh_direction_fields benchmarks (Google Benchmark 1.7).
 //
 //  * Meshes of a given size, built once per process and cached:

@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
 // Flat cone metrics by discrete Ricci flow (conformal vertex scaling): a cone pair of index
 // +1/4 and -1/4 that the input triangulation can carry, then a cone of index -3/2 balanced by two
 // of +3/4, which needs intrinsic edge flips. Each result is checked by recomputing the curvature

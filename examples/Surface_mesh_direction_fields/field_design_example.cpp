@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
 // Metric-driven N-RoSy field design (Lai et al. 2010) on a closed mesh: a flat cone metric with
 // two cones, its holonomy group and the parallel-field test, the rotation-compensated cross field,
 // an edit by a direction constraint, and hatching strokes along the result. Every field is read

@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
 // Levi-Civita holonomy and generalised holonomy (a rigid motion of the plane) of the homology
 // generators of a triangle mesh, and a check of the discrete identity "holonomy around the
 // dual cell of an interior vertex = angle defect (mod 2*pi)".

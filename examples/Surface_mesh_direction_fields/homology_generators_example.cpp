@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
 // Topology of a triangle mesh and a basis of its first homology group by the tree-cotree
 // decomposition: the number of generators of each connected component is its first Betti
 // number, 2g for a closed component and 2g + b - 1 with b >= 1 boundary loops.

@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
 // Discrete curvature of a triangle mesh, first for the metric of its embedding and then for a
 // modified intrinsic metric given as an edge-length map: the curvature changes from vertex to
 // vertex, but its total stays 2*pi*chi (discrete Gauss-Bonnet).

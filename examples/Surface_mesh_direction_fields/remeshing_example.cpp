@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
 // Regular quad remeshing (Lai et al. 2010, section 5) of a genus-0 mesh through the box
 // polycube metric: eight cones of pi/2 at the vertices extreme in the diagonal directions, the
 // box's edges as shortest paths under their flat cone metric, the box metric, its development

@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
 // Trivial connections (Crane, Desbrun, Schroeder 2010): a direction field with chosen
 // singularities (Figure 1), generator turning numbers on a torus (Figure 6), a cross field
 // (N = 4) with directional constraints, soft guide directions, and an index +20 singularity

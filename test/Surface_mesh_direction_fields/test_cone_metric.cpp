@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
 // Flat cone metrics by discrete conformal vertex scaling (compute_cone_metric) and planar layout
 // of flat disks (lay_out_disk), for Surface_mesh and Polyhedron_3. Every converged result is
 // checked independently: curvature of the output metric recomputed by compute_vertex_curvatures,

@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
 // Foundation invariants on every mesh of ../shared/data/meshes and on generated meshes, for
 // both CGAL::Surface_mesh and CGAL::Polyhedron_3: topology counts against MANIFEST.tsv,
 // generator count = first Betti number, independence (rank and intersection numbers),

@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
 // Randomised verification at scale over the shared meshes (Surface_mesh and Polyhedron_3):
 // at least 1000 random trivial-connection solves (N in {1, 2, 3, 4, 6}, indices +-k/N with
 // |k| <= 3 summing to the Euler characteristic, random generator turning numbers, random hard

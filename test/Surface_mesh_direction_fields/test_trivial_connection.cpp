@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
 // Trivial connections (Crane, Desbrun, Schroeder 2010) on real meshes of several genera, with and
 // without boundary, for Surface_mesh and Polyhedron_3: randomised chi-consistent singularity sets
 // with integer and 1/N indices; every solve checks residual, holonomy of every basis cycle, the

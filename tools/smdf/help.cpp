@@ -30,7 +30,7 @@ void print_usage(std::ostream& os)
   os << "usage: smdf <command> [options] MESH\n"
         "       smdf <command> --help\n"
         "       smdf --version\n\n"
-        "Reads a triangle mesh (OFF, OBJ or PLY; it must be an orientable 2-manifold, possibly\n"
+        "Reads a triangle mesh (OFF, OBJ, PLY or STL; it must be an orientable 2-manifold, possibly\n"
         "with boundary and several components) and prints one JSON object on stdout. Vertex and\n"
         "face indices are 0-based in file order. On failure prints one line to stderr and exits\n"
         "with 1 (input that cannot be processed) or 2 (usage error); exit code 3 means the JSON\n"

@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
 /*!
 \ingroup PkgSurfaceMeshDirectionFieldsConcepts
 \brief A progress callback of the discrete Ricci flow of

@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
 /*!
 \ingroup PkgSurfaceMeshDirectionFieldsConcepts
 \brief An intrinsic metric of a triangle mesh, given as one length per edge.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Regenerates the field-design pictures of the manual (section "Pictures of Field Design") with
 # the smdf tool: ./make_field_design_figures.sh [path/to/smdf]. Spot ships in data/; the face,
 # Spot's Keenan Crane original and the genus-2 model come from ../shared/data/meshes.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Regenerates the remeshing pictures of the manual (section "Pictures of Remeshing") with the smdf
 # tool: ./make_remeshing_figures.sh [path/to/smdf]. Spot ships in data/.
 set -euo pipefail

@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
 // Downstream consumer: compiled against an installed Surface_mesh_direction_fields found
 // with find_package().  Gauss-Bonnet on a regular tetrahedron: total angle defect = 4*pi.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
 // libFuzzer target: the command-line tool's file parsers, through the tool itself (main.cpp is
 // compiled with main renamed): the bytes after the first one are written to a file that is
 // passed, on data/torus.off, as --singularities-file or --constraints (connection), --lengths

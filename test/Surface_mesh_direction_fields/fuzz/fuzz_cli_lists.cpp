@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
 // libFuzzer target: the command-line tool's parsers of numbers, angles, index lists
 // (--singularities, --generator-turning, --cones) and argument vectors. The first byte chooses
 // the parser, the rest is the text (for argument vectors: tokens separated by NUL bytes). Every

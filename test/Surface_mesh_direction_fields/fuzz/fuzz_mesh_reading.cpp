@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
 // libFuzzer target: the mesh reading and validation of the package on arbitrary bytes.
 // The first byte chooses the format ('o' OFF, 'b' OBJ, 'p' PLY, 's' STL; other values by their
 // remainder), the rest is the file. Every input must end in a mesh or an Input_error; a mesh

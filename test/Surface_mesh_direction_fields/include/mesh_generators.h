@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
 // Meshes generated in code, so tests do something meaningful without ../shared.
 #ifndef SMDF_TEST_MESH_GENERATORS_H
 #define SMDF_TEST_MESH_GENERATORS_H

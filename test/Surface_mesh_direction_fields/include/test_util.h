@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
 // Small always-on test helpers (Release builds define NDEBUG, so no assert()).
 #ifndef SMDF_TEST_UTIL_H
 #define SMDF_TEST_UTIL_H

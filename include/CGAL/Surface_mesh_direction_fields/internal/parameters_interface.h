@@ -1,4 +1,5 @@
 // Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
 // X-macro list of the package's own named parameters (no include guard on purpose).
 // Each line: CGAL_SMDF_add_named_parameter(tag_type, tag_value, function_name)
 
