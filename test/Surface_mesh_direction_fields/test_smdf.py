@@ -482,6 +482,14 @@ def test_remesh(smdf, c, torus, tmp):
             and (rc == 0) == (doc.get("inverted_faces") == 0),
             "remesh spot --polycube obelisk: quads on the box, triangles on the pyramid, valence 5 along the ring, "
             "exit 3 exactly when faces are inverted (rc=%s, %r)" % (rc, {k: doc.get(k) for k in ("faces_by_size", "inverted_faces")}))
+    # the obelisk's nine corners: four of pi/2 at the base, four of pi/3 on the ring, 2 pi/3 at the apex
+    irr = doc.get("irregular_vertices", [])
+    c.check(len(irr) == 9 and all(v.get("cone") is not None for v in irr)
+            and abs(sum(v["curvature"] for v in irr) - 4 * math.pi) < 1e-9
+            and sorted(round(v["curvature"] / (math.pi / 6)) for v in irr) == [2, 2, 2, 2, 3, 3, 3, 3, 4]
+            and doc.get("timings", {}).get("compensation_s", 0) is None and doc.get("edge_length", 0) > 0,
+            "remesh spot --polycube obelisk: the only irregular vertices are P's nine corners, curvatures pi/3 (ring), "
+            "pi/2 (base), 2 pi/3 (apex), summing to 4 pi (%r)" % [(v.get("cone"), v.get("curvature")) for v in irr])
     smdf.error(["remesh", cube, "--grid", "mixed", "--edge-length", "0.25", "--out", out], "remesh --grid mixed without a polyhedron", 2,
                "polyhedron")
     rc, o, err = smdf.run(["remesh", torus, "--edge-length", "0.1", "--out", out])
@@ -560,6 +568,8 @@ def test_remesh_cones_and_files(smdf, c, torus, tmp, cube, spot):
     smdf.error(["remesh", spot, "--polycube", octa, "--cones", wrong, "--faces", "500", "--out", out], "remesh: P does not match the cones", 1,
                ["does not match the cones", str(axis[5])])
     right = ",".join("%d:2pi/3" % v for v in axis)
+    smdf.error(["remesh", spot, "--polycube", octa, "--grid", "quad", "--faces", "500", "--out", out],
+               "remesh: --grid quad with a polyhedron of triangles", 2, ["all triangles", "--grid triangle"])
     docs = []
     for p in (octa, "octahedron"):
         rc, o, err = smdf.run(["remesh", spot, "--polycube", p, "--cones", right, "--faces", "1500", "--out", out])

@@ -313,6 +313,11 @@ Json run_remesh(const Args& args)
       read_polyhedron(polycube, mesh, corners, pfaces);
       std::size_t quads = 0;
       for(const auto& f : pfaces) quads += f.size() == 4;
+      const char* faces_are = quads == pfaces.size() ? "quad" : quads == 0 ? "triangle" : "mixed";
+      if(args.has("grid") && grid_name != faces_are && !(grid_name == "mixed" && quads == pfaces.size()))
+        throw Usage_error(polycube + ": the polyhedron's faces are " +
+                          (quads == pfaces.size() ? std::string("all squares") : quads == 0 ? std::string("all triangles") : std::string("squares and triangles")) +
+                          ", which give --grid " + faces_are + ", not --grid " + grid_name);
       mixed = grid_name == "mixed" || (quads != 0 && quads != pfaces.size());
       grid = quads ? SMDF::SQUARE_GRID : SMDF::TRIANGULAR_GRID;
       out["grid"] = mixed ? "mixed" : quads ? "quad" : "triangle";
@@ -365,7 +370,9 @@ Json run_remesh(const Args& args)
       out["subdivisions"] = n;
       Json timings = Json::object();
       timings["metric_s"] = metric_s;
+      timings["compensation_s"] = Json();   // polyhedron_remesh() embeds P's faces and grids them in one call
       timings["tessellation_s"] = clock.lap();
+      out["edge_length"] = side / n;
       if(num_faces(remesh) > 0) {
         Json sizes = Json::object(), val = Json::object();
         sizes["4"] = rs.quads;
@@ -375,6 +382,32 @@ Json run_remesh(const Args& args)
         out["faces_by_size"] = std::move(sizes);
         out["valences"] = std::move(val);
         out["unexpected_valences"] = rs.unexpected_valences;
+        // irregular: a vertex whose faces do not fill 2 pi in the grid's angles (4 squares, 6
+        // triangles, or 2 squares and 3 triangles), a cone of curvature 2 pi - sum; with the
+        // corner of P at the same point
+        std::map<std::array<double, 3>, int> corner_at;
+        for(vertex_descriptor v : corners) {
+          const K::Point_3& q = mesh.point(v);
+          corner_at[{{q.x(), q.y(), q.z()}}] = int(index(v));
+        }
+        Json irr = Json::array();
+        for(auto v : vertices(remesh)) {
+          if(is_border(v, remesh)) continue;
+          int q = 0, t = 0;
+          for(auto f : CGAL::faces_around_target(halfedge(v, remesh), remesh))
+            (CGAL::halfedges_around_face(halfedge(f, remesh), remesh).size() == 4 ? q : t) += 1;
+          const double curvature = 2 * CGAL_PI - q * CGAL_PI / 2 - t * CGAL_PI / 3;
+          if(std::abs(curvature) < 1e-9) continue;
+          Json o = Json::object();
+          o["vertex"] = index(v);
+          const K::Point_3& p = remesh.point(v);
+          const auto it = corner_at.find({{p.x(), p.y(), p.z()}});
+          if(it != corner_at.end()) o["cone"] = it->second; else o["cone"] = Json();
+          o["valence"] = q + t;
+          o["curvature"] = curvature;
+          irr.push_back(std::move(o));
+        }
+        out["irregular_vertices"] = std::move(irr);
         out["inverted_faces"] = rs.inverted_faces;
         out["quality"] = remesh_quality(remesh);
         out["distance_over_edge_length"] = remesh_distances(mesh, remesh, side / n);
@@ -541,7 +574,12 @@ Command remesh_command()
           "{min_corner_angle_deg, max_corner_angle_deg, min_scaled_jacobian, mean_scaled_jacobian},\n"
           "distance_over_edge_length: {remesh_to_input, input_to_remesh}, area_ratio (remesh over\n"
           "input), timings: {metric_s,\n"
-          "compensation_s, tessellation_s}, success}. Exit code 3 (JSON printed) when the metric is\n"
+          "compensation_s, tessellation_s}, success}. With a mixed grid (obelisk, or a FILE of squares\n"
+          "and triangles) each face of P gets its own grid: subdivisions, unexpected_valences, and\n"
+          "irregular_vertices: [{vertex, cone, valence, curvature}] (vertices whose faces do not fill\n"
+          "2 pi in the grid's angles, cone: P's corner there or null); compensation_s is null (in\n"
+          "tessellation_s). --grid must agree with a FILE's faces (quad, triangle or mixed).\n"
+          "Exit code 3 (JSON printed) when the metric is\n"
           "incompatible with the grid, the edge length does not fit its lattice, or the read-back\n"
           "fails (valences, inverted faces); the remesh is still written when its faces exist.\n",
           run_remesh};

@@ -159,7 +159,13 @@ Json run_rosy(const Args& args)
   auto targets = mesh.add_property_map<vertex_descriptor, double>("v:smdf_rosy_target", 0.).first;
   for(const auto& c : cones) targets[c.first] = c.second;
   const Boundary_geometry bgeo = open ? boundary_geometry(mesh) : Boundary_geometry();
-  if(open) open_mesh_targets(mesh, bgeo, N, opt.boundary, cones, targets);
+  if(open) {
+    try {
+      open_mesh_targets(mesh, bgeo, N, opt.boundary, cones, targets);
+    } catch(const Error& e) {
+      throw Error(file + ": " + e.what());   // the same "<file>: " prefix as every other input error
+    }
+  }
   const Edge_length_property lengths = mesh.add_property_map<edge_descriptor, double>("e:smdf_rosy_length", 0.).first;
   const Face_angle_property input_angles = mesh.add_property_map<face_descriptor, double>("f:smdf_rosy_angle", 0.).first;
   SMDF::Cone_metric_status cm;

@@ -223,8 +223,11 @@ public:
   ///       largest-mean-cycle problem on the dual graph, by bisection and Bellman-Ford) and blended
   ///       in with the smallest weight that brings every edge within the limit (and below
   ///       \f$\pi\f$, also for a limit above it), or below \f$\pi\f$ if the limit cannot be
-  ///       reached; when no connection can stay below
-  ///       \f$\pi\f$, a dual cycle proves it (`rotation_lower_bound`). 0 turns it off (the
+  ///       reached; when no connection can stay below \f$\pi\f$, a dual cycle proves it
+  ///       (`rotation_lower_bound`) and the result turns no edge by more than that bound. With
+  ///       smoothest turning numbers, those are first searched for ones that let every edge stay
+  ///       below \f$\pi\f$ (`generators_turned_for_rotation`), or a proof that none can
+  ///       (`rotation_bound_any_turning`). 0 turns it off (the
   ///       paper's minimum-norm solution). Not with guide directions or `SPQR_MINIMUM_NORM`}
   ///     \cgalParamType{`double`, non-negative}
   ///     \cgalParamDefault{\f$0.8\pi\f$ (chosen on the shared test meshes: see the manual's section on the choice of weights)}
@@ -356,6 +359,10 @@ public:
   /// local minimum that is never worse than all turning numbers 0 (`exact` is then `false`).
   /// Factors the system if needed. Throws `Input_error` with guide directions (their energy
   /// is not this quadratic form) or with the `SPQR_MINIMUM_NORM` solver.
+  /// With rotation limiting (the default), solve() chooses them again on every reweighting
+  /// round and, where no connection with them keeps every edge below \f$\pi\f$, moves the
+  /// fewest it can until one does (Trivial_connection_status::generators_turned_for_rotation);
+  /// generator_turning_number() returns the ones the last solve used.
   Smoothest_turning_numbers choose_smoothest_generator_turning_numbers()
   {
     if(!guide_faces_.empty() || solver_kind_ != CHOLMOD_NORMAL_EQUATIONS)
