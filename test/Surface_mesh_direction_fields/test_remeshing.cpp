@@ -155,9 +155,9 @@ void check_remesh(const InputMesh& input, const Surface_mesh& in_sm, const Surfa
   const long chi_out = long(num_vertices(out)) - long(num_edges(out)) + long(num_faces(out));
   std::map<int, std::size_t> irregular;
   const int regular = sides == 4 ? 4 : 6;
-  for(auto v : vertices(out)) {
+  for(auto v : vertices(out)) {   // interior vertices (those on an open input's boundary have fewer faces)
     const int d = int(degree(v, out));
-    if(d != regular) ++irregular[d];
+    if(d != regular && !CGAL::is_border(v, out)) ++irregular[d];
   }
   SMDF_CHECK_MSG(wrong_size == 0 && CGAL::is_valid_polygon_mesh(out), what << ": all faces have " << sides << " sides (" << wrong_size << " do not)");
   SMDF_CHECK_MSG(chi_out == chi_in, what << ": Euler characteristic " << chi_out << ", input " << chi_in);
@@ -299,6 +299,48 @@ void flat_torus()
       SMDF_CHECK_MSG(!st.success && !st.failing_edges.empty(), "sheared flat torus: the square grid does not fit (" << st.message << ")");
     }
     mesh.remove_property_map(lengths);
+  }
+}
+
+// Open meshes: a planar unit square under its own flat metric (four boundary corners of pi/2)
+// gives 16 quads of 1/4 along its sides, a disk like the input; with a square hole of one grid
+// cell whose corners are grid points, 15 quads and an annulus; with a hole whose corners are no
+// grid points (at 1/3), the boundary cannot follow the grid and the failing boundary edges are
+// named.
+void open_square()
+{
+  const std::size_t n = 24;
+  for(int hole = 0; hole < 3; ++hole) {
+    const std::size_t lo = hole == 1 ? 6 : 8, hi = hole == 1 ? 12 : 10;   // [1/4, 1/2]^2 or [1/3, 5/12]^2
+    smdf_test::Soup soup;
+    for(std::size_t i = 0; i <= n; ++i)
+      for(std::size_t j = 0; j <= n; ++j) soup.points.push_back({{double(i) / n, double(j) / n, 0.}});
+    for(std::size_t i = 0; i < n; ++i)
+      for(std::size_t j = 0; j < n; ++j) {
+        if(hole && i >= lo && i < hi && j >= lo && j < hi) continue;
+        const std::size_t a = i * (n + 1) + j, b = (i + 1) * (n + 1) + j;
+        soup.faces.push_back({a, b, b + 1});
+        soup.faces.push_back({a, b + 1, a + 1});
+      }
+    Surface_mesh mesh;
+    smdf_test::soup_to_mesh(soup, mesh);
+    // unreferenced vertices inside the hole
+    std::vector<Surface_mesh::Vertex_index> isolated;
+    for(auto v : vertices(mesh)) if(degree(v, mesh) == 0) isolated.push_back(v);
+    for(auto v : isolated) mesh.remove_vertex(v);
+    mesh.collect_garbage();
+    const auto dev = SMDF::develop_flat_metric(mesh);
+    Surface_mesh out;
+    const auto st = SMDF::tessellate_flat_metric(mesh, dev, SMDF::SQUARE_GRID, 0.25, out);
+    if(hole < 2) {
+      const std::string what = hole ? "unit square with a hole of one cell, quads of 1/4" : "unit square, quads of 1/4";
+      check_remesh(mesh, mesh, out, st, 4, {}, hole ? 15 : 16, what);
+      SMDF_CHECK_MSG(st.euler_characteristic == 1 - hole && st.boundary_loops == std::size_t(1 + hole),
+                     what << ": the input's topology (" << st.euler_characteristic << ", " << st.boundary_loops << " loops)");
+    } else {
+      SMDF_CHECK_MSG(!st.success && num_faces(out) == 0 && st.message.find("does not divide") != std::string::npos,
+                     "square with a hole whose corners are no grid points: refused, the metric's lattice named (" << st.message << ")");
+    }
   }
 }
 
@@ -782,6 +824,7 @@ int main()
   cube();
   octahedron();
   flat_torus();
+  open_square();
   const std::string dir = smdf_test::shared_data_dir();
   if(!dir.empty()) { box_polycube(dir); seam_relaxation(dir); flipped_flat_metric(dir); delaunay_refinement(dir); octahedron_polyhedron(dir); obelisk(dir); }
   else std::cout << "../shared/data not found: box polycube on shared meshes skipped" << std::endl;

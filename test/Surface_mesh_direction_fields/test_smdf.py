@@ -443,7 +443,8 @@ def test_remesh(smdf, c, torus, tmp):
                 and r.get("inverted_faces") == 0 and len(r.get("irregular_vertices", [])) == 8
                 and all(v["cone"] is not None and v["valence"] == 3 for v in r["irregular_vertices"]),
                 "remesh cube: 96 quads, the 8 cones of valence 3 (%r)" % {k: r.get(k) for k in ("faces_by_size", "valences")})
-        c.check(r["distance_over_edge_length"]["remesh_to_input"] < 1e-9, "remesh cube: output vertices on the input")
+        c.check(r["distance_over_edge_length"]["vertices_to_input"] < 1e-9 and r["distance_over_edge_length"]["remesh_to_input"] < 1e-9,
+                "remesh cube: output vertices and faces on the input (the quads lie in the cube's faces)")
         verts, faces = read_off(out)
         edges = set()
         for f in faces:
@@ -465,6 +466,10 @@ def test_remesh(smdf, c, torus, tmp):
         c.check(r.get("success") is True and r.get("valences", {}).get("3") == 8 and set(r["valences"]) == {"3", "4"}
                 and r.get("inverted_faces") == 0 and r["quality"]["min_scaled_jacobian"] > 0,
                 "remesh spot, box polycube: quads, 8 vertices of valence 3, none inverted (%r)" % r.get("quality"))
+        d = r.get("distance_over_edge_length", {})
+        c.check(d.get("vertices_to_input", 1) < 1e-9 and 0 < d.get("remesh_to_input", 1) < 1 and 0 < d.get("input_to_remesh", 1) < 1,
+                "remesh spot, box polycube: vertices on the input, its faces and the input within one edge length of each other "
+                "(%r)" % d)
     r = smdf.json(["remesh", cube, "--polycube", "octahedron", "--faces", "300", "--out", out], "smdf remesh cube --polycube octahedron")
     c.check(r is not None and r.get("grid") == "triangle" and set(r.get("faces_by_size", {})) == {"3"}
             and r.get("valences", {}).get("4") == 6 and set(r["valences"]) == {"4", "6"},

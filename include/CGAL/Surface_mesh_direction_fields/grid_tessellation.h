@@ -39,10 +39,15 @@ struct Grid_tessellation_status
   /// `spacing` is then the metric's own: the edge length must divide it
   Tessellation_compatibility compatibility;
   /// edges of the cut graph (indices of the input's index map) whose motion is not a symmetry
-  /// of the grid
+  /// of the grid, and on open meshes the boundary edge ending at every boundary corner (geodesic
+  /// curvature not 0) that is no grid point
   std::vector<std::size_t> failing_edges;
   double edge_length = 0;              ///< the grid's edge length on the surface
   std::size_t vertices = 0, faces = 0; ///< of the output
+  /// of the output, which success requires to be the input's: its Euler characteristic and its
+  /// number of boundary loops
+  long euler_characteristic = 0;
+  std::size_t boundary_loops = 0;
   /// valence histogram of the output's interior vertices: `valences[k]` vertices of valence k
   std::vector<std::size_t> valences;
   /// output vertices of irregular valence, each with the input cone it lies on (-1 if none)
@@ -133,6 +138,10 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
     throw Input_error(Input_error::INVALID_ARGUMENT, "the grid's edge length must be positive, got " + std::to_string(edge_length));
   const bool square = grid == SQUARE_GRID;
   const int sides = square ? 4 : 3;
+  const internal::Topology_arrays& topo = dev.im_.topology_arrays();
+  if(topo.components.size() != 1)   // one frame per component: the holonomy test would mix them
+    throw Input_error(Input_error::INVALID_ARGUMENT, "the mesh has " + std::to_string(topo.components.size()) +
+                                                         " connected components; tessellate each one separately");
 
   // 1. the holonomy test on the cut graph's motions, in the one frame of the development
   Holonomy_group group;
@@ -150,7 +159,38 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
     while(g != h) { g = m.next[std::size_t(g)]; ++k; }
     group.cone_positions.push_back(dev.corners_[std::size_t(f)][std::size_t(k)]);
   }
-  // several components: one frame each; the test then only holds for one component.
+  // Open meshes: the boundary must run along grid lines. Its corners (boundary vertices whose
+  // geodesic curvature is not 0, within the development's tolerance) must be grid points: each
+  // enters the test as a pure translation from the grid's origin (the first cone, or else the
+  // first corner) to it, reported as the corner's boundary edge if it fails. Between corners the
+  // boundary is straight, and with corners at grid points and turning by the grid's angles it
+  // follows the grid's lines.
+  {
+    const std::vector<double>& Kb = dev.im_.curvatures();
+    std::vector<std::pair<Point_2, std::size_t>> corners;
+    for(const auto& loop : topo.loops)
+      for(int hb : loop) {
+        const int v = m.target[std::size_t(hb)];
+        if(!(std::abs(Kb[std::size_t(v)]) > 1e-6)) continue;
+        int hv = hb ^ 1;   // from v, along the border edge, inside the mesh
+        const int f = m.face[std::size_t(hv)];
+        int g = m.face_halfedge[std::size_t(f)], k = 0;
+        while(g != hv) { g = m.next[std::size_t(g)]; ++k; }
+        corners.emplace_back(dev.corners_[std::size_t(f)][std::size_t(k)], std::size_t(hb >> 1));
+      }
+    if(!corners.empty()) {
+      if(group.cone_positions.empty()) group.cone_positions.push_back(corners.front().first);
+      const Point_2 o = group.cone_positions.front();
+      for(const auto& c : corners) {
+        Rigid_motion_2 t;
+        t.rotation = 0;
+        t.translation = Vector_2(c.first.x() - o.x(), c.first.y() - o.y());
+        group.motions.push_back(t);
+        group.rotations.push_back(0.);
+        group_edge.push_back(c.second);
+      }
+    }
+  }
   // The grid of this edge length first: only its orientation is searched, exactly at any size.
   const double h = edge_length;
   st.compatibility = tessellation_compatibility_at(group, grid, h, 1e-6);
@@ -340,7 +380,51 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
   if(points.size() > 50000000) { st.message = "more than 5e7 grid points: edge length too small"; return st; }
 
   // 4. faces: from every grid point that is not a cone, the unit squares (triangles) at it, walked
+  // the halfedge of face f that leaves its corner at p (exactly), or -1
+  auto corner_at = [&](int f, const Point_2& p) {
+    int g = m.face_halfedge[std::size_t(f)];
+    for(int k = 0; k < 3; ++k, g = m.next[std::size_t(g)])
+      if(uv[std::size_t(f)][std::size_t(k)] == p) return g;
+    return -1;
+  };
+  // whether the direction from the corner of f at halfedge g's source towards `to` lies in the
+  // face's closed angle there
+  auto in_angle = [&](int f, int g, const Point_2& to) {
+    int k = 0;
+    for(int x = m.face_halfedge[std::size_t(f)]; x != g; x = m.next[std::size_t(x)]) ++k;
+    const EP p = ep(uv[std::size_t(f)][std::size_t(k)]), a = ep(uv[std::size_t(f)][std::size_t((k + 1) % 3)]),
+             b = ep(uv[std::size_t(f)][std::size_t((k + 2) % 3)]);
+    return CGAL::orientation(p, a, ep(to)) != CGAL::RIGHT_TURN && CGAL::orientation(p, b, ep(to)) != CGAL::LEFT_TURN;
+  };
   auto walk = [&](int f, Point_2 from, Point_2 to, internal::Lattice_motion& carried, int& where) -> bool {
+    // Starting at a boundary vertex: first turn around it to the face whose angle holds the
+    // direction, counterclockwise, or clockwise where the boundary stops that way (a straight
+    // walk from the wrong face would leave the surface; inside, the walk turns by itself).
+    const int g0 = corner_at(f, from);
+    if(g0 >= 0 && m.is_boundary_vertex(m.source(g0)) && !in_angle(f, g0, to)) {
+      bool turned = false;
+      for(int way = 0; way < 2 && !turned; ++way) {
+        int ff = f, g = g0;
+        Point_2 fr = from, tt = to;
+        internal::Lattice_motion c = carried;
+        for(std::size_t step = 0; step <= nf && !turned; ++step) {
+          const int cross = way == 0 ? m.next[std::size_t(m.next[std::size_t(g)])] : g;   // into the corner, or out of it
+          const int nf2 = m.face[std::size_t(cross ^ 1)];
+          if(nf2 < 0) break;
+          const int e = cross >> 1;
+          if(!dev.tree_[std::size_t(e)]) {
+            const internal::Lattice_motion t = (cross & 1) ? motion[std::size_t(e)] : motion[std::size_t(e)].inverse();
+            fr = t(fr);
+            tt = t(tt);
+            c = t * c;
+          }
+          ff = nf2;
+          g = corner_at(ff, fr);
+          if(g < 0) break;
+          if(in_angle(ff, g, tt)) { f = ff; from = fr; to = tt; carried = c; turned = true; }
+        }
+      }
+    }
     for(std::size_t it = 0; it < 4 * nf + 16; ++it) {
       int exit = -1, any = -1;
       int g = m.face_halfedge[std::size_t(f)];
@@ -449,6 +533,17 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
     }
     return std::size_t(sides);
   };
+  // On an open mesh a face's edges can all lie on the surface around a hole smaller than the
+  // face: it is kept only if the walk from its corner to its centre stays on the surface.
+  const bool open = !topo.loops.empty();
+  auto centre_on_surface = [&](std::size_t i, int dir) {
+    const std::array<double, 2> d = rotation_of[std::size_t(dir)].rotate(1, 0), e = step_rotation.rotate(d[0], d[1]);
+    const double w = square ? 0.5 : 1. / 3;
+    const Point_2 at = seat[i].second, centre(at.x() + w * (d[0] + e[0]), at.y() + w * (d[1] + e[1]));
+    internal::Lattice_motion c;
+    int where = -1;
+    return walk(seat[i].first, at, centre, c, where);
+  };
   // Each face is kept by the first of its corners (in point order) that is not a cone: from that
   // corner only, so no face is kept twice. Two threads, each over half of the points.
   std::vector<Found> found[2];
@@ -466,6 +561,7 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
         bool first = true;
         for(std::size_t k = 1; k < count; ++k) if(corners[k] < i && !is_cone(corners[k])) first = false;
         corners[4] = count;
+        if(first && open && !centre_on_surface(i, dir)) continue;   // its edges run around a hole
         if(first) found[part].push_back(corners);
       }
     }
@@ -540,6 +636,28 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
   }
   st.vertices = num_vertices(out);
   st.faces = num_faces(out);
+  // the input's topology: its Euler characteristic and boundary loops (a grid point left without
+  // a face, or faces missing along the boundary, would change them)
+  {
+    std::size_t loops = 0;
+    auto seen = get(CGAL::dynamic_halfedge_property_t<int>(), out);
+    for(auto hd : halfedges(out)) put(seen, hd, 0);
+    for(auto hd : halfedges(out)) {
+      if(!CGAL::is_border(hd, out) || get(seen, hd)) continue;
+      ++loops;
+      for(auto g = hd; !get(seen, g); g = next(g, out)) put(seen, g, 1);
+    }
+    const long chi_in = topo.components[0].euler_characteristic();
+    const long chi_out = long(num_vertices(out)) - long(num_edges(out)) + long(num_faces(out));
+    st.euler_characteristic = chi_out;
+    st.boundary_loops = loops;
+    if(chi_out != chi_in || loops != topo.loops.size()) {
+      st.message = "the remesh has Euler characteristic " + std::to_string(chi_out) + " and " + std::to_string(loops) +
+                   " boundary loops, the input " + std::to_string(chi_in) + " and " + std::to_string(topo.loops.size()) +
+                   " (faces are missing along the boundary, or a grid point got none)";
+      return st;
+    }
+  }
   // inverted faces: the polygon's area vector against the sum of the input normals under its corners
   auto input_normal = [&](const Where& w) {
     const int f = w.kind == 0 ? w.id : w.kind == 1 ? (m.face[std::size_t(2 * w.id)] >= 0 ? m.face[std::size_t(2 * w.id)] : m.face[std::size_t(2 * w.id + 1)])
