@@ -396,6 +396,19 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
              b = ep(uv[std::size_t(f)][std::size_t((k + 2) % 3)]);
     return CGAL::orientation(p, a, ep(to)) != CGAL::RIGHT_TURN && CGAL::orientation(p, b, ep(to)) != CGAL::LEFT_TURN;
   };
+  // the face across halfedge h (-1 at the boundary), with from, to and the carried motion moved
+  // into its frame when h is on the cut graph
+  auto cross_edge = [&](int h, Point_2& from, Point_2& to, internal::Lattice_motion& carried) {
+    const int next_face = m.face[std::size_t(h ^ 1)];
+    const int e = h >> 1;
+    if(next_face >= 0 && !dev.tree_[std::size_t(e)]) {
+      const internal::Lattice_motion t = (h & 1) ? motion[std::size_t(e)] : motion[std::size_t(e)].inverse();
+      from = t(from);
+      to = t(to);
+      carried = t * carried;
+    }
+    return next_face;
+  };
   auto walk = [&](int f, Point_2 from, Point_2 to, internal::Lattice_motion& carried, int& where) -> bool {
     // Starting at a boundary vertex: first turn around it to the face whose angle holds the
     // direction, counterclockwise, or clockwise where the boundary stops that way (a straight
@@ -409,15 +422,8 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
         internal::Lattice_motion c = carried;
         for(std::size_t step = 0; step <= nf && !turned; ++step) {
           const int cross = way == 0 ? m.next[std::size_t(m.next[std::size_t(g)])] : g;   // into the corner, or out of it
-          const int nf2 = m.face[std::size_t(cross ^ 1)];
+          const int nf2 = cross_edge(cross, fr, tt, c);
           if(nf2 < 0) break;
-          const int e = cross >> 1;
-          if(!dev.tree_[std::size_t(e)]) {
-            const internal::Lattice_motion t = (cross & 1) ? motion[std::size_t(e)] : motion[std::size_t(e)].inverse();
-            fr = t(fr);
-            tt = t(tt);
-            c = t * c;
-          }
           ff = nf2;
           g = corner_at(ff, fr);
           if(g < 0) break;
@@ -436,15 +442,8 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
       }
       if(any < 0) { where = f; return true; }   // `to` is in the closed face
       if(exit < 0) exit = any;
-      const int next_face = m.face[std::size_t(exit ^ 1)];
+      const int next_face = cross_edge(exit, from, to, carried);
       if(next_face < 0) return false;   // left the surface through its boundary
-      const int e = exit >> 1;
-      if(!dev.tree_[std::size_t(e)]) {
-        const internal::Lattice_motion t = (exit & 1) ? motion[std::size_t(e)] : motion[std::size_t(e)].inverse();
-        from = t(from);
-        to = t(to);
-        carried = t * carried;
-      }
       f = next_face;
     }
     return false;
