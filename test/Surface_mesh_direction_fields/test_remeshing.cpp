@@ -32,6 +32,7 @@
 #include <sstream>
 #include <iostream>
 #include <map>
+#include <algorithm>
 #include <random>
 #include <string>
 #include <vector>
@@ -300,6 +301,48 @@ void flat_torus()
     }
     mesh.remove_property_map(lengths);
   }
+}
+
+// box_corner_order(): the box's own faces under a random relabelling (faces shuffled, cycles
+// rotated) are recognised, and the order found maps every box face onto one of them in the same
+// direction; the octahedron and a box with a face missing are not boxes.
+void box_corner_order()
+{
+  std::vector<std::vector<int>> box;
+  std::vector<std::array<int, 2>> axes;
+  SMDF::internal::box_faces(box, axes);
+  std::mt19937 rng(11);
+  for(int trial = 0; trial < 20; ++trial) {
+    std::array<int, 8> label{{0, 1, 2, 3, 4, 5, 6, 7}};
+    std::shuffle(label.begin(), label.end(), rng);
+    std::vector<std::vector<int>> faces;
+    for(const auto& f : box) {
+      std::vector<int> g;
+      const std::size_t r = rng() % 4;
+      for(std::size_t k = 0; k < 4; ++k) g.push_back(label[std::size_t(f[(k + r) % 4])]);
+      faces.push_back(g);
+    }
+    std::shuffle(faces.begin(), faces.end(), rng);
+    std::array<int, 8> order;
+    bool ok = SMDF::box_corner_order(faces, order);
+    for(const auto& f : box) {
+      bool found = false;
+      for(const auto& g : faces)
+        for(std::size_t r = 0; r < 4; ++r) {
+          bool same = true;
+          for(std::size_t k = 0; k < 4; ++k) same = same && g[(k + r) % 4] == order[std::size_t(f[k])];
+          found = found || same;
+        }
+      ok = ok && found;
+    }
+    SMDF_CHECK_MSG(ok, "box_corner_order: relabelled box " << trial << " recognised, its faces kept in direction");
+  }
+  std::array<int, 8> order;
+  const std::vector<std::vector<int>> octahedron = {{0, 2, 4}, {0, 4, 3}, {0, 3, 5}, {0, 5, 2}, {1, 4, 2}, {1, 3, 4}, {1, 5, 3}, {1, 2, 5}};
+  SMDF_CHECK(!SMDF::box_corner_order(octahedron, order));
+  std::vector<std::vector<int>> split = box;
+  split.pop_back();
+  SMDF_CHECK(!SMDF::box_corner_order(split, order));
 }
 
 // Open meshes: a planar unit square under its own flat metric (four boundary corners of pi/2)
@@ -825,6 +868,7 @@ int main()
   octahedron();
   flat_torus();
   open_square();
+  box_corner_order();
   const std::string dir = smdf_test::shared_data_dir();
   if(!dir.empty()) { box_polycube(dir); seam_relaxation(dir); flipped_flat_metric(dir); delaunay_refinement(dir); octahedron_polyhedron(dir); obelisk(dir); }
   else std::cout << "../shared/data not found: box polycube on shared meshes skipped" << std::endl;

@@ -573,6 +573,37 @@ def test_remesh_cones_and_files(smdf, c, torus, tmp, cube, spot):
     smdf.error(["remesh", spot, "--polycube", octa, "--cones", wrong, "--faces", "500", "--out", out], "remesh: P does not match the cones", 1,
                ["does not match the cones", str(axis[5])])
     right = ",".join("%d:2pi/3" % v for v in axis)
+    # a box given as a file (Spot's eight preset corners, faces shuffled and their cycles rotated)
+    # gets the box's own scaling along its axes: the same sides as the preset, as many quads
+    pre = smdf.json(["remesh", spot, "--polycube", "box", "--faces", "2000", "--out", out], "remesh spot --polycube box (for the file)")
+    if pre:
+        bc = pre["metric"]["corners"]
+        bfaces = []
+        for a in range(3):
+            for side in range(2):
+                u, w = (a + 1) % 3, (a + 2) % 3
+                corner = lambda bu, bw: (side << a) | (bu << u) | (bw << w)
+                bfaces.append([corner(0, 0), corner(1, 0), corner(1, 1), corner(0, 1)] if side else
+                              [corner(0, 0), corner(0, 1), corner(1, 1), corner(1, 0)])
+        rnd = random.Random(3)
+        rnd.shuffle(bfaces)
+        boxfile = os.path.join(tmp, "spot_box.txt")
+        with open(boxfile, "w") as f:
+            f.write("# Spot's box\n")
+            for bf in bfaces:
+                r = rnd.randrange(4)
+                f.write(" ".join(str(bc[i]) for i in bf[r:] + bf[:r]) + "\n")
+        r = smdf.json(["remesh", spot, "--polycube", boxfile, "--faces", "2000", "--out", out], "remesh spot --polycube FILE (a box)")
+        c.check(r is not None and r["metric"].get("box_from_file") == boxfile and r.get("success") is True
+                and sorted(r["metric"].get("dimensions", [])) == sorted(pre["metric"]["dimensions"])
+                and r.get("faces_by_size") == pre.get("faces_by_size") and r.get("valences", {}).get("3") == 8,
+                "remesh spot --polycube FILE describing a box: the preset's sides %r, as many quads, 8 corners of valence 3 (%r)"
+                % (pre["metric"]["dimensions"], r and (r["metric"].get("dimensions"), r.get("faces_by_size"))))
+        wrong = ",".join("%d:pi/2" % v for v in bc[:7]) + ",%d:pi/2" % axis[0]
+        smdf.error(["remesh", spot, "--polycube", boxfile, "--cones", wrong, "--faces", "500", "--out", out],
+                   "remesh: a box file that does not match the cones", 1, "does not match the cones")
+        smdf.error(["remesh", spot, "--polycube", boxfile, "--grid", "triangle", "--faces", "500", "--out", out],
+                   "remesh: a box file with --grid triangle", 2, "is a box")
     smdf.error(["remesh", spot, "--polycube", octa, "--grid", "quad", "--faces", "500", "--out", out],
                "remesh: --grid quad with a polyhedron of triangles", 2, ["all triangles", "--grid triangle"])
     docs = []

@@ -283,7 +283,36 @@ Json run_remesh(const Args& args)
     metric_s += clock.lap();   // the flat cone metric is the metric; compensation_s is P's
   };
   double h = requested_h > 0 ? requested_h : std::sqrt(metric_area(*surface, lengths) / (double(requested_faces) * unit_area));
-  if(args.has("polycube") && polycube != "box") {
+  // A file that describes a box (six quadrilaterals glued as a cube's) gets the box's own
+  // metric, scaled along its three axes, instead of six equal squares.
+  bool file_box = false;
+  std::array<vertex_descriptor, 8> file_box_corners;
+  if(args.has("polycube") && polycube != "box" && polycube != "octahedron" && polycube != "obelisk") {
+    std::vector<vertex_descriptor> pc;
+    std::vector<std::vector<int>> pf;
+    read_polyhedron(polycube, mesh, pc, pf);
+    std::array<int, 8> order;
+    if(pc.size() == 8 && SMDF::box_corner_order(pf, order)) {
+      if(args.has("grid") && grid_name != "quad")
+        throw Usage_error(polycube + ": the polyhedron is a box, which gives --grid quad, not --grid " + grid_name);
+      file_box = true;
+      for(int i = 0; i < 8; ++i) file_box_corners[std::size_t(i)] = pc[std::size_t(order[std::size_t(i)])];
+      if(!cones.empty()) {   // its corners must be the given cones, of pi/2 each
+        std::map<vertex_descriptor, double> given(cones.begin(), cones.end());
+        for(vertex_descriptor v : file_box_corners) {
+          auto it = given.find(v);
+          if(it == given.end() || std::abs(it->second - CGAL_PI / 2) > 1e-9)
+            throw Error(polycube + ": the polyhedron does not match the cones: its corner " + std::to_string(index(v)) +
+                        " has curvature pi/2 (a box's corner), --cones gives " + (it == given.end() ? std::string("none") : format_real(it->second)));
+          given.erase(it);
+        }
+        if(!given.empty())
+          throw Error(polycube + ": the polyhedron does not match the cones: vertex " + std::to_string(index(given.begin()->first)) +
+                      " of --cones is no corner of the polyhedron");
+      }
+    }
+  }
+  if(args.has("polycube") && polycube != "box" && !file_box) {
     // a polyhedron of unit squares and equilateral triangles: the octahedron, or from a file
     std::vector<vertex_descriptor> corners;
     std::vector<std::vector<int>> pfaces;
@@ -436,8 +465,9 @@ Json run_remesh(const Args& args)
     out["metric"] = metric;
     if(!ps.success) throw Failed_result{out, file + ": polyhedron metric: " + ps.message, 3};
   } else if(args.has("polycube")) {
-    std::array<vertex_descriptor, 8> corners = box_corners(mesh);
-    if(!cones.empty()) {
+    std::array<vertex_descriptor, 8> corners = file_box ? file_box_corners : box_corners(mesh);
+    if(file_box) metric["box_from_file"] = polycube;
+    if(!cones.empty() && !file_box) {
       std::vector<K::Vector_3> d;
       for(int i = 0; i < 8; ++i) d.push_back(K::Vector_3((i & 1) ? 1 : -1, (i & 2) ? 1 : -1, (i & 4) ? 1 : -1));
       const std::vector<vertex_descriptor> a = assign_cones("box", mesh, cones, d, CGAL_PI / 2, "pi/2");
@@ -536,7 +566,7 @@ Command remesh_command()
           {{"grid", "G", "quad (default), triangle, or mixed (with a polyhedron of squares and triangles)"},
            {"edge-length", "H", "the grid's edge length on the surface"},
            {"faces", "N", "about N faces instead (the admissible edge length nearest to area / N)"},
-           {"polycube", "P", "metric compensation with a polyhedron: 'box' (corners: the 8 vertices extreme in the diagonal directions from the centroid), 'octahedron' (the 6 extreme along the axes; triangles), 'obelisk' (Lai et al. Fig. 1c, y up: mixed), or a file: one face per line, its 3 or 4 vertex ids counterclockwise from outside (squares or triangles)"},
+           {"polycube", "P", "metric compensation with a polyhedron: 'box' (corners: the 8 vertices extreme in the diagonal directions from the centroid), 'octahedron' (the 6 extreme along the axes; triangles), 'obelisk' (Lai et al. Fig. 1c, y up: mixed), or a file: one face per line, its 3 or 4 vertex ids counterclockwise from outside (squares or triangles; six quadrilaterals glued as a cube's make a box, scaled along its axes as the preset)"},
            {"lengths", "FILE", "the flat cone metric: one line 'i j length' per edge (e.g. cone-metric --no-flips --lengths-out)"},
            {"cones", "LIST", "cone curvatures 'v:K,...' (K radians: pi/2, 2pi/3, ...): the flat cone metric to tessellate, or the corners of --polycube"},
            {"cone-indices", "LIST", "the same as indices 'v:k,...', K = 2 pi k"},

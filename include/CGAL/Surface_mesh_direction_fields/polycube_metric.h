@@ -390,7 +390,100 @@ const Intrinsic_mesh<TM> genus_zero_mesh(const TM& tm, const NP& np, const char*
   return im;
 }
 
+// The box's six faces (axis a, side s), corners (bit k of a corner: its side along axis k)
+// counterclockwise seen from outside, and their axes in the plane.
+inline void box_faces(std::vector<std::vector<int>>& faces, std::vector<std::array<int, 2>>& plane_axes)
+{
+  faces.clear();
+  plane_axes.clear();
+  for(int a = 0; a < 3; ++a)
+    for(int s = 0; s < 2; ++s) {
+      const int u = (a + 1) % 3, w = (a + 2) % 3;
+      auto corner = [&](int bu, int bw) { return (s << a) | (bu << u) | (bw << w); };
+      if(s == 1) { faces.push_back({corner(0, 0), corner(1, 0), corner(1, 1), corner(0, 1)}); plane_axes.push_back({{u, w}}); }
+      else { faces.push_back({corner(0, 0), corner(0, 1), corner(1, 1), corner(1, 0)}); plane_axes.push_back({{w, u}}); }
+    }
+}
+
+// Around every corner c of a polyhedron (faces counterclockwise seen from outside): the
+// neighbour that follows q counterclockwise, turn[c][q] (-1 where q is no neighbour).
+inline std::vector<std::vector<int>> corner_turns(const std::vector<std::vector<int>>& faces, int corners)
+{
+  std::vector<std::vector<int>> turn(std::size_t(corners), std::vector<int>(std::size_t(corners), -1));
+  for(const auto& f : faces)
+    for(std::size_t k = 0; k < f.size(); ++k) {   // in (p, c, q) the face turns from q to p around c
+      const int p = f[(k + f.size() - 1) % f.size()], c = f[k], q = f[(k + 1) % f.size()];
+      turn[std::size_t(c)][std::size_t(q)] = p;
+    }
+  return turn;
+}
+
 } // namespace internal
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsRemeshing
+/// Whether the polyhedron of `faces` (cycles of corner indices \f$0 \ldots 7\f$, counterclockwise
+/// seen from outside, as for polyhedron_metric()) is a box: six quadrilaterals, three at every
+/// corner, glued as a cube's. If so, `order[i]` is set to the corner that box_polycube_metric()
+/// places at \f$(i \& 1, (i \gg 1) \& 1, (i \gg 2) \& 1)\f$, with the same faces and
+/// orientation, so that a box given as a list of faces can get the box's own scaling along its
+/// three axes (`smdf remesh --polycube FILE` does this).
+inline bool box_corner_order(const std::vector<std::vector<int>>& faces, std::array<int, 8>& order)
+{
+  if(faces.size() != 6) return false;
+  for(const auto& f : faces) {
+    if(f.size() != 4) return false;
+    for(int c : f) if(c < 0 || c > 7) return false;
+  }
+  std::vector<std::vector<int>> box;
+  std::vector<std::array<int, 2>> axes;
+  internal::box_faces(box, axes);
+  const std::vector<std::vector<int>> turn = internal::corner_turns(faces, 8), box_turn = internal::corner_turns(box, 8);
+  int q0 = -1;   // a neighbour of corner 0
+  for(int q = 0; q < 8 && q0 < 0; ++q) if(turn[0][std::size_t(q)] >= 0) q0 = q;
+  if(q0 < 0) return false;
+  // corner 0 at the box's corner 0 and q0 at corner 1; the box's rotations about its diagonal
+  // give the other two choices, equally good
+  std::array<int, 8> o;
+  o.fill(-1);
+  o[0] = 0;
+  int q = q0, b = 1;
+  for(int k = 0; k < 3; ++k) {
+    if(q < 0) return false;
+    o[std::size_t(b)] = q;
+    q = turn[0][std::size_t(q)];
+    b = box_turn[0][std::size_t(b)];
+  }
+  if(q != q0) return false;   // corner 0 has three faces
+  auto common = [&](int x, int y) {   // the corner other than 0 next to both
+    int found = -1;
+    for(int c = 1; c < 8; ++c)
+      if(c != x && c != y && turn[std::size_t(c)][std::size_t(x)] >= 0 && turn[std::size_t(c)][std::size_t(y)] >= 0) {
+        if(found >= 0) return -1;
+        found = c;
+      }
+    return found;
+  };
+  o[3] = common(o[1], o[2]);
+  o[5] = common(o[1], o[4]);
+  o[6] = common(o[2], o[4]);
+  std::array<char, 8> used{};
+  for(int i = 0; i < 7; ++i)
+    if(o[std::size_t(i)] < 0 || used[std::size_t(o[std::size_t(i)])]++) return false;
+  for(int c = 0; c < 8; ++c) if(!used[std::size_t(c)]) o[7] = c;
+  // every face of the box, relabelled, must be a face of the polyhedron, in the same direction
+  for(const auto& bf : box) {
+    bool found = false;
+    for(const auto& f : faces)
+      for(std::size_t r = 0; r < 4 && !found; ++r) {
+        bool same = true;
+        for(std::size_t k = 0; k < 4; ++k) same = same && f[(k + r) % 4] == o[std::size_t(bf[k])];
+        found = same;
+      }
+    if(!found) return false;
+  }
+  order = o;
+  return true;
+}
 
 /// \ingroup PkgSurfaceMeshDirectionFieldsRemeshing
 /// Metric compensation with a box (Lai et al. 2010, section 4.1.3.2, for the polycube with one
@@ -458,16 +551,9 @@ Polycube_metric_status box_polycube_metric(const TriangleMesh& tm,
   const internal::Mesh_arrays<TriangleMesh>& m = im.arrays();
   std::vector<int> cv;
   for(const auto& v : corners) cv.push_back(m.vertex_index(v));
-  // the six faces (axis a, side s), corners counterclockwise seen from outside, and their axes in the plane
   std::vector<std::vector<int>> pfaces;
   std::vector<std::array<int, 2>> plane_axes;
-  for(int a = 0; a < 3; ++a)
-    for(int s = 0; s < 2; ++s) {
-      const int u = (a + 1) % 3, w = (a + 2) % 3;
-      auto corner = [&](int bu, int bw) { return (s << a) | (bu << u) | (bw << w); };
-      if(s == 1) { pfaces.push_back({corner(0, 0), corner(1, 0), corner(1, 1), corner(0, 1)}); plane_axes.push_back({{u, w}}); }
-      else { pfaces.push_back({corner(0, 0), corner(0, 1), corner(1, 1), corner(1, 0)}); plane_axes.push_back({{w, u}}); }
-    }
+  internal::box_faces(pfaces, plane_axes);
   const internal::Chart_inputs in = internal::chart_inputs(tm, m, np);
   std::array<double, 3> dims{{0, 0, 0}};
   bool dims_known = false;
