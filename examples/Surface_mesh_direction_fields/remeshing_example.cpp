@@ -6,8 +6,8 @@
 // box's edges as shortest paths under their flat cone metric, the box metric, its development
 // and the square grid carried onto the surface. Then the same cones on the mesh's conforming
 // Delaunay refinement, where a flat cone metric the input triangulation cannot carry usually
-// exists without intrinsic flips. Every result is read back (valences, inverted quads,
-// convergence).
+// exists without intrinsic flips; and a triangle remesh through the octahedron (six cones of
+// 2 pi/3). Every result is read back (valences, inverted faces, convergence).
 //
 // Usage: remeshing_example [mesh.off] [quads]   (default: data/spot.off, about 2000 quads)
 
@@ -22,11 +22,13 @@
 #include <CGAL/Surface_mesh_direction_fields/polycube_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/IO/read_triangle_mesh.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
 #include <string>
+#include <vector>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
@@ -77,6 +79,44 @@ int main(int argc, char* argv[])
               << " inverted; read-back " << (st.success ? "ok" : st.message) << "\n";
     //! [box_remesh]
     if(!st.success) return EXIT_FAILURE;
+    //! [octahedron_remesh]
+    // Triangles: the octahedron on the six vertices extreme along the axes (cones of 2 pi/3),
+    // its faces equilateral triangles of a side that is a multiple of h, unrelaxed (the plain
+    // Tutte embedding of every face), then the triangular grid.
+    std::vector<Vertex> axis(6);
+    for(int k = 0; k < 6; ++k) {
+      K::Vector_3 d(0, 0, 0);
+      d = (k / 2 == 0 ? K::Vector_3(1, 0, 0) : k / 2 == 1 ? K::Vector_3(0, 1, 0) : K::Vector_3(0, 0, 1)) * (k % 2 ? -1. : 1.);
+      double best = -HUGE_VAL;
+      for(Vertex v : vertices(mesh))
+        if((mesh.point(v) - CGAL::ORIGIN - c) * d > best) { best = (mesh.point(v) - CGAL::ORIGIN - c) * d; axis[std::size_t(k)] = v; }
+    }
+    std::vector<std::vector<int>> octahedron;   // counterclockwise seen from outside
+    for(int sx : {1, -1})
+      for(int sy : {1, -1})
+        for(int sz : {1, -1}) {
+          const int X = sx > 0 ? 0 : 1, Y = sy > 0 ? 2 : 3, Z = sz > 0 ? 4 : 5;
+          octahedron.push_back(sx * sy * sz > 0 ? std::vector<int>{X, Y, Z} : std::vector<int>{X, Z, Y});
+        }
+    for(Vertex v : vertices(mesh)) target[v] = 0;
+    for(Vertex v : axis) target[v] = 2 * CGAL_PI / 3;
+    SMDF::compute_cone_metric(mesh, target, flat, SMDF::parameters::conformal_factor_map(u).curvature_tolerance(1e-6));
+    // the octahedron's side for the surface's area, cut into k segments: 8 k^2 triangles, about
+    // 1.5 times the number of quads
+    const double side = std::sqrt(CGAL::Polygon_mesh_processing::area(mesh) / (2 * std::sqrt(3.)));
+    const double k = std::max(1., std::round(std::sqrt(1.5 * quads / 8))), ht = side / k;
+    auto octa = mesh.add_property_map<Edge, double>("e:octahedron", 0.).first;
+    const SMDF::Polycube_metric_status os = SMDF::polyhedron_metric(
+      mesh, axis, octahedron, side, octa, SMDF::parameters::conformal_factor_map(u).number_of_iterations(0));
+    if(!os.success) { std::cerr << "octahedron metric: " << os.message << "\n"; return EXIT_FAILURE; }
+    const auto odev = SMDF::develop_flat_metric(mesh, SMDF::parameters::edge_length_map(octa));
+    Mesh triangles;
+    const SMDF::Grid_tessellation_status ts = SMDF::tessellate_flat_metric(mesh, odev, SMDF::TRIANGULAR_GRID, ht, triangles);
+    std::cout << "octahedron of side " << side << ": " << ts.faces << " triangles, " << ts.irregular_vertices.size()
+              << " irregular vertices (the cones, valence 4), " << ts.inverted_faces << " inverted; read-back "
+              << (ts.success ? "ok" : ts.message) << "\n";
+    //! [octahedron_remesh]
+    if(!ts.success) return EXIT_FAILURE;
 
     //! [refinement]
     // The same cones without flips on the conforming Delaunay refinement: vertices added on the

@@ -799,7 +799,7 @@ private:
     std::vector<internal::Turning_cycle> cycles;
     std::vector<double> p;
     std::vector<int> arcs;
-    for(int iteration = 0; iteration < 200; ++iteration) {
+    for(int iteration = 0; iteration < 50; ++iteration) {   // each round adds one cycle; the shared meshes and the tests need 1 to 3
       for(std::size_t k = 0; k < d.size(); ++k) turning_[k] = start[k] + double(d[k]) / N_;
       const Eigen::VectorXd b = sys_.rhs(m_, K_, index_, z_, turning_, constraint_angles_, N_);
       const Eigen::VectorXd x = sys_.W_.asDiagonal() * (sys_.A_.transpose() * Eigen::VectorXd(chol_.solve(-b)));
