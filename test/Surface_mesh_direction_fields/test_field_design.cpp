@@ -128,6 +128,17 @@ void flat_tori()
     if(fits) {
       const auto off = SMDF::tessellation_compatibility_at(g, grid, s / 7.5);
       SMDF_CHECK_MSG(!off.compatible && !off.failing_loops.empty(), c.name << ": 7.5 grid edges per period do not fit");
+      // each failing loop with its amounts: the rotations fit, the translations miss the lattice
+      bool amounts = off.failing_rotation_deviations.size() == off.failing_loops.size() &&
+                     off.failing_translation_deviations.size() == off.failing_loops.size();
+      double largest = 0;
+      for(std::size_t i = 0; amounts && i < off.failing_loops.size(); ++i) {
+        amounts = off.failing_rotation_deviations[i] < 1e-9 && off.failing_translation_deviations[i] > 1e-6;
+        largest = (std::max)(largest, off.failing_translation_deviations[i]);
+      }
+      // (the status's maximum is infinite when no lattice vector has the shortest translation's norm)
+      SMDF_CHECK_MSG(amounts && (std::isinf(off.max_translation_deviation) || largest >= off.max_translation_deviation - 1e-12),
+                     c.name << ": every failing loop comes with its deviations, the largest at least the status's (" << largest << " against " << off.max_translation_deviation << ")");
     }
   }
 }

@@ -457,6 +457,9 @@ def test_remesh(smdf, c, torus, tmp):
             "remesh cube --faces 400: an admissible edge length near the request (%r)" % (r or {}).get("faces_by_size"))
     rc, o, err = smdf.run(["remesh", cube, "--grid", "triangle", "--edge-length", "0.25", "--out", out])
     doc = json.loads(o.decode()) if o else {}
+    dv = doc.get("failing_cut_edge_deviations", [])
+    c.check(len(dv) == min(20, doc.get("failing_cut_edge_count", 0)) and all(d["rotation"] > 1e-6 or d["translation"] > 1e-6 for d in dv),
+            "remesh cube --grid triangle: each failing cut edge with its deviations (%r)" % dv[:3])
     c.check(rc == 3 and doc.get("success") is False and doc.get("failing_cut_edge_count", 0) > 0
             and "not symmetries" in err.decode(), "remesh cube --grid triangle: exit 3, failing cut edges named")
     spot = os.path.join(os.path.dirname(torus), "spot.off")

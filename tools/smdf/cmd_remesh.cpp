@@ -520,6 +520,14 @@ Json run_remesh(const Args& args)
     Json fe = Json::array();
     for(std::size_t i = 0; i < st.failing_edges.size() && i < 20; ++i) fe.push_back(st.failing_edges[i]);
     out["failing_cut_edges"] = std::move(fe);   // the first 20
+    Json dv = Json::array();
+    for(std::size_t i = 0; i < st.failing_edges.size() && i < 20 && i < st.failing_rotation_deviations.size(); ++i) {
+      Json o = Json::object();
+      o["rotation"] = st.failing_rotation_deviations[i];
+      o["translation"] = st.failing_translation_deviations[i];
+      dv.push_back(std::move(o));
+    }
+    out["failing_cut_edge_deviations"] = std::move(dv);
     out["failing_cut_edge_count"] = st.failing_edges.size();
   }
   Json timings = Json::object();
@@ -597,6 +605,8 @@ Command remesh_command()
           "used), flat_cone_metric_converged, flat_cone_metric_edge_flips, corners,\n"
           "dimensions or side_length, max_path_stretch, relaxation_steps, seam_relaxed_vertices},\n"
           "edge_length, cut_edges, cones, grid_spacing_of_metric, failing_cut_edges (first 20),\n"
+          "failing_cut_edge_deviations (theirs: {rotation (radians from the grid's rotations),\n"
+          "translation (grid edges from the lattice)}),\n"
           "failing_cut_edge_count (edge indices of the triangulation carrying the metric: the\n"
           "refinement's when delaunay_refinement is present), vertices, faces_by_size, valences\n"
           "(interior vertices),\n"

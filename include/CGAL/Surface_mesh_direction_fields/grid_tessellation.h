@@ -42,6 +42,9 @@ struct Grid_tessellation_status
   /// of the grid, and on open meshes the boundary edge ending at every boundary corner (geodesic
   /// curvature not 0) that is no grid point
   std::vector<std::size_t> failing_edges;
+  /// per failing edge: how far its motion's rotation is from the grid's (radians) and its
+  /// translation from the lattice (in units of `compatibility.spacing`)
+  std::vector<double> failing_rotation_deviations, failing_translation_deviations;
   double edge_length = 0;              ///< the grid's edge length on the surface
   std::size_t vertices = 0, faces = 0; ///< of the output
   /// of the output, which success requires to be the input's: its Euler characteristic and its
@@ -221,6 +224,8 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
          << (coarse.failing_loops.empty() ? 0 : group_edge[coarse.failing_loops.front()]);
     }
     for(std::size_t i : st.compatibility.failing_loops) st.failing_edges.push_back(group_edge[i]);
+    st.failing_rotation_deviations = st.compatibility.failing_rotation_deviations;
+    st.failing_translation_deviations = st.compatibility.failing_translation_deviations;
     st.message = os.str();
     return st;
   }

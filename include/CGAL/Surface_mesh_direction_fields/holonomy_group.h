@@ -82,6 +82,9 @@ struct Tessellation_compatibility
   double max_translation_deviation = 0;
   /// the loops (indices in the basis) that fail either test
   std::vector<std::size_t> failing_loops;
+  /// per failing loop (as in `failing_loops`): how far its rotation is from the grid's rotations
+  /// (radians) and its translation from the lattice (in units of `spacing`)
+  std::vector<double> failing_rotation_deviations, failing_translation_deviations;
 };
 
 /// \ingroup PkgSurfaceMeshDirectionFieldsHolonomy
@@ -171,6 +174,7 @@ struct Tessellation_translations
 {
   std::vector<std::complex<double>> t;
   std::vector<char> fails;   // per loop: its rotation is not a symmetry
+  std::vector<double> rotation_deviation;   // per loop: its distance to the grid's rotations
   std::size_t shortest = 0;
   std::complex<double> w;    // the lattice's second basis vector (the first is 1)
 };
@@ -187,6 +191,7 @@ inline Tessellation_translations tessellation_translations(const Holonomy_group&
   tt.t.resize(group.motions.size());
   for(std::size_t i = 0; i < group.motions.size(); ++i) {
     const double d = angle_lattice_distance(group.rotations[i], step);
+    tt.rotation_deviation.push_back(d);
     r.max_rotation_deviation = (std::max)(r.max_rotation_deviation, d);
     if(!(d <= tolerance)) tt.fails[i] = 1;
     const Point_2 image = group.motions[i](r.origin);
@@ -230,7 +235,12 @@ inline void finish_tessellation_test(const Tessellation_translations& tt, std::c
   std::vector<char> fails = tt.fails;
   for(std::size_t i = 0; i < tt.t.size(); ++i)
     if(!(lattice_distance(u * tt.t[i], tt.w) <= tolerance)) fails[i] = 1;
-  for(std::size_t i = 0; i < fails.size(); ++i) if(fails[i]) r.failing_loops.push_back(i);
+  for(std::size_t i = 0; i < fails.size(); ++i)
+    if(fails[i]) {
+      r.failing_loops.push_back(i);
+      r.failing_rotation_deviations.push_back(tt.rotation_deviation[i]);
+      r.failing_translation_deviations.push_back(lattice_distance(u * tt.t[i], tt.w));
+    }
   r.compatible = r.failing_loops.empty();
 }
 
