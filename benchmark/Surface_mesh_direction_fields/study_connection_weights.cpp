@@ -11,7 +11,10 @@
 //   - the largest rotation |x_e| against Levi-Civita and the edges beyond pi / N and beyond pi;
 //   - two yardsticks of smoothness, the same for every rule: the energy sum x_e^2 / w_e under cotan
 //     weights (clamped as COTAN_WEIGHTS, computed here from the points, independently of the
-//     library) and sum x_e^2, each as the geometric mean of its ratio to the cotan rule's.
+//     library) and sum x_e^2, each as the geometric mean of its ratio to the cotan rule's;
+//   - the solves whose edges beyond pi a dual cycle proves unavoidable (for these turning
+//     numbers, or for any), and those whose turning numbers the search below pi moved;
+//   - per mesh, the mean energy with turning numbers 0 and with the smoothest ones.
 // Every solve must succeed and its read-back with its own matching must equal the prescription.
 // Prints Markdown tables (the manual's "Choice of weights" section). Usage:
 //   study_connection_weights [--sets n] [--max-faces n] [--default-only] MESH...

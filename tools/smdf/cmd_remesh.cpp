@@ -79,6 +79,25 @@ std::vector<vertex_descriptor> axis_corners(const Mesh& mesh)
                                  K::Vector_3(0, 0, 1), K::Vector_3(0, 0, -1)});
 }
 
+// --cones with a polyhedron: its corners must be exactly the given cones, each with the
+// curvature 2 pi minus the angles of its faces there.
+void check_polyhedron_cones(const std::string& polycube, const std::vector<vertex_descriptor>& corners,
+                            const std::vector<double>& curvature, const std::vector<std::pair<vertex_descriptor, double>>& cones)
+{
+  std::map<vertex_descriptor, double> given(cones.begin(), cones.end());
+  for(std::size_t i = 0; i < corners.size(); ++i) {
+    auto it = given.find(corners[i]);
+    if(it == given.end() || std::abs(it->second - curvature[i]) > 1e-9)
+      throw Error(polycube + ": the polyhedron does not match the cones: its corner " + std::to_string(index(corners[i])) +
+                  " has curvature " + format_real(curvature[i]) + " (2 pi minus its face angles), --cones gives " +
+                  (it == given.end() ? std::string("none") : format_real(it->second)));
+    given.erase(it);
+  }
+  if(!given.empty())
+    throw Error(polycube + ": the polyhedron does not match the cones: vertex " + std::to_string(index(given.begin()->first)) +
+                " of --cones is no corner of the polyhedron");
+}
+
 // A polyhedron file: one face per line, its corner vertex ids counterclockwise seen from
 // outside; the corners are the distinct ids in order of appearance.
 void read_polyhedron(const std::string& file, const Mesh& mesh, std::vector<vertex_descriptor>& corners, std::vector<std::vector<int>>& faces)
@@ -297,19 +316,8 @@ Json run_remesh(const Args& args)
         throw Usage_error(polycube + ": the polyhedron is a box, which gives --grid quad, not --grid " + grid_name);
       file_box = true;
       for(int i = 0; i < 8; ++i) file_box_corners[std::size_t(i)] = pc[std::size_t(order[std::size_t(i)])];
-      if(!cones.empty()) {   // its corners must be the given cones, of pi/2 each
-        std::map<vertex_descriptor, double> given(cones.begin(), cones.end());
-        for(vertex_descriptor v : file_box_corners) {
-          auto it = given.find(v);
-          if(it == given.end() || std::abs(it->second - CGAL_PI / 2) > 1e-9)
-            throw Error(polycube + ": the polyhedron does not match the cones: its corner " + std::to_string(index(v)) +
-                        " has curvature pi/2 (a box's corner), --cones gives " + (it == given.end() ? std::string("none") : format_real(it->second)));
-          given.erase(it);
-        }
-        if(!given.empty())
-          throw Error(polycube + ": the polyhedron does not match the cones: vertex " + std::to_string(index(given.begin()->first)) +
-                      " of --cones is no corner of the polyhedron");
-      }
+      if(!cones.empty())   // its corners must be the given cones, of pi/2 each
+        check_polyhedron_cones(polycube, pc, std::vector<double>(8, CGAL_PI / 2), cones);
     }
   }
   if(args.has("polycube") && polycube != "box" && !file_box) {
@@ -358,20 +366,7 @@ Json run_remesh(const Args& args)
       // P's cones: 2 pi minus the angles of its faces at each corner; --cones must say the same
       std::vector<double> K_of(corners.size(), 2 * CGAL_PI);
       for(const auto& f : pfaces) for(int c : f) K_of[std::size_t(c)] -= f.size() == 4 ? CGAL_PI / 2 : CGAL_PI / 3;
-      if(!cones.empty() && polycube != "octahedron") {
-        std::map<vertex_descriptor, double> given(cones.begin(), cones.end());
-        for(std::size_t i = 0; i < corners.size(); ++i) {
-          auto it = given.find(corners[i]);
-          if(it == given.end() || std::abs(it->second - K_of[i]) > 1e-9)
-            throw Error(polycube + ": the polyhedron does not match the cones: its corner " + std::to_string(index(corners[i])) +
-                        " has curvature " + format_real(K_of[i]) + " (2 pi minus its face angles), --cones gives " +
-                        (it == given.end() ? std::string("none") : format_real(it->second)));
-          given.erase(it);
-        }
-        if(!given.empty())
-          throw Error(polycube + ": the polyhedron does not match the cones: vertex " + std::to_string(index(given.begin()->first)) +
-                      " of --cones is no corner of the polyhedron");
-      }
+      if(!cones.empty() && polycube != "octahedron") check_polyhedron_cones(polycube, corners, K_of, cones);
     }
     stage("flat cone metric and paths");
     std::size_t nq = 0;
@@ -420,20 +415,16 @@ Json run_remesh(const Args& args)
           corner_at[{{q.x(), q.y(), q.z()}}] = int(index(v));
         }
         Json irr = Json::array();
+        const std::vector<double> curvature = grid_curvatures(remesh);
         for(auto v : vertices(remesh)) {
-          if(is_border(v, remesh)) continue;
-          int q = 0, t = 0;
-          for(auto f : CGAL::faces_around_target(halfedge(v, remesh), remesh))
-            (CGAL::halfedges_around_face(halfedge(f, remesh), remesh).size() == 4 ? q : t) += 1;
-          const double curvature = 2 * CGAL_PI - q * CGAL_PI / 2 - t * CGAL_PI / 3;
-          if(std::abs(curvature) < 1e-9) continue;
+          if(is_border(v, remesh) || std::abs(curvature[index(v)]) < 1e-9) continue;
           Json o = Json::object();
           o["vertex"] = index(v);
           const K::Point_3& p = remesh.point(v);
           const auto it = corner_at.find({{p.x(), p.y(), p.z()}});
           if(it != corner_at.end()) o["cone"] = it->second; else o["cone"] = Json();
-          o["valence"] = q + t;
-          o["curvature"] = curvature;
+          o["valence"] = degree(v, remesh);
+          o["curvature"] = curvature[index(v)];
           irr.push_back(std::move(o));
         }
         out["irregular_vertices"] = std::move(irr);

@@ -118,4 +118,15 @@ double remesh_area_ratio(const Mesh& input, const Mesh& out)
   return a > 0 ? b / a : 0;
 }
 
+std::vector<double> grid_curvatures(const Mesh& remesh)
+{
+  std::vector<double> K(num_vertices(remesh), 2 * CGAL_PI);
+  for(face_descriptor f : faces(remesh)) {
+    const std::size_t n = CGAL::halfedges_around_face(halfedge(f, remesh), remesh).size();
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, remesh), remesh))
+      K[index(target(h, remesh))] -= n == 4 ? CGAL_PI / 2 : n == 3 ? CGAL_PI / 3 : 0.;
+  }
+  return K;
+}
+
 } // namespace smdf_cli

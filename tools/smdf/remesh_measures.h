@@ -15,13 +15,18 @@ namespace smdf_cli {
 // {min_scaled_jacobian, mean_scaled_jacobian} of their corners.
 Json remesh_quality(const Mesh& out);
 
-// {remesh_to_input, input_to_remesh}: the largest distance from the remesh's vertices to the
-// input surface and from the input's vertices to the remesh (its faces fanned into triangles),
-// over the edge length h.
+// {remesh_to_input, input_to_remesh, vertices_to_input}: the largest distance from the remesh
+// (its vertices, edge midpoints and face-fan centroids) to the input surface, from the input's
+// vertices to the remesh (its faces fanned into triangles), and from the remesh's vertices alone
+// to the input, over the edge length h.
 Json remesh_distances(const Mesh& input, const Mesh& out, double h);
 
 // Area of the remesh (its faces fanned into triangles) over that of the input.
 double remesh_area_ratio(const Mesh& input, const Mesh& out);
+
+// Per vertex of a quad / triangle / mixed remesh: 2 pi minus the grid's angles of its faces
+// (pi/2 per quad, pi/3 per triangle): 0 at regular vertices, the cone's curvature elsewhere.
+std::vector<double> grid_curvatures(const Mesh& remesh);
 
 } // namespace smdf_cli
 

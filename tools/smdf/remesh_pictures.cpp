@@ -4,6 +4,7 @@
 // smdf remesh's pictures: see remesh_pictures.h.
 
 #include "remesh_pictures.h"
+#include "remesh_measures.h"
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -42,12 +43,7 @@ void write_remesh_svg(const Args& args, const Mesh& input, const Mesh& remesh, i
   }
   // the cones: the remesh's vertices whose faces do not fill 2 pi in the grid's angles, marked at
   // the nearest corner of the input face they lie in
-  std::vector<double> K(num_vertices(remesh), 2 * CGAL_PI);
-  for(face_descriptor f : faces(remesh)) {
-    const std::size_t n = CGAL::halfedges_around_face(halfedge(f, remesh), remesh).size();
-    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, remesh), remesh))
-      K[index(target(h, remesh))] -= n == 4 ? CGAL_PI / 2 : n == 3 ? CGAL_PI / 3 : 0.;
-  }
+  const std::vector<double> K = grid_curvatures(remesh);
   std::vector<std::pair<vertex_descriptor, double>> marks;
   for(vertex_descriptor v : vertices(remesh)) {
     if(CGAL::is_border(v, remesh) || !(std::abs(K[index(v)]) > 1e-9)) continue;

@@ -793,7 +793,6 @@ private:
   bool search_turning_numbers(const internal::Rotation_constraint_graph& g, Trivial_connection_status& st)
   {
     const double goal = M_PI * (1 - 1e-6);
-    const std::size_t budget = 1000 * g.tail.size() + 1000000;   // 1000 passes over the arcs
     const std::vector<double> start = turning_;
     std::vector<long> d(gens_.size(), 0);
     std::vector<internal::Turning_cycle> cycles;
@@ -805,30 +804,14 @@ private:
       const Eigen::VectorXd x = sys_.W_.asDiagonal() * (sys_.A_.transpose() * Eigen::VectorXd(chol_.solve(-b)));
       double mean = 0;
       int length = 0;
-      const internal::Rotation_bound_outcome r = internal::rotations_within(g, x, goal, p, mean, length, budget, &arcs);
+      const internal::Rotation_bound_outcome r = internal::rotations_within(g, x, goal, p, mean, length, g.budget(), &arcs);
       if(r == internal::Rotation_bound_outcome::WITHIN) {
         st.generators_turned_for_rotation = std::size_t(std::count_if(d.begin(), d.end(), [](long v) { return v != 0; }));
         return iteration > 0;
       }
       if(r == internal::Rotation_bound_outcome::UNDECIDED) break;
-      // the cycle's coefficients on the rows of A
-      Eigen::VectorXd sC = Eigen::VectorXd::Zero(x.size());
       internal::Turning_cycle cycle;
-      for(int a : arcs) {
-        sC[g.column[std::size_t(a)]] += g.sign[std::size_t(a)];
-        cycle.turn += g.sign[std::size_t(a)] * x[g.column[std::size_t(a)]];
-      }
-      cycle.length = int(arcs.size());
-      const Eigen::VectorXd mu = chol_.solve(Eigen::VectorXd(sys_.A_ * (sys_.W_.asDiagonal() * sC)));
-      if(!((Eigen::VectorXd(sys_.A_.transpose() * mu) - sC).cwiseAbs().maxCoeff() < 1e-6)) break;   // not a combination of rows   // not a combination of rows
-      bool integral = true;
-      for(std::size_t k = 0; k < gens_.size() && integral; ++k) {
-        const double m = mu[sys_.first_generator_row_ + Eigen::Index(k)];
-        const long mr = std::lround(m);
-        integral = std::abs(m - double(mr)) <= 1e-6;
-        if(mr != 0) cycle.winding.emplace_back(int(k), mr);
-      }
-      if(!integral) break;
+      if(!internal::turning_cycle(g, arcs, x, sys_.A_, sys_.W_, chol_, sys_.first_generator_row_, gens_.size(), cycle)) break;
       if(cycle.winding.empty()) {   // winds around no generator: no turning numbers change its turn
         st.rotation_bound_any_turning = std::abs(cycle.turn) / cycle.length;
         break;
@@ -854,21 +837,14 @@ private:
   {
     double lo = 0, hi = 0;
     std::vector<double> p;
-    // budget per bound: 1000 passes over the arcs
-    internal::lowest_largest_rotation(g, xc, 16, 1000 * g.tail.size() + 1000000, lo, hi, p);
+    internal::lowest_largest_rotation(g, xc, 16, g.budget(), lo, hi, p);
     st.rotation_lower_bound = lo;
     const double below_pi = M_PI * (1 - 1e-6), first_goal = (std::min)(rotation_limit_, below_pi);
     const double goal = hi < first_goal ? first_goal : hi < below_pi ? below_pi : hi;
     if(!(hi < xc.cwiseAbs().maxCoeff())) return;
     Eigen::VectorXd xinf = xc;
     for(std::size_t c = 0; c < g.ends.size(); ++c) xinf[Eigen::Index(c)] += p[std::size_t(g.ends[c][0])] - p[std::size_t(g.ends[c][1])];
-    double lambda = 0;   // the smallest weight that brings every |(1 - lambda) a + lambda b| within the goal (|b| <= hi <= goal)
-    for(Eigen::Index c = 0; c < xc.size(); ++c) {
-      const double a = xc[c], v = xinf[c];
-      if(a > goal) lambda = (std::max)(lambda, (a - goal) / (a - v));
-      else if(a < -goal) lambda = (std::max)(lambda, (-goal - a) / (v - a));
-    }
-    lambda = (std::min)(1., lambda * (1 + 1e-9));
+    const double lambda = internal::blend_weight(xc, xinf, goal);
     xc = (1 - lambda) * xc + lambda * xinf;
     // the potentials' rounding in the holonomies: one correction step on the kept factorisation
     const Eigen::VectorXd r = sys_.A_ * xc + b;

@@ -156,12 +156,14 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
       group.rotations.push_back(r < 0 ? r + 2 * CGAL_PI : r);
       group_edge.push_back(e);
     }
-  for(auto v : dev.cones_) {   // a cone's position: any corner at it
-    const int vi = m.vertex_index(v), h = m.vertex_out[std::size_t(vi)], f = m.face[std::size_t(h)];
+  auto corner_position = [&](int h) {   // source(h) as laid out in face(h)
+    const int f = m.face[std::size_t(h)];
     int g = m.face_halfedge[std::size_t(f)], k = 0;
     while(g != h) { g = m.next[std::size_t(g)]; ++k; }
-    group.cone_positions.push_back(dev.corners_[std::size_t(f)][std::size_t(k)]);
-  }
+    return dev.corners_[std::size_t(f)][std::size_t(k)];
+  };
+  for(auto v : dev.cones_)   // a cone's position: any corner at it
+    group.cone_positions.push_back(corner_position(m.vertex_out[std::size_t(m.vertex_index(v))]));
   // Open meshes: the boundary must run along grid lines. Its corners (boundary vertices whose
   // geodesic curvature is not 0, within the development's tolerance) must be grid points: each
   // enters the test as a pure translation from the grid's origin (the first cone, or else the
@@ -175,11 +177,7 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
       for(int hb : loop) {
         const int v = m.target[std::size_t(hb)];
         if(!(std::abs(Kb[std::size_t(v)]) > 1e-6)) continue;
-        int hv = hb ^ 1;   // from v, along the border edge, inside the mesh
-        const int f = m.face[std::size_t(hv)];
-        int g = m.face_halfedge[std::size_t(f)], k = 0;
-        while(g != hv) { g = m.next[std::size_t(g)]; ++k; }
-        corners.emplace_back(dev.corners_[std::size_t(f)][std::size_t(k)], std::size_t(hb >> 1));
+        corners.emplace_back(corner_position(hb ^ 1), std::size_t(hb >> 1));   // from v along the border edge, inside
       }
     if(!corners.empty()) {
       if(group.cone_positions.empty()) group.cone_positions.push_back(corners.front().first);

@@ -34,6 +34,9 @@ struct Rotation_constraint_graph
   std::vector<double> sign;
   std::vector<std::array<int, 2>> ends;   // ends[c] = (a, b): the unknown of column c changes by p[a] - p[b]
 
+  // arc relaxations allowed to one Bellman-Ford run: 1000 passes over the arcs
+  std::size_t budget() const { return 1000 * tail.size() + 1000000; }
+
   Rotation_constraint_graph(int n, const std::vector<std::array<int, 2>>& column_ends)
       : nodes(n), first(std::size_t(n) + 1, 0), ends(column_ends)
   {
@@ -226,6 +229,47 @@ inline double one_generator_bound(const std::vector<Turning_cycle>& cycles, int 
     }
   }
   return best;
+}
+
+// The dual cycle of `arcs` (found by rotations_within()) as a Turning_cycle: its turn under x, its
+// length, and its winding numbers, the generator entries of mu in A W A^T mu = A W s_C (`chol`
+// factors A W A^T; the generator rows start at `first_generator_row`). Its signed indicator s_C
+// must then be A^T mu, a combination of the rows: false when it is not, or when a winding
+// number does not come out an integer.
+template <typename SparseMatrix, typename Chol>
+bool turning_cycle(const Rotation_constraint_graph& g, const std::vector<int>& arcs, const Eigen::VectorXd& x, const SparseMatrix& A,
+                   const Eigen::VectorXd& W, const Chol& chol, Eigen::Index first_generator_row, std::size_t generators,
+                   Turning_cycle& cycle)
+{
+  Eigen::VectorXd sC = Eigen::VectorXd::Zero(x.size());
+  cycle = Turning_cycle();
+  for(int a : arcs) {
+    sC[g.column[std::size_t(a)]] += g.sign[std::size_t(a)];
+    cycle.turn += g.sign[std::size_t(a)] * x[g.column[std::size_t(a)]];
+  }
+  cycle.length = int(arcs.size());
+  const Eigen::VectorXd mu = chol.solve(Eigen::VectorXd(A * (W.asDiagonal() * sC)));
+  if(!((Eigen::VectorXd(A.transpose() * mu) - sC).cwiseAbs().maxCoeff() < 1e-6)) return false;
+  for(std::size_t k = 0; k < generators; ++k) {
+    const double m = mu[first_generator_row + Eigen::Index(k)];
+    const long mr = std::lround(m);
+    if(!(std::abs(m - double(mr)) <= 1e-6)) return false;
+    if(mr != 0) cycle.winding.emplace_back(int(k), mr);
+  }
+  return true;
+}
+
+// The smallest weight lambda that brings every |(1 - lambda) a + lambda b| within `goal`, for
+// a = x, b = x_inf with |b| <= goal (1 at most).
+inline double blend_weight(const Eigen::VectorXd& x, const Eigen::VectorXd& x_inf, double goal)
+{
+  double lambda = 0;
+  for(Eigen::Index c = 0; c < x.size(); ++c) {
+    const double a = x[c], v = x_inf[c];
+    if(a > goal) lambda = (std::max)(lambda, (a - goal) / (a - v));
+    else if(a < -goal) lambda = (std::max)(lambda, (-goal - a) / (v - a));
+  }
+  return (std::min)(1., lambda * (1 + 1e-9));
 }
 
 } // namespace internal
