@@ -19,6 +19,7 @@
 #include <CGAL/Surface_mesh_direction_fields/flat_development.h>
 #include <CGAL/Surface_mesh_direction_fields/grid_tessellation.h>
 #include <CGAL/Surface_mesh_direction_fields/polycube_metric.h>
+#include <CGAL/Surface_mesh_direction_fields/polyhedron_compatibility.h>
 #include <CGAL/Surface_mesh_direction_fields/polyhedron_remeshing.h>
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/delaunay_refinement.h>
@@ -451,6 +452,21 @@ void box_polycube(const std::string& dir)
         Surface_mesh out;
         const auto st = SMDF::tessellate_flat_metric(mesh, dev, SMDF::SQUARE_GRID, h, out);
         const auto& D = ps.dimensions;
+        {   // the face-by-face test: six rectangles of D[a] / h grid edges along axis a
+          std::vector<std::vector<int>> box;
+          std::vector<std::array<int, 2>> axes;
+          SMDF::internal::box_faces(box, axes);
+          const std::vector<Surface_mesh::Vertex_index> pc(corners.begin(), corners.end());
+          const auto fit = SMDF::polyhedron_compatibility(mesh, pc, box, h, SMDF::parameters::edge_length_map(lengths));
+          bool sides = fit.edges.size() == 12;
+          for(std::size_t k = 0; k < fit.edges.size() && sides; ++k) {
+            const int axis = fit.edges[k][0] ^ fit.edges[k][1];   // one bit: the axis the edge runs along
+            sides = fit.sides[k] == int(std::lround(D[std::size_t(axis == 1 ? 0 : axis == 2 ? 1 : 2)] / h));
+          }
+          SMDF_CHECK_MSG(fit.compatible && sides, file << ", relaxation " << relax << ", h " << h << ": the box metric reads back as six rectangles of whole grid edges (angles off by "
+                                                       << fit.max_angle_deviation << ", sides by " << fit.max_side_deviation << ", " << fit.failing_faces.size()
+                                                       << " faces fail, " << fit.curved_vertices << " curved; box " << D[0] / h << " " << D[1] / h << " " << D[2] / h << ")");
+        }
         const double faces = 2 * (D[0] * D[1] + D[1] * D[2] + D[2] * D[0]) / (h * h);
         if(relax > 0)   // the relaxed box has the input's area, up to the rounding of its sides
           SMDF_CHECK_MSG(std::abs(faces * h * h / input_area - 1) < 2 * h * (D[0] + D[1] + D[2]) * 2 / (faces * h * h) + 1e-9,
@@ -594,9 +610,44 @@ void obelisk(const std::string& dir)
     for(auto v : vertices(out)) far = std::max(far, std::sqrt(tree.squared_distance(out.point(v))));
     SMDF_CHECK_MSG(far < 1e-12, what << ": every output vertex on the input surface (" << far << ")");
     SMDF_CHECK_MSG(st.success == (st.inverted_faces == 0), what << ": success unless faces are inverted (" << st.inverted_faces << ")");
+    // the read-back of the metric (the mixed grid's Theorem 3.5 test): every face of P a whole grid polygon of n edges a side
+    const auto& pc = st.compatibility;
+    SMDF_CHECK_MSG(pc.compatible && pc.failing_faces.empty() && pc.curved_vertices == 0 && pc.max_angle_deviation < 1e-9 &&
+                       pc.max_side_deviation < 1e-9 && pc.edges.size() == 16 && std::count(pc.sides.begin(), pc.sides.end(), n) == 16,
+                   what << ": the metric read back as P's faces of " << n << " edges a side (angles off by " << pc.max_angle_deviation
+                        << ", sides by " << pc.max_side_deviation << ", " << pc.curved_vertices << " vertices not flat)");
     std::cout << what << ": " << sides[4] << " quads, " << sides[3] << " triangles, " << st.inverted_faces << " inverted, path stretch "
-              << st.metric.max_path_stretch << std::endl;
+              << st.metric.max_path_stretch << "; read back: angles off by " << pc.max_angle_deviation << ", sides by " << pc.max_side_deviation
+              << std::endl;
   }
+  // The test itself (polyhedron_compatibility()) on metrics it must refuse and accept:
+  // P's metric of side L at the edge length L / 4 (compatible) and L / 4.5 (every side half an
+  // edge off, so every face fails); the flow's flat cone metric with P's cones (flat elsewhere,
+  // but its pieces are not squares and triangles); the input's own metric (curved everywhere).
+  auto pm = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:obelisk_p", 0).first;
+  const double L = 0.8;
+  const auto ps = SMDF::polyhedron_metric(mesh, corners, pfaces, L, pm, SMDF::parameters::edge_length_map(flat));
+  SMDF_CHECK_MSG(ps.success, "spot, obelisk polyhedron metric: " << ps.message);
+  const auto fit = SMDF::polyhedron_compatibility(mesh, corners, pfaces, L / 4, SMDF::parameters::edge_length_map(pm));
+  SMDF_CHECK_MSG(fit.compatible && std::count(fit.sides.begin(), fit.sides.end(), 4) == 16,
+                 "obelisk metric at L / 4: compatible, sides of 4 (" << fit.max_angle_deviation << ", " << fit.max_side_deviation << ")");
+  const auto half = SMDF::polyhedron_compatibility(mesh, corners, pfaces, L / 4.5, SMDF::parameters::edge_length_map(pm));
+  SMDF_CHECK_MSG(!half.compatible && half.failing_faces.size() == 9 && std::abs(half.max_side_deviation - 0.5) < 1e-6 &&
+                     half.max_angle_deviation < 1e-9 && half.failing_face_side_deviations.size() == 9,
+                 "obelisk metric at L / 4.5: all 9 faces fail by half an edge (" << half.failing_faces.size() << ", " << half.max_side_deviation << ")");
+  const auto flow = SMDF::polyhedron_compatibility(mesh, corners, pfaces, L / 4, SMDF::parameters::edge_length_map(flat));
+  SMDF_CHECK_MSG(!flow.compatible && flow.curved_vertices == 0 && flow.max_angle_deviation > 1e-3 && !flow.failing_faces.empty(),
+                 "flat cone metric with the obelisk's cones: flat elsewhere (" << flow.max_curvature_elsewhere << ") but not P's faces (angles off by "
+                     << flow.max_angle_deviation << ", " << flow.failing_faces.size() << " faces)");
+  const auto euclid = SMDF::polyhedron_compatibility(mesh, corners, pfaces, L / 4);
+  SMDF_CHECK_MSG(!euclid.compatible && euclid.curved_vertices > num_vertices(mesh) / 2,
+                 "the input's metric: curved at " << euclid.curved_vertices << " vertices (" << euclid.message << ")");
+  std::cout << "polyhedron_compatibility on spot's obelisk: P's metric at L/4 passes, at L/4.5 " << half.failing_faces.size()
+            << " faces fail by " << half.max_side_deviation << " edge; the flow's metric fails " << flow.failing_faces.size()
+            << " faces (angles off by up to " << flow.max_angle_deviation << " rad)" << std::endl;
+  bool threw = false;
+  try { SMDF::polyhedron_compatibility(mesh, corners, pfaces, 0.); } catch(const SMDF::Input_error&) { threw = true; }
+  SMDF_CHECK_MSG(threw, "an edge length of 0 is an Input_error");
 }
 
 // The flat cone metric with cones of pi/2 at the eight diagonal corners seen from the origin,

@@ -498,6 +498,10 @@ def test_remesh(smdf, c, torus, tmp):
             and doc.get("timings", {}).get("compensation_s", 0) is None and doc.get("edge_length", 0) > 0,
             "remesh spot --polycube obelisk: the only irregular vertices are P's nine corners, curvatures pi/3 (ring), "
             "pi/2 (base), 2 pi/3 (apex), summing to 4 pi (%r)" % [(v.get("cone"), v.get("curvature")) for v in irr])
+    pc = doc.get("polyhedron_compatibility", {})
+    c.check(pc.get("compatible") is True and pc.get("failing_faces") == [] and pc.get("curved_vertices") == 0
+            and pc.get("max_angle_deviation", 1) < 1e-9 and pc.get("max_side_deviation", 1) < 1e-9,
+            "remesh spot --polycube obelisk: the metric built reads back as P's faces, whole grid polygons (%r)" % pc)
     smdf.error(["remesh", cube, "--grid", "mixed", "--edge-length", "0.25", "--out", out], "remesh --grid mixed without a polyhedron", 2,
                "polyhedron")
     rc, o, err = smdf.run(["remesh", torus, "--edge-length", "0.1", "--out", out])

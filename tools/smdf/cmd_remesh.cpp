@@ -391,6 +391,23 @@ Json run_remesh(const Args& args)
       metric["max_path_stretch"] = rs.metric.max_path_stretch;
       metric["relaxation_steps"] = rs.metric.relaxation_steps;
       out["metric"] = metric;
+      if(rs.metric.success) {   // the mixed grid's Theorem 3.5 test, face by face of P, on the metric built
+        const SMDF::Polyhedron_compatibility& pc = rs.compatibility;
+        Json c = Json::object(), failing = Json::array();
+        c["compatible"] = pc.compatible;
+        c["max_angle_deviation"] = pc.max_angle_deviation;
+        c["max_side_deviation"] = pc.max_side_deviation;
+        c["curved_vertices"] = pc.curved_vertices;
+        for(std::size_t i = 0; i < pc.failing_faces.size() && i < 20; ++i) {
+          Json o = Json::object();
+          o["face"] = pc.failing_faces[i];
+          o["angle_deviation"] = pc.failing_face_angle_deviations[i];
+          o["side_deviation"] = pc.failing_face_side_deviations[i];
+          failing.push_back(std::move(o));
+        }
+        c["failing_faces"] = std::move(failing);   // the first 20
+        out["polyhedron_compatibility"] = std::move(c);
+      }
       out["subdivisions"] = n;
       Json timings = Json::object();
       timings["metric_s"] = metric_s;
@@ -613,10 +630,15 @@ Command remesh_command()
           "and triangles) each face of P gets its own grid: subdivisions, unexpected_valences, and\n"
           "irregular_vertices: [{vertex, cone, valence, curvature}] (vertices whose faces do not fill\n"
           "2 pi in the grid's angles, cone: P's corner there or null); compensation_s is null (in\n"
-          "tessellation_s). --grid must agree with a FILE's faces (quad, triangle or mixed).\n"
+          "tessellation_s); polyhedron_compatibility: {compatible, max_angle_deviation (radians),\n"
+          "max_side_deviation (grid edges), curved_vertices, failing_faces: [{face, angle_deviation,\n"
+          "side_deviation}]}: the mixed grid's Theorem 3.5 test on the metric built, every face of P\n"
+          "developed again from the edge lengths must be a square or triangle of whole grid edges\n"
+          "and every other vertex flat. --grid must agree with a FILE's faces (quad, triangle or mixed).\n"
           "Exit code 3 (JSON printed) when the metric is\n"
           "incompatible with the grid, the edge length does not fit its lattice, or the read-back\n"
-          "fails (valences, inverted faces); the remesh is still written when its faces exist.\n",
+          "fails (valences, inverted faces, the polyhedron test); the remesh is still written when its\n"
+          "faces exist.\n",
           run_remesh};
 }
 

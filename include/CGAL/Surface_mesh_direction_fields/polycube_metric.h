@@ -103,85 +103,18 @@ Polycube_metric_status polyhedron_metric_core(const Mesh_arrays<TM>& m, const st
   auto path_edge_length = [&](int h) { return path_metric ? (*path_metric)[std::size_t(h >> 1)] : m.edge_length(h); };
   Polycube_metric_status st;
   const std::size_t nv = m.number_of_vertices(), ne = m.number_of_edges(), nf = m.number_of_faces();
-  const std::size_t nc = corner_vertex.size();
-  std::vector<int> corner_of(nv, -1);
-  for(std::size_t i = 0; i < nc; ++i) {
-    const int v = corner_vertex[i];
-    if(v < 0 || std::size_t(v) >= nv || m.is_isolated(v) || corner_of[std::size_t(v)] >= 0)
-      throw Input_error(Input_error::INVALID_ARGUMENT, "the polyhedron's corners must be distinct vertices of the mesh");
-    corner_of[std::size_t(v)] = int(i);
-  }
-  // P's edges, each in two faces in opposite directions
-  std::map<std::pair<int, int>, int> edge_id;
-  std::vector<std::array<int, 2>> pedges;
-  std::vector<int> uses;
-  for(const auto& f : pfaces) {
-    if(f.size() < 3) throw Input_error(Input_error::INVALID_ARGUMENT, "a face of the polyhedron has fewer than three corners");
-    for(std::size_t i = 0; i < f.size(); ++i) {
-      const int a = f[i], b = f[(i + 1) % f.size()];
-      if(a < 0 || b < 0 || std::size_t(a) >= nc || std::size_t(b) >= nc || a == b)
-        throw Input_error(Input_error::INVALID_ARGUMENT, "a face of the polyhedron names a corner that does not exist");
-      const auto key = std::make_pair((std::min)(a, b), (std::max)(a, b));
-      auto it = edge_id.find(key);
-      if(it == edge_id.end()) { edge_id[key] = int(pedges.size()); pedges.push_back({{a, b}}); uses.push_back(1); }
-      else if(pedges[std::size_t(it->second)][0] != b || ++uses[std::size_t(it->second)] > 2)
-        throw Input_error(Input_error::INVALID_ARGUMENT, "the polyhedron is not a closed oriented surface (edge of corners " +
-                                                             std::to_string(a) + " and " + std::to_string(b) + ")");
-    }
-  }
-  for(int u : uses) if(u != 2) throw Input_error(Input_error::INVALID_ARGUMENT, "the polyhedron has an edge in only one face");
-  if(long(nc) - long(pedges.size()) + long(pfaces.size()) != 2)
-    throw Input_error(Input_error::INVALID_ARGUMENT, "the polyhedron is not a sphere (Euler characteristic " +
-                                                         std::to_string(long(nc) - long(pedges.size()) + long(pfaces.size())) + ")");
-  // 1. the paths
+  // 1. and 2. the paths, and the pieces they cut, matched to P's faces
+  Polyhedron_cut cut;
+  if(!cut_along_polyhedron(m, corner_vertex, pfaces, path_edge_length, cut, st.message)) return st;
+  st.path_edges = cut.path_edges;
+  const std::vector<int>& corner_of = cut.corner_of;
+  const std::vector<std::array<int, 2>>& pedges = cut.pedges;
+  const std::vector<std::vector<int>>& paths = cut.paths;
+  const std::vector<std::vector<int>>& path_halfedges = cut.path_halfedges;
+  const std::vector<int>& region = cut.region;
+  const std::vector<int>& face_of_region = cut.face_of_region;
+  const std::vector<int>& region_of_face = cut.region_of_face;
   const std::size_t np = pedges.size();
-  std::vector<int> path_of_edge;
-  std::vector<std::vector<int>> paths, path_halfedges;   // per path: its vertices and halfedges, from its first corner
-  st.path_edges = polyhedron_edge_paths(m, corner_vertex, corner_of, pedges, path_edge_length, paths, path_halfedges, path_of_edge, st.message);
-  if(!st.message.empty()) return st;
-  // 2. the pieces: faces connected without crossing a path, matched to P's faces by their corners
-  std::vector<int> region(nf, -1);
-  int regions = 0;
-  for(std::size_t f0 = 0; f0 < nf; ++f0) {
-    if(region[f0] >= 0) continue;
-    std::vector<int> stack(1, int(f0));
-    region[f0] = regions;
-    while(!stack.empty()) {
-      const int f = stack.back();
-      stack.pop_back();
-      int h = m.face_halfedge[std::size_t(f)];
-      for(int i = 0; i < 3; ++i, h = m.next[std::size_t(h)]) {
-        const int g = m.face[std::size_t(h ^ 1)];
-        if(g >= 0 && region[std::size_t(g)] < 0 && path_of_edge[std::size_t(h >> 1)] < 0) { region[std::size_t(g)] = regions; stack.push_back(g); }
-      }
-    }
-    ++regions;
-  }
-  if(std::size_t(regions) != pfaces.size()) {
-    st.message = "the paths cut the mesh into " + std::to_string(regions) + " pieces, not the " + std::to_string(pfaces.size()) +
-                 " faces of the polyhedron";
-    return st;
-  }
-  std::vector<std::vector<int>> region_corners((std::size_t(regions)));
-  for(std::size_t h = 0; h < m.number_of_halfedges(); ++h) {
-    const int f = m.face[h], v = m.source(int(h));
-    if(f >= 0 && corner_of[std::size_t(v)] >= 0) region_corners[std::size_t(region[std::size_t(f)])].push_back(corner_of[std::size_t(v)]);
-  }
-  std::vector<int> face_of_region(std::size_t(regions), -1), region_of_face(pfaces.size(), -1);
-  for(int r = 0; r < regions; ++r) {
-    std::vector<int>& rc = region_corners[std::size_t(r)];
-    std::sort(rc.begin(), rc.end());
-    rc.erase(std::unique(rc.begin(), rc.end()), rc.end());
-    for(std::size_t j = 0; j < pfaces.size(); ++j) {
-      std::vector<int> fc = pfaces[j];
-      std::sort(fc.begin(), fc.end());
-      if(fc == rc && region_of_face[j] < 0) { face_of_region[std::size_t(r)] = int(j); region_of_face[j] = r; break; }
-    }
-    if(face_of_region[std::size_t(r)] < 0) {
-      st.message = "a piece cut by the paths does not have the corners of a face of the polyhedron (are the corners placed like P's?)";
-      return st;
-    }
-  }
   // 3. the polygons, and every path vertex placed by arc length in each face along the path
   // the paths are measured (and their vertices placed by arc length) in the reference, if any
   std::vector<std::vector<double>> along(np);
@@ -190,7 +123,7 @@ Polycube_metric_status polyhedron_metric_core(const Mesh_arrays<TM>& m, const st
   std::vector<double> reference_length(np, 0.);
   for(std::size_t k = 0; k < np; ++k) for(double x : along[k]) reference_length[k] += x;
   auto length_between = [&](int a, int b) {
-    const std::size_t k = std::size_t(edge_id.at(std::make_pair((std::min)(a, b), (std::max)(a, b))));
+    const std::size_t k = std::size_t(cut.edge_of(a, b));
     return reference_length[k];
   };
   std::vector<std::vector<Point_2>> shape(pfaces.size());
@@ -226,7 +159,7 @@ Polycube_metric_status polyhedron_metric_core(const Mesh_arrays<TM>& m, const st
     const std::vector<int>& fc = pfaces[j];
     for(std::size_t i = 0; i < fc.size(); ++i) {
       const int a = fc[i], b = fc[(i + 1) % fc.size()];
-      const int k = edge_id.at(std::make_pair((std::min)(a, b), (std::max)(a, b)));
+      const int k = cut.edge_of(a, b);
       const Point_2 &pa = shape[j][i], &pb = shape[j][(i + 1) % fc.size()];
       const std::vector<int>& p = paths[std::size_t(k)];
       const bool forward = pedges[std::size_t(k)][0] == a;

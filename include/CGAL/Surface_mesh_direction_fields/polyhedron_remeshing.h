@@ -10,6 +10,7 @@
 // grids meet along the polyhedron's edges at the same points.
 
 #include <CGAL/Surface_mesh_direction_fields/polycube_metric.h>
+#include <CGAL/Surface_mesh_direction_fields/polyhedron_compatibility.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -30,6 +31,10 @@ struct Polyhedron_remesh_status
   bool success = false;
   std::string message;                 ///< empty on success
   Polycube_metric_status metric;       ///< the cut and embedding of the polyhedron's faces
+  /// read-back of the metric: polyhedron_compatibility() of the embedding's edge lengths, at the
+  /// grid's edge length (P's faces, developed again from the lengths, must be the gridded
+  /// squares and triangles); success needs it compatible
+  Polyhedron_compatibility compatibility;
   std::size_t quads = 0, triangles = 0, vertices = 0;
   /// valence histogram of the output's vertices: `valences[k]` vertices of valence k
   std::vector<std::size_t> valences;
@@ -104,6 +109,19 @@ Polyhedron_remesh_status polyhedron_remesh(const TriangleMesh& tm,
   internal::Polyhedron_charts ch;
   st.metric = internal::polyhedron_metric_core(m, cv, faces, polygon, in, lengths, &ch);
   if(!st.metric.success) { st.message = st.metric.message; return st; }
+  {
+    internal::Mesh_arrays<TriangleMesh> metric = m;
+    metric.set_lengths(lengths);
+    st.compatibility = internal::polyhedron_compatibility_core(metric, cv, faces, L / n, 1e-6);
+    if(!st.compatibility.compatible) {
+      st.message = !st.compatibility.message.empty() ? "read-back of the metric: " + st.compatibility.message
+                   : "read-back of the metric: " + std::to_string(st.compatibility.failing_faces.size()) + " faces of the polyhedron are not "
+                     "whole grid polygons (angles off by up to " + std::to_string(st.compatibility.max_angle_deviation) + " rad, sides by " +
+                     std::to_string(st.compatibility.max_side_deviation) + " edge lengths) and " + std::to_string(st.compatibility.curved_vertices) +
+                     " other vertices are not flat";
+      return st;
+    }
+  }
   typedef typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
   VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
   typedef std::array<double, 3> V3;

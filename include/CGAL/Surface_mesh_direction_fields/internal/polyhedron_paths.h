@@ -5,8 +5,9 @@
 #define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_POLYHEDRON_PATHS_H
 
 // The cut of a polyhedron metric (Lai et al. 2010, section 4.1.3.2): P's edges as disjoint
-// shortest edge paths between the mesh vertices of its corners.
+// shortest edge paths between the mesh vertices of its corners, and the pieces they cut.
 
+#include <CGAL/Surface_mesh_direction_fields/errors.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh_arrays.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/two_threads.h>
 
@@ -170,6 +171,110 @@ std::size_t polyhedron_edge_paths(const Mesh_arrays<TM>& m, const std::vector<in
     if(message.empty()) break;
   }
   return message.empty() ? path_edges : 0;
+}
+
+// A polyhedron P cut into a mesh: its corners, edges, the paths of its edges and the pieces
+// they cut the mesh into, each matched to its face of P.
+struct Polyhedron_cut
+{
+  std::vector<int> corner_of;                      // per mesh vertex: its corner of P, or -1
+  std::map<std::pair<int, int>, int> edge_id;      // P's edge of two corners (the smaller first)
+  std::vector<std::array<int, 2>> pedges;          // P's edges, in the direction of their first face
+  std::vector<std::vector<int>> paths;             // per P edge: mesh vertices from pedges[k][0] to pedges[k][1]
+  std::vector<std::vector<int>> path_halfedges;    // ... and their halfedges
+  std::vector<int> path_of_edge;                   // per mesh edge: its path, or -1
+  std::size_t path_edges = 0;
+  std::vector<int> region;                         // per mesh face: its piece
+  std::vector<int> face_of_region, region_of_face; // piece <-> face of P
+
+  int edge_of(int a, int b) const { return edge_id.at(std::make_pair((std::min)(a, b), (std::max)(a, b))); }
+};
+
+// Cuts the mesh along shortest edge paths (under `length(h)`) of the edges of P, whose corners
+// are the mesh vertices `corner_vertex` and whose faces `pfaces` are cycles of corner indices
+// (counterclockwise seen from outside), and matches the pieces to P's faces by their corners.
+// Throws Input_error for a P that is not a closed oriented sphere or corners that are not
+// distinct vertices; returns false with `message` when the paths or the pieces fail.
+template <typename TM, typename Length>
+bool cut_along_polyhedron(const Mesh_arrays<TM>& m, const std::vector<int>& corner_vertex, const std::vector<std::vector<int>>& pfaces,
+                          const Length& length, Polyhedron_cut& cut, std::string& message)
+{
+  const std::size_t nv = m.number_of_vertices(), nf = m.number_of_faces(), nc = corner_vertex.size();
+  cut.corner_of.assign(nv, -1);
+  for(std::size_t i = 0; i < nc; ++i) {
+    const int v = corner_vertex[i];
+    if(v < 0 || std::size_t(v) >= nv || m.is_isolated(v) || cut.corner_of[std::size_t(v)] >= 0)
+      throw Input_error(Input_error::INVALID_ARGUMENT, "the polyhedron's corners must be distinct vertices of the mesh");
+    cut.corner_of[std::size_t(v)] = int(i);
+  }
+  // P's edges, each in two faces in opposite directions
+  std::vector<int> uses;
+  for(const auto& f : pfaces) {
+    if(f.size() < 3) throw Input_error(Input_error::INVALID_ARGUMENT, "a face of the polyhedron has fewer than three corners");
+    for(std::size_t i = 0; i < f.size(); ++i) {
+      const int a = f[i], b = f[(i + 1) % f.size()];
+      if(a < 0 || b < 0 || std::size_t(a) >= nc || std::size_t(b) >= nc || a == b)
+        throw Input_error(Input_error::INVALID_ARGUMENT, "a face of the polyhedron names a corner that does not exist");
+      const auto key = std::make_pair((std::min)(a, b), (std::max)(a, b));
+      auto it = cut.edge_id.find(key);
+      if(it == cut.edge_id.end()) { cut.edge_id[key] = int(cut.pedges.size()); cut.pedges.push_back({{a, b}}); uses.push_back(1); }
+      else if(cut.pedges[std::size_t(it->second)][0] != b || ++uses[std::size_t(it->second)] > 2)
+        throw Input_error(Input_error::INVALID_ARGUMENT, "the polyhedron is not a closed oriented surface (edge of corners " +
+                                                             std::to_string(a) + " and " + std::to_string(b) + ")");
+    }
+  }
+  for(int u : uses) if(u != 2) throw Input_error(Input_error::INVALID_ARGUMENT, "the polyhedron has an edge in only one face");
+  const long chi = long(nc) - long(cut.pedges.size()) + long(pfaces.size());
+  if(chi != 2) throw Input_error(Input_error::INVALID_ARGUMENT, "the polyhedron is not a sphere (Euler characteristic " + std::to_string(chi) + ")");
+  // the paths
+  cut.path_edges = polyhedron_edge_paths(m, corner_vertex, cut.corner_of, cut.pedges, length, cut.paths, cut.path_halfedges,
+                                         cut.path_of_edge, message);
+  if(!message.empty()) return false;
+  // the pieces: faces connected without crossing a path, matched to P's faces by their corners
+  cut.region.assign(nf, -1);
+  int regions = 0;
+  for(std::size_t f0 = 0; f0 < nf; ++f0) {
+    if(cut.region[f0] >= 0) continue;
+    std::vector<int> stack(1, int(f0));
+    cut.region[f0] = regions;
+    while(!stack.empty()) {
+      const int f = stack.back();
+      stack.pop_back();
+      int h = m.face_halfedge[std::size_t(f)];
+      for(int i = 0; i < 3; ++i, h = m.next[std::size_t(h)]) {
+        const int g = m.face[std::size_t(h ^ 1)];
+        if(g >= 0 && cut.region[std::size_t(g)] < 0 && cut.path_of_edge[std::size_t(h >> 1)] < 0) { cut.region[std::size_t(g)] = regions; stack.push_back(g); }
+      }
+    }
+    ++regions;
+  }
+  if(std::size_t(regions) != pfaces.size()) {
+    message = "the paths cut the mesh into " + std::to_string(regions) + " pieces, not the " + std::to_string(pfaces.size()) +
+              " faces of the polyhedron";
+    return false;
+  }
+  std::vector<std::vector<int>> region_corners((std::size_t(regions)));
+  for(std::size_t h = 0; h < m.number_of_halfedges(); ++h) {
+    const int f = m.face[h], v = m.source(int(h));
+    if(f >= 0 && cut.corner_of[std::size_t(v)] >= 0) region_corners[std::size_t(cut.region[std::size_t(f)])].push_back(cut.corner_of[std::size_t(v)]);
+  }
+  cut.face_of_region.assign(std::size_t(regions), -1);
+  cut.region_of_face.assign(pfaces.size(), -1);
+  for(int r = 0; r < regions; ++r) {
+    std::vector<int>& rc = region_corners[std::size_t(r)];
+    std::sort(rc.begin(), rc.end());
+    rc.erase(std::unique(rc.begin(), rc.end()), rc.end());
+    for(std::size_t j = 0; j < pfaces.size(); ++j) {
+      std::vector<int> fc = pfaces[j];
+      std::sort(fc.begin(), fc.end());
+      if(fc == rc && cut.region_of_face[j] < 0) { cut.face_of_region[std::size_t(r)] = int(j); cut.region_of_face[j] = r; break; }
+    }
+    if(cut.face_of_region[std::size_t(r)] < 0) {
+      message = "a piece cut by the paths does not have the corners of a face of the polyhedron (are the corners placed like P's?)";
+      return false;
+    }
+  }
+  return true;
 }
 
 } // namespace internal
