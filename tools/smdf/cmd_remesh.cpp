@@ -14,6 +14,7 @@
 #include <CGAL/Surface_mesh_direction_fields/flat_development.h>
 #include <CGAL/Surface_mesh_direction_fields/grid_tessellation.h>
 #include <CGAL/Surface_mesh_direction_fields/intrinsic_geometry.h>
+#include <CGAL/Surface_mesh_direction_fields/remesh_untangling.h>
 #include <CGAL/Surface_mesh_direction_fields/topology.h>
 #include <CGAL/Surface_mesh_direction_fields/polycube_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/polyhedron_remeshing.h>
@@ -176,6 +177,29 @@ std::vector<vertex_descriptor> assign_cones(const std::string& preset, const Mes
 
 } // namespace
 
+// The inverted faces of a remesh unfolded along the input surface (untangle_remesh()), the
+// cones (vertices whose faces do not fill 2 pi in the grid's angles) held; `ok` says whether
+// none is left, `left` how many are, `message` why. Returns the JSON of what was done.
+Json untangle_inverted(const Mesh& input, Mesh& remesh, bool& ok, std::size_t& left, std::string& message)
+{
+  const std::vector<double> curvature = grid_curvatures(remesh);
+  auto held = remesh.add_property_map<vertex_descriptor, bool>("v:smdf_cone_held", false).first;
+  for(vertex_descriptor v : vertices(remesh)) held[v] = std::abs(curvature[index(v)]) > 1e-9;
+  const SMDF::Untangle_status us = SMDF::untangle_remesh(input, remesh, SMDF::parameters::vertex_is_constrained_map(held));
+  remesh.remove_property_map(held);
+  ok = us.success;
+  left = us.inverted_after;
+  message = us.message;
+  Json u = Json::object();
+  u["inverted_before"] = us.inverted_before;
+  u["inverted_after"] = us.inverted_after;
+  u["moved_vertices"] = us.moved_vertices;
+  u["max_displacement_over_edge_length"] = us.max_displacement;
+  u["straddling_faces"] = us.straddling_faces;
+  u["rounds"] = us.rounds;
+  return u;
+}
+
 Json run_remesh(const Args& args)
 {
   const std::string& file = args.positional[0];
@@ -211,6 +235,8 @@ Json run_remesh(const Args& args)
   load_mesh(file, mesh);
   Stopwatch clock;
   const bool progress = args.has("progress");
+  const bool untangle = !args.has("no-untangle");
+  std::string untangle_message;
   const long relax = args.has("relaxation") ? args.integer("relaxation", 0) : 10;
   if(relax < 0 || relax > 1000) throw Usage_error("option --relaxation expects an integer from 0 to 1000");
   const int relax_steps = int(relax);
@@ -414,6 +440,14 @@ Json run_remesh(const Args& args)
       timings["compensation_s"] = Json();   // polyhedron_remesh() embeds P's faces and grids them in one call
       timings["tessellation_s"] = clock.lap();
       out["edge_length"] = side / n;
+      bool success = rs.success;
+      std::string failure = rs.message;
+      std::size_t inverted = rs.inverted_faces;
+      if(num_faces(remesh) > 0 && inverted > 0 && untangle) {   // every other check passed: unfold them
+        out["untangle"] = untangle_inverted(mesh, remesh, success, inverted, untangle_message);
+        if(!success) failure += "; untangling: " + untangle_message;
+        timings["untangle_s"] = clock.lap();
+      }
       if(num_faces(remesh) > 0) {
         Json sizes = Json::object(), val = Json::object();
         sizes["4"] = rs.quads;
@@ -445,7 +479,7 @@ Json run_remesh(const Args& args)
           irr.push_back(std::move(o));
         }
         out["irregular_vertices"] = std::move(irr);
-        out["inverted_faces"] = rs.inverted_faces;
+        out["inverted_faces"] = inverted;
         out["quality"] = remesh_quality(remesh);
         out["distance_over_edge_length"] = remesh_distances(mesh, remesh, side / n);
         out["area_ratio"] = remesh_area_ratio(mesh, remesh);
@@ -455,8 +489,8 @@ Json run_remesh(const Args& args)
       }
       stage("done");
       out["timings"] = std::move(timings);
-      out["success"] = rs.success;
-      if(!rs.success) throw Failed_result{out, file + ": " + rs.message, 3};
+      out["success"] = success;
+      if(!success) throw Failed_result{out, file + ": " + failure, 3};
       return out;
     }
     const SMDF::Polycube_metric_status ps = on_file(file, [&] {
@@ -542,6 +576,15 @@ Json run_remesh(const Args& args)
   timings["metric_s"] = metric_s;
   timings["compensation_s"] = compensation_s;
   timings["tessellation_s"] = tessellation_s;
+  bool success = st.success;
+  std::string failure = st.message;
+  std::size_t inverted = st.inverted_faces;
+  if(num_faces(remesh) > 0 && inverted > 0 && untangle) {   // every other check passed: unfold them
+    stage("untangling inverted faces");
+    out["untangle"] = untangle_inverted(mesh, remesh, success, inverted, untangle_message);
+    if(!success) failure += "; untangling: " + untangle_message;
+    timings["untangle_s"] = clock.lap();
+  }
   if(num_faces(remesh) > 0) {
     Json sizes = Json::object(), val = Json::object();
     std::map<std::size_t, std::size_t> by_size;
@@ -560,7 +603,7 @@ Json run_remesh(const Args& args)
       irr.push_back(std::move(o));
     }
     out["irregular_vertices"] = std::move(irr);
-    out["inverted_faces"] = st.inverted_faces;
+    out["inverted_faces"] = inverted;
     out["quality"] = remesh_quality(remesh);
     out["distance_over_edge_length"] = remesh_distances(mesh, remesh, h);
     out["area_ratio"] = remesh_area_ratio(mesh, remesh);
@@ -571,8 +614,8 @@ Json run_remesh(const Args& args)
   }
   stage("done");
   out["timings"] = std::move(timings);
-  out["success"] = st.success;
-  if(!st.success) throw Failed_result{out, file + ": " + st.message, 3};
+  out["success"] = success;
+  if(!success) throw Failed_result{out, file + ": " + failure, 3};
   return out;
 }
 
@@ -592,6 +635,7 @@ Command remesh_command()
            {"width", "PX", "width of the --svg picture in pixels (default 800)"},
            {"knot-svg", "FILE", "write a woven Celtic knot along the quad remesh's medial graph (Lai et al. Fig. 13)"},
            {"relaxation", "K", "with --polycube: one round of stretch-minimising reweighting, then at most K steps of as-rigid-as-possible relaxation of the polyhedron's charts (fewer once a triangle about to fold throttles a step below 1 %) and 3K sweeps across its edges near the paths (default 10; 0: the plain Tutte embedding)"},
+           {"no-untangle", "", "keep the grid's faces that come out inverted on the surface (default: their vertices are moved along the input until none is, the cones held; reported as untangle)"},
            {"progress", "", "report each stage on stderr with the elapsed time"}},
           "regular quad or triangle remesh from a flat cone metric",
           "Lai et al. 2010, section 5: develops a flat cone metric of the mesh (its own edge lengths,\n"

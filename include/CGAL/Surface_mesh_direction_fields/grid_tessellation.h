@@ -56,7 +56,8 @@ struct Grid_tessellation_status
   /// output vertices of irregular valence, each with the input cone it lies on (-1 if none)
   std::vector<std::pair<std::size_t, long>> irregular_vertices;
   /// output faces whose area vector points against the input's normals under their corners
-  /// (inverted in space: the metric stretches too much for the edge length); success needs none
+  /// (inverted in space: the metric stretches too much for the edge length), counted last, once
+  /// every other check has passed; success needs none (untangle_remesh() can unfold them)
   std::size_t inverted_faces = 0;
 };
 
@@ -660,6 +661,10 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
       return st;
     }
   }
+  if(!cones_ok) {
+    st.message = "an output vertex has a valence its cone does not explain";
+    return st;
+  }
   // inverted faces: the polygon's area vector against the sum of the input normals under its corners
   auto input_normal = [&](const Where& w) {
     const int f = w.kind == 0 ? w.id : w.kind == 1 ? (m.face[std::size_t(2 * w.id)] >= 0 ? m.face[std::size_t(2 * w.id)] : m.face[std::size_t(2 * w.id + 1)])
@@ -688,10 +693,6 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
   if(st.inverted_faces > 0) {
     st.message = std::to_string(st.inverted_faces) + " faces are inverted in space (their corners turn against the input's normals: "
                  "the metric stretches too much for this edge length)";
-    return st;
-  }
-  if(!cones_ok) {
-    st.message = "an output vertex has a valence its cone does not explain";
     return st;
   }
   st.success = true;

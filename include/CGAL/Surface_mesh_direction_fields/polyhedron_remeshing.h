@@ -42,7 +42,8 @@ struct Polyhedron_remesh_status
   /// square, 6 inside a triangle, 4, 5 or 6 on an edge between squares and / or triangles, the
   /// number of faces at a corner); success needs none
   std::size_t unexpected_valences = 0;
-  /// faces whose area vector points against the input's normals under their corners
+  /// faces whose area vector points against the input's normals under their corners, counted
+  /// last, once every other check has passed (untangle_remesh() can unfold them)
   std::size_t inverted_faces = 0;
 };
 
@@ -266,6 +267,8 @@ Polyhedron_remesh_status polyhedron_remesh(const TriangleMesh& tm,
     ++st.valences[d];
     st.unexpected_valences += int(d) != expected[i];
   }
+  st.vertices = num_vertices(out);
+  if(st.unexpected_valences) { st.message = std::to_string(st.unexpected_valences) + " vertices have a valence their place does not explain"; return st; }
   auto input_normal = [&](int f) {
     const int g = m.face_halfedge[std::size_t(f)];
     const V3 a = point3(m.source(g)), b = point3(m.target[std::size_t(g)]), c = point3(m.target[std::size_t(m.next[std::size_t(g)])]);
@@ -285,8 +288,6 @@ Polyhedron_remesh_status polyhedron_remesh(const TriangleMesh& tm,
     }
     st.inverted_faces += area[0] * nsum[0] + area[1] * nsum[1] + area[2] * nsum[2] <= 0;
   }
-  st.vertices = num_vertices(out);
-  if(st.unexpected_valences) { st.message = std::to_string(st.unexpected_valences) + " vertices have a valence their place does not explain"; return st; }
   if(st.inverted_faces) {
     st.message = std::to_string(st.inverted_faces) + " faces are inverted in space (their corners turn against the input's normals)";
     return st;

@@ -1,0 +1,231 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_REMESH_UNTANGLING_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_REMESH_UNTANGLING_H
+
+// Inverted faces of a remesh unfolded by moving vertices along the input surface: the
+// connectivity (and so every valence and irregular vertex) stays, every moved vertex is put back
+// on the input by its closest point.
+
+#include <CGAL/Surface_mesh_direction_fields/errors.h>
+#include <CGAL/Surface_mesh_direction_fields/parameters.h>
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/Kernel_traits.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsRemeshing
+/// Outcome of untangle_remesh().
+struct Untangle_status
+{
+  bool success = false;              ///< no face is inverted at the end
+  std::string message;               ///< empty on success
+  std::size_t inverted_before = 0;   ///< faces inverted with respect to the input at the start
+  std::size_t inverted_after = 0;    ///< ... and at the end
+  std::size_t moved_vertices = 0;    ///< vertices moved along the input surface
+  /// of the faces still inverted, those whose corners lie where the input's normals point apart
+  /// (a face across a thin part, such as an ear, or a sharp tip): no move along the surface
+  /// unfolds them, a smaller edge length does
+  std::size_t straddling_faces = 0;
+  int rounds = 0;                    ///< smoothing rounds taken (each over a wider ring of vertices)
+  /// the largest distance a vertex moved, in units of the remesh's mean edge length
+  double max_displacement = 0;
+};
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsRemeshing
+/// Unfolds the faces of `remesh` that are inverted with respect to the surface `input` (a face
+/// is inverted when its area vector points against the input's normals at its corners, the test
+/// of tessellate_flat_metric() and polyhedron_remesh()) by moving vertices near them along the
+/// input: each round smooths the vertices within a ring of the inverted faces (one ring wider
+/// each round, up to `number_of_iterations` rounds) towards the mean of their neighbours, puts
+/// each one back on the input at its closest point, and keeps a move only if it inverts no face
+/// around the vertex that was not inverted and does not jump to a part of the surface whose
+/// normal turns away (as across a thin ear). Only positions change: faces, valences and the
+/// irregular vertices are those of the grid.
+///
+/// This is a repair outside Lai et al.'s method. Their remesh is the grid of the metric, and
+/// where one polyhedron fits the shape poorly (the bunny's ears on a box, limbs) a grid cell can
+/// straddle a fold of the surface; moving a few vertices along the surface gives a valid mesh
+/// whose connectivity is still the grid's.
+///
+/// Named parameters: `vertex_point_map` (the input's points), `vertex_is_constrained_map` (a
+/// readable map of `remesh`'s vertices to `bool`: those never move, e.g. the cones; border
+/// vertices never move either), `number_of_iterations` (default 8). Throws `Input_error` for an
+/// empty input or a remesh whose faces have fewer than three vertices.
+template <typename TriangleMesh, typename PolygonMesh, typename NamedParameters = parameters::Default_named_parameters>
+Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, const NamedParameters& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::graph_traits<PolygonMesh>::face_descriptor face_descriptor;
+  typedef typename boost::graph_traits<PolygonMesh>::halfedge_descriptor halfedge_descriptor;
+  typedef typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type Input_VPM;
+  typedef typename boost::property_traits<Input_VPM>::value_type Input_point;
+  typedef typename CGAL::Kernel_traits<Input_point>::Kernel K;
+  typedef CGAL::AABB_face_graph_triangle_primitive<TriangleMesh, Input_VPM> Primitive;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> Tree;
+  typedef std::array<double, 3> V3;
+
+  Untangle_status st;
+  if(faces(input).first == faces(input).second) throw Input_error(Input_error::INVALID_ARGUMENT, "untangle_remesh() needs a non-empty input surface");
+  for(face_descriptor f : faces(remesh))
+    if(CGAL::halfedges_around_face(halfedge(f, remesh), remesh).size() < 3)
+      throw Input_error(Input_error::INVALID_ARGUMENT, "untangle_remesh(): a face of the remesh has fewer than three vertices");
+  const Input_VPM ivpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, input));
+  const int max_rounds = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 8);
+  if(max_rounds < 0) throw Input_error(Input_error::INVALID_ARGUMENT, "number_of_iterations must not be negative");
+  auto constrained = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_is_constrained),
+                                      CGAL::Static_boolean_property_map<vertex_descriptor, false>());
+  Tree tree(faces(input).first, faces(input).second, input, ivpm);
+  tree.accelerate_distance_queries();
+
+  // the remesh's vertices and faces as indices
+  auto vim = get(CGAL::dynamic_vertex_property_t<std::size_t>(), remesh);
+  std::vector<vertex_descriptor> vs;
+  for(vertex_descriptor v : vertices(remesh)) { put(vim, v, vs.size()); vs.push_back(v); }
+  std::vector<std::vector<std::size_t>> fv;                 // per face: its vertices
+  std::vector<std::vector<std::size_t>> vf(vs.size()), nb(vs.size());   // per vertex: its faces, its neighbours
+  std::vector<char> fixed(vs.size(), 0);
+  for(face_descriptor f : faces(remesh)) {
+    std::vector<std::size_t> c;
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, remesh), remesh)) c.push_back(get(vim, target(h, remesh)));
+    for(std::size_t v : c) vf[v].push_back(fv.size());
+    fv.push_back(c);
+  }
+  for(vertex_descriptor v : vertices(remesh)) {
+    const std::size_t i = get(vim, v);
+    fixed[i] = CGAL::is_border(v, remesh) || get(constrained, v);
+    for(halfedge_descriptor h : CGAL::halfedges_around_target(halfedge(v, remesh), remesh)) nb[i].push_back(get(vim, source(h, remesh)));
+  }
+  auto rvpm = get(CGAL::vertex_point, remesh);
+  std::vector<V3> pos(vs.size()), normal(vs.size());   // per vertex: position, input normal under it
+  auto input_normal = [&](const Input_point& p, V3& n) {
+    const auto cp = tree.closest_point_and_primitive(p);
+    const auto h = halfedge(cp.second, input);
+    const Input_point &a = get(ivpm, source(h, input)), &b = get(ivpm, target(h, input)), &c = get(ivpm, target(next(h, input), input));
+    const auto nn = CGAL::cross_product(b - a, c - a);
+    const double l = std::sqrt(CGAL::to_double(nn.squared_length()));
+    n = V3{{CGAL::to_double(nn.x()) / l, CGAL::to_double(nn.y()) / l, CGAL::to_double(nn.z()) / l}};
+    return cp.first;
+  };
+  double mean_edge = 0;
+  std::size_t edge_count = 0;
+  for(std::size_t i = 0; i < vs.size(); ++i) {
+    const auto& p = get(rvpm, vs[i]);
+    pos[i] = V3{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+    input_normal(Input_point(pos[i][0], pos[i][1], pos[i][2]), normal[i]);
+  }
+  for(std::size_t i = 0; i < vs.size(); ++i)
+    for(std::size_t j : nb[i]) {
+      const double d[3] = {pos[j][0] - pos[i][0], pos[j][1] - pos[i][1], pos[j][2] - pos[i][2]};
+      mean_edge += std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+      ++edge_count;
+    }
+  mean_edge /= double((std::max)(edge_count, std::size_t(1)));
+  auto inverted = [&](std::size_t f) {
+    double area[3] = {0, 0, 0}, under[3] = {0, 0, 0};
+    const std::vector<std::size_t>& c = fv[f];
+    for(std::size_t k = 0; k < c.size(); ++k) {
+      const V3 &p = pos[c[k]], &q = pos[c[(k + 1) % c.size()]];
+      area[0] += p[1] * q[2] - p[2] * q[1]; area[1] += p[2] * q[0] - p[0] * q[2]; area[2] += p[0] * q[1] - p[1] * q[0];
+      for(int d = 0; d < 3; ++d) under[d] += normal[c[k]][std::size_t(d)];
+    }
+    return area[0] * under[0] + area[1] * under[1] + area[2] * under[2] <= 0;
+  };
+  auto count_inverted = [&] {
+    std::size_t n = 0;
+    for(std::size_t f = 0; f < fv.size(); ++f) n += inverted(f);
+    return n;
+  };
+  st.inverted_before = count_inverted();
+  std::vector<V3> start = pos;
+  std::vector<char> moved(vs.size(), 0);
+  std::size_t now = st.inverted_before;
+  for(int round = 1; round <= max_rounds && now > 0; ++round) {
+    st.rounds = round;
+    // the vertices within `round` rings of an inverted face
+    std::vector<char> active(vs.size(), 0);
+    std::vector<std::size_t> ring;
+    for(std::size_t f = 0; f < fv.size(); ++f)
+      if(inverted(f)) for(std::size_t v : fv[f]) if(!active[v]) { active[v] = 1; ring.push_back(v); }
+    for(int r = 0; r < round; ++r) {
+      const std::vector<std::size_t> last = ring;
+      for(std::size_t v : last) for(std::size_t w : nb[v]) if(!active[w]) { active[w] = 1; ring.push_back(w); }
+    }
+    for(int sweep = 0; sweep < 10; ++sweep) {
+      for(std::size_t v : ring) {
+        if(fixed[v]) continue;
+        V3 mean{{0, 0, 0}};
+        for(std::size_t w : nb[v]) for(int d = 0; d < 3; ++d) mean[std::size_t(d)] += pos[w][std::size_t(d)] / double(nb[v].size());
+        V3 n;
+        const Input_point q = input_normal(Input_point(mean[0], mean[1], mean[2]), n);
+        if(n[0] * normal[v][0] + n[1] * normal[v][1] + n[2] * normal[v][2] <= 0) continue;   // the other side of a thin part
+        std::vector<char> was;
+        for(std::size_t f : vf[v]) was.push_back(inverted(f) ? 1 : 0);
+        const V3 old_pos = pos[v], old_normal = normal[v];
+        pos[v] = V3{{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())}};
+        normal[v] = n;
+        // kept if fewer faces around v are inverted, or as many and none that was fine turned over
+        std::size_t before = 0, after = 0;
+        bool turned = false;
+        for(std::size_t k = 0; k < vf[v].size(); ++k) {
+          const bool now_inverted = inverted(vf[v][k]);
+          before += std::size_t(was[k]);
+          after += std::size_t(now_inverted);
+          turned = turned || (!was[k] && now_inverted);
+        }
+        const bool worse = after > before || (after == before && turned);
+        if(worse) { pos[v] = old_pos; normal[v] = old_normal; }
+        else moved[v] = 1;
+      }
+    }
+    now = count_inverted();
+  }
+  st.inverted_after = now;
+  for(std::size_t f = 0; f < fv.size(); ++f) {   // left inverted across a thin part: corners' normals apart
+    if(!inverted(f)) continue;
+    bool apart = false;
+    for(std::size_t a = 0; a < fv[f].size() && !apart; ++a)
+      for(std::size_t b = a + 1; b < fv[f].size() && !apart; ++b) {
+        const V3 &n = normal[fv[f][a]], &m = normal[fv[f][b]];
+        apart = n[0] * m[0] + n[1] * m[1] + n[2] * m[2] < 0;
+      }
+    st.straddling_faces += apart;
+  }
+  for(std::size_t i = 0; i < vs.size(); ++i) {
+    if(!moved[i]) continue;
+    const double d[3] = {pos[i][0] - start[i][0], pos[i][1] - start[i][1], pos[i][2] - start[i][2]};
+    const double l = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    if(l == 0) continue;
+    ++st.moved_vertices;
+    st.max_displacement = (std::max)(st.max_displacement, l / (mean_edge > 0 ? mean_edge : 1));
+    put(rvpm, vs[i], typename boost::property_traits<decltype(rvpm)>::value_type(pos[i][0], pos[i][1], pos[i][2]));
+  }
+  st.success = now == 0;
+  if(!st.success)
+    st.message = std::to_string(now) + " of " + std::to_string(st.inverted_before) + " inverted faces are still inverted after " +
+                 std::to_string(st.rounds) + " rounds of moving vertices along the surface" +
+                 (st.straddling_faces ? " (" + std::to_string(st.straddling_faces) + " lie across a thin part or a sharp tip, where the input's " +
+                                            "normals at their corners point apart: use a smaller edge length)" : std::string());
+  return st;
+}
+
+} // namespace Surface_mesh_direction_fields
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_REMESH_UNTANGLING_H
