@@ -21,6 +21,7 @@
 #include <CGAL/Surface_mesh_direction_fields/polycube_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/polyhedron_compatibility.h>
 #include <CGAL/Surface_mesh_direction_fields/polyhedron_remeshing.h>
+#include <CGAL/Surface_mesh_direction_fields/remesh_untangling.h>
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/delaunay_refinement.h>
 #include <CGAL/Surface_mesh_direction_fields/topology.h>
@@ -913,6 +914,73 @@ void delaunay_refinement(const std::string& dir)
   check_remesh(ball, ball, remesh, ts, 4, {{3, 8}}, 96, "sphere-pushed cube, refined (" + std::to_string(rs.inserted.size()) + " vertices added), quads of 0.25");
 }
 
+// untangle_remesh() on the bunny's box remesh at about 8,000 quads, where one box squeezes the
+// ears and 16 quads come out inverted: afterwards none is, the connectivity is the grid's (the
+// same valence at every vertex, the eight cones held in place) and the full read-back passes on
+// the moved mesh (every vertex on the input, no face flipped by the test's own normals, CGAL's
+// readers). At about 2,000 quads one quad lies across a thin part, its corners' normals
+// pointing apart: the status says so, and no vertex moves.
+void untangling(const std::string& dir)
+{
+  Surface_mesh mesh;
+  SMDF::read_triangle_mesh(dir + "/meshes/bunny_bff.obj", mesh);
+  K::Vector_3 center(0, 0, 0);
+  for(auto v : vertices(mesh)) center = center + (mesh.point(v) - CGAL::ORIGIN) / double(num_vertices(mesh));
+  const std::array<Surface_mesh::Vertex_index, 8> corners = diagonal_corners(mesh, center);
+  auto targets = mesh.add_property_map<Surface_mesh::Vertex_index, double>("v:target", 0.).first;
+  for(auto v : corners) targets[v] = M_PI / 2;
+  auto flat = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:flat", 0).first;
+  auto u = mesh.add_property_map<Surface_mesh::Vertex_index, double>("v:u", 0.).first;
+  const auto cm = SMDF::compute_cone_metric(mesh, targets, flat, SMDF::parameters::conformal_factor_map(u).curvature_tolerance(1e-6));
+  SMDF_CHECK_MSG(cm.converged, "bunny, 8 cones: " << cm.message);
+  const double area = surface_area(mesh);
+  std::map<int, std::size_t> outcome;
+  for(int quads : {8000, 2000}) {
+    const double h = std::sqrt(area / quads);
+    auto lengths = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:box", 0).first;
+    const auto ps = SMDF::box_polycube_metric(mesh, corners, h, lengths, SMDF::parameters::conformal_factor_map(u));
+    SMDF_CHECK_MSG(ps.success, "bunny box metric: " << ps.message);
+    if(!ps.success) continue;
+    const auto dev = SMDF::develop_flat_metric(mesh, SMDF::parameters::edge_length_map(lengths));
+    Surface_mesh out;
+    const auto st = SMDF::tessellate_flat_metric(mesh, dev, SMDF::SQUARE_GRID, h, out);
+    mesh.remove_property_map(lengths);
+    const std::string what = "bunny, box, about " + std::to_string(quads) + " quads, untangled";
+    SMDF_CHECK_MSG(!st.success && st.inverted_faces > 0, what << ": the grid itself has inverted quads (" << st.inverted_faces << ")");
+    std::vector<std::size_t> valence;
+    std::vector<K::Point_3> before;
+    for(auto v : vertices(out)) { valence.push_back(degree(v, out)); before.push_back(out.point(v)); }
+    auto held = out.add_property_map<Surface_mesh::Vertex_index, bool>("v:held", false).first;
+    for(const auto& iv : st.irregular_vertices) held[Surface_mesh::Vertex_index(Surface_mesh::size_type(iv.first))] = true;
+    const SMDF::Untangle_status us = SMDF::untangle_remesh(mesh, out, SMDF::parameters::vertex_is_constrained_map(held));
+    std::size_t same_valence = 0, held_still = 0, unmoved = 0;
+    for(auto v : vertices(out)) {
+      same_valence += degree(v, out) == valence[std::size_t(v)];
+      held_still += held[v] && out.point(v) == before[std::size_t(v)];
+      unmoved += out.point(v) == before[std::size_t(v)];
+    }
+    SMDF_CHECK_MSG(same_valence == num_vertices(out) && held_still == 8 && num_vertices(out) - unmoved == us.moved_vertices &&
+                       (us.moved_vertices > 0) == us.success,
+                   what << ": positions only, all or none (" << same_valence << " of " << num_vertices(out) << " valences kept, " << held_still
+                        << " of 8 cones held, " << us.moved_vertices << " vertices moved, " << num_vertices(out) - unmoved << " found moved)");
+    SMDF_CHECK_MSG(us.inverted_after == us.straddling_faces && us.success == (us.inverted_after == 0),
+                   what << ": every face left inverted lies across a thin part (" << us.inverted_after << ", " << us.straddling_faces << "): " << us.message);
+    outcome[quads] = us.inverted_after;
+    std::cout << what << ": " << us.inverted_before << " inverted, " << us.inverted_after << " left (" << us.straddling_faces
+              << " across a thin part), " << us.moved_vertices << " vertices moved by up to " << us.max_displacement << " edge lengths, "
+              << us.rounds << " rounds" << std::endl;
+    if(quads == 8000) {
+      SMDF::Grid_tessellation_status after = st;   // the status of the moved mesh: the tessellation's checks, then no inversion
+      after.success = us.success;
+      after.inverted_faces = us.inverted_after;
+      const double faces = double(num_faces(out));
+      check_remesh(mesh, mesh, out, after, 4, {{3, 8}}, faces, what);
+    }
+  }
+  SMDF_CHECK_MSG(outcome[8000] == 0 && outcome[2000] > 0, "bunny: untangled at 8000 quads (" << outcome[8000] << " left), not at 2000 ("
+                                                                << outcome[2000] << " left, across the ear)");
+}
+
 int main()
 {
   cube();
@@ -921,7 +989,7 @@ int main()
   open_square();
   box_corner_order();
   const std::string dir = smdf_test::shared_data_dir();
-  if(!dir.empty()) { box_polycube(dir); seam_relaxation(dir); flipped_flat_metric(dir); delaunay_refinement(dir); octahedron_polyhedron(dir); obelisk(dir); }
+  if(!dir.empty()) { box_polycube(dir); seam_relaxation(dir); flipped_flat_metric(dir); delaunay_refinement(dir); octahedron_polyhedron(dir); obelisk(dir); untangling(dir); }
   else std::cout << "../shared/data not found: box polycube on shared meshes skipped" << std::endl;
   return smdf_test::finish();
 }

@@ -1474,6 +1474,21 @@ def test_shared_remesh_refinement(smdf, c, meshes, tmp):
             % (ref.get("faces"), m.get("max_curvature_error")))
     c.check(len(lines) == 1 and "not symmetries" in lines[0] and doc.get("failing_cut_edge_count", 0) > 0,
             "remesh cheburashka --cones: exit 3, the failing cut edges named in one line (%r)" % lines[-1:])
+    # remesh bunny --polycube box: 16 quads of the grid come out inverted (one box squeezes the
+    # ears); by default their vertices are moved along the surface until none is (exit 0, the
+    # eight cones of valence 3 the only irregular vertices); --no-untangle keeps the grid (exit 3)
+    bunny = os.path.join(meshes, "bunny_bff.obj")
+    rc, o, err = smdf.run(["remesh", bunny, "--polycube", "box", "--faces", "8000", "--out", os.path.join(tmp, "b.off")])
+    doc = json.loads(o.decode()) if o else {}
+    u = doc.get("untangle", {})
+    c.check(rc == 0 and doc.get("success") is True and u.get("inverted_before", 0) > 0 and u.get("inverted_after") == 0
+            and doc.get("inverted_faces") == 0 and sorted(v["valence"] for v in doc.get("irregular_vertices", [])) == [3] * 8
+            and doc.get("distance_over_edge_length", {}).get("vertices_to_input", 1) < 1e-9,
+            "remesh bunny --polycube box: inverted quads untangled along the surface, cones kept (rc=%s, %r)" % (rc, u))
+    rc, o, err = smdf.run(["remesh", bunny, "--polycube", "box", "--faces", "8000", "--no-untangle", "--out", os.path.join(tmp, "b.off")])
+    doc = json.loads(o.decode()) if o else {}
+    c.check(rc == 3 and "untangle" not in doc and doc.get("inverted_faces", 0) > 0 and b"inverted" in err,
+            "remesh bunny --polycube box --no-untangle: the grid's inverted quads, exit 3 (rc=%s, %r)" % (rc, doc.get("inverted_faces")))
     # cone-metric --refine: the same metric, its files describe the refinement and read back
     lengths, tri = os.path.join(tmp, "l.txt"), os.path.join(tmp, "t.off")
     r = smdf.json(["cone-metric", mesh, "--cones", cones, "--refine", "--lengths-out", lengths, "--triangulation-out", tri],

@@ -179,19 +179,22 @@ std::vector<vertex_descriptor> assign_cones(const std::string& preset, const Mes
 
 // The inverted faces of a remesh unfolded along the input surface (untangle_remesh()), the
 // cones (vertices whose faces do not fill 2 pi in the grid's angles) held; `ok` says whether
-// none is left, `left` how many are, `message` why. Returns the JSON of what was done.
+// none is left, `left` how many are (on entry: the tessellation's count), `message` why. Returns
+// the JSON of what was done.
 Json untangle_inverted(const Mesh& input, Mesh& remesh, bool& ok, std::size_t& left, std::string& message)
 {
+  const std::size_t grid_inverted = left;
   const std::vector<double> curvature = grid_curvatures(remesh);
   auto held = remesh.add_property_map<vertex_descriptor, bool>("v:smdf_cone_held", false).first;
   for(vertex_descriptor v : vertices(remesh)) held[v] = std::abs(curvature[index(v)]) > 1e-9;
   const SMDF::Untangle_status us = SMDF::untangle_remesh(input, remesh, SMDF::parameters::vertex_is_constrained_map(held));
   remesh.remove_property_map(held);
   ok = us.success;
-  left = us.inverted_after;
+  left = us.success ? 0 : grid_inverted;   // a failed untangling moves nothing
   message = us.message;
   Json u = Json::object();
-  u["inverted_before"] = us.inverted_before;
+  u["grid_inverted_faces"] = grid_inverted;     // the tessellation's count (normals of the faces the corners were placed in)
+  u["inverted_before"] = us.inverted_before;    // the untangler's (normals of the faces nearest the corners)
   u["inverted_after"] = us.inverted_after;
   u["moved_vertices"] = us.moved_vertices;
   u["max_displacement_over_edge_length"] = us.max_displacement;
@@ -662,7 +665,11 @@ Command remesh_command()
           "failing_cut_edge_count (edge indices of the triangulation carrying the metric: the\n"
           "refinement's when delaunay_refinement is present), vertices, faces_by_size, valences\n"
           "(interior vertices),\n"
-          "irregular_vertices: [{vertex, cone, valence}], inverted_faces, quality:\n"
+          "irregular_vertices: [{vertex, cone, valence}], inverted_faces (after untangling),\n"
+          "untangle (when the grid had inverted faces: {grid_inverted_faces, inverted_before,\n"
+          "inverted_after (by the normals of the input faces nearest the corners), moved_vertices,\n"
+          "max_displacement_over_edge_length, straddling_faces (left across a thin part or tip),\n"
+          "rounds}), quality:\n"
           "{min_corner_angle_deg, max_corner_angle_deg, min_scaled_jacobian, mean_scaled_jacobian},\n"
           "distance_over_edge_length: {remesh_to_input (largest distance of the remesh's vertices,\n"
           "edge midpoints and face-fan centroids to the input), input_to_remesh (of the input's\n"
@@ -670,7 +677,8 @@ Command remesh_command()
           "rounding, they are placed on the input)}: the two-sided Hausdorff distance, sampled, over\n"
           "the edge length, area_ratio (remesh over\n"
           "input), timings: {metric_s,\n"
-          "compensation_s, tessellation_s}, success}. With a mixed grid (obelisk, or a FILE of squares\n"
+          "compensation_s, tessellation_s, untangle_s when untangling}, success}. With a mixed grid\n"
+          "(obelisk, or a FILE of squares\n"
           "and triangles) each face of P gets its own grid: subdivisions, unexpected_valences, and\n"
           "irregular_vertices: [{vertex, cone, valence, curvature}] (vertices whose faces do not fill\n"
           "2 pi in the grid's angles, cone: P's corner there or null); compensation_s is null (in\n"

@@ -35,8 +35,8 @@ struct Untangle_status
   bool success = false;              ///< no face is inverted at the end
   std::string message;               ///< empty on success
   std::size_t inverted_before = 0;   ///< faces inverted with respect to the input at the start
-  std::size_t inverted_after = 0;    ///< ... and at the end
-  std::size_t moved_vertices = 0;    ///< vertices moved along the input surface
+  std::size_t inverted_after = 0;    ///< ... and at the end (if not 0, no vertex was moved)
+  std::size_t moved_vertices = 0;    ///< vertices moved along the input surface (0 unless success)
   /// of the faces still inverted, those whose corners lie where the input's normals point apart
   /// (a face across a thin part, such as an ear, or a sharp tip): no move along the surface
   /// unfolds them, a smaller edge length does
@@ -55,7 +55,8 @@ struct Untangle_status
 /// each one back on the input at its closest point, and keeps a move only if it inverts no face
 /// around the vertex that was not inverted and does not jump to a part of the surface whose
 /// normal turns away (as across a thin ear). Only positions change: faces, valences and the
-/// irregular vertices are those of the grid.
+/// irregular vertices are those of the grid. If some faces stay inverted, `remesh` is left as it
+/// was (the status says how many would have stayed, and how many of those lie across a thin part).
 ///
 /// This is a repair outside Lai et al.'s method. Their remesh is the grid of the metric, and
 /// where one polyhedron fits the shape poorly (the bunny's ears on a box, limbs) a grid cell can
@@ -152,6 +153,21 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
     for(std::size_t f = 0; f < fv.size(); ++f) n += inverted(f);
     return n;
   };
+  // inverted faces across a thin part or a tip: their corners' normals point apart
+  auto count_straddling = [&] {
+    std::size_t n = 0;
+    for(std::size_t f = 0; f < fv.size(); ++f) {
+      if(!inverted(f)) continue;
+      bool apart = false;
+      for(std::size_t a = 0; a < fv[f].size() && !apart; ++a)
+        for(std::size_t b = a + 1; b < fv[f].size() && !apart; ++b) {
+          const V3 &n1 = normal[fv[f][a]], &n2 = normal[fv[f][b]];
+          apart = n1[0] * n2[0] + n1[1] * n2[1] + n1[2] * n2[2] < 0;
+        }
+      n += apart;
+    }
+    return n;
+  };
   st.inverted_before = count_inverted();
   std::vector<V3> start = pos;
   std::vector<char> moved(vs.size(), 0);
@@ -195,17 +211,13 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
       }
     }
     now = count_inverted();
+    if(now > 0 && count_straddling() == now) break;   // what is left, no move along the surface unfolds
   }
   st.inverted_after = now;
-  for(std::size_t f = 0; f < fv.size(); ++f) {   // left inverted across a thin part: corners' normals apart
-    if(!inverted(f)) continue;
-    bool apart = false;
-    for(std::size_t a = 0; a < fv[f].size() && !apart; ++a)
-      for(std::size_t b = a + 1; b < fv[f].size() && !apart; ++b) {
-        const V3 &n = normal[fv[f][a]], &m = normal[fv[f][b]];
-        apart = n[0] * m[0] + n[1] * m[1] + n[2] * m[2] < 0;
-      }
-    st.straddling_faces += apart;
+  st.straddling_faces = count_straddling();
+  if(now > 0) {   // not all unfolded: the remesh is left as the grid made it
+    pos = start;
+    std::fill(moved.begin(), moved.end(), 0);
   }
   for(std::size_t i = 0; i < vs.size(); ++i) {
     if(!moved[i]) continue;
@@ -221,7 +233,8 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
     st.message = std::to_string(now) + " of " + std::to_string(st.inverted_before) + " inverted faces are still inverted after " +
                  std::to_string(st.rounds) + " rounds of moving vertices along the surface" +
                  (st.straddling_faces ? " (" + std::to_string(st.straddling_faces) + " lie across a thin part or a sharp tip, where the input's " +
-                                            "normals at their corners point apart: use a smaller edge length)" : std::string());
+                                            "normals at their corners point apart: use a smaller edge length)" : std::string()) +
+                 "; the remesh is left as the grid made it";
   return st;
 }
 
