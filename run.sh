@@ -119,7 +119,8 @@ run_fuzzers() {
   CC=clang CXX=clang++ cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O1" -DSMDF_BUILD_FUZZERS=ON \
         -DSMDF_BUILD_TESTS=OFF -DSMDF_BUILD_EXAMPLES=OFF -DSMDF_BUILD_BENCHMARKS=OFF -DSMDF_BUILD_TOOLS=OFF
   local targets=(fuzz_mesh_reading fuzz_cli_lists fuzz_cli_files) t scratch
-  # runs per target at most (with the fixed seed: the inputs of a clean local run of 45 s each)
+  # runs per target at most (with the fixed seed: the inputs of a clean local run of 45 s each;
+  # CI gives each 30 s, which usually ends a run first)
   local -A runs=([fuzz_mesh_reading]=70000 [fuzz_cli_lists]=1500000 [fuzz_cli_files]=2800)
   cmake --build "$dir" -j "$JOBS" --target "${targets[@]}"
   for t in "${targets[@]}"; do

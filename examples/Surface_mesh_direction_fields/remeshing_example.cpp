@@ -7,7 +7,8 @@
 // and the square grid carried onto the surface. Then the same cones on the mesh's conforming
 // Delaunay refinement, where a flat cone metric the input triangulation cannot carry usually
 // exists without intrinsic flips; and a triangle remesh through the octahedron (six cones of
-// 2 pi/3). Every result is read back (valences, inverted faces, convergence).
+// 2 pi/3), whose inverted triangles, if any, are unfolded along the surface. Every result is read
+// back (valences, inverted faces, convergence).
 //
 // Usage: remeshing_example [mesh.off] [quads]   (default: data/spot.off, about 2000 quads)
 
@@ -20,6 +21,7 @@
 #include <CGAL/Surface_mesh_direction_fields/flat_development.h>
 #include <CGAL/Surface_mesh_direction_fields/grid_tessellation.h>
 #include <CGAL/Surface_mesh_direction_fields/polycube_metric.h>
+#include <CGAL/Surface_mesh_direction_fields/remesh_untangling.h>
 #include <CGAL/Surface_mesh_direction_fields/IO/read_triangle_mesh.h>
 
 #include <algorithm>
@@ -115,8 +117,19 @@ int main(int argc, char* argv[])
     std::cout << "octahedron of side " << side << ": " << ts.faces << " triangles, " << ts.irregular_vertices.size()
               << " irregular vertices (the cones, valence 4), " << ts.inverted_faces << " inverted; read-back "
               << (ts.success ? "ok" : ts.message) << "\n";
+    bool valid = ts.success;
+    if(!ts.success && ts.inverted_faces > 0) {
+      // every other check passed (inverted faces are counted last): move the vertices near them
+      // along the surface, the cones held; faces and valences stay the grid's
+      auto held = triangles.add_property_map<Vertex, bool>("v:held", false).first;
+      for(const auto& iv : ts.irregular_vertices) held[Vertex(Mesh::size_type(iv.first))] = true;
+      const SMDF::Untangle_status us = SMDF::untangle_remesh(mesh, triangles, SMDF::parameters::vertex_is_constrained_map(held));
+      std::cout << "untangled: " << us.inverted_before << " inverted triangles, " << us.moved_vertices << " vertices moved; "
+                << (us.success ? "none inverted now" : us.message) << "\n";
+      valid = us.success;
+    }
     //! [octahedron_remesh]
-    if(!ts.success) return EXIT_FAILURE;
+    if(!valid) return EXIT_FAILURE;
 
     //! [refinement]
     // The same cones without flips on the conforming Delaunay refinement: vertices added on the

@@ -13,6 +13,7 @@
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polyhedron_3.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
 
@@ -544,6 +545,33 @@ void octahedron_polyhedron(const std::string& dir)
   if(st.inverted_faces == 0) check_remesh(mesh, mesh, out, st, 3, {{4, 6}}, 8 * 36, what);
   else SMDF_CHECK_MSG(!st.success && st.message.find("inverted") != std::string::npos, what << ": inverted faces reported as failure");
   std::cout << what << ": path stretch " << ps.max_path_stretch << ", " << st.inverted_faces << " inverted faces" << std::endl;
+  {   // at a fine grid (issue 13: area within 1 %): P of the surface's area, 40 grid edges a side,
+      // 12,800 triangles, inverted ones unfolded along the surface, then the full read-back
+    const double area = surface_area(mesh), fine_side = std::sqrt(area / (2 * std::sqrt(3.))), fh = fine_side / 40;
+    auto fine = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:octa_fine", 0).first;
+    const auto fs = SMDF::polyhedron_metric(mesh, corners, faces, fine_side, fine, SMDF::parameters::conformal_factor_map(u));
+    SMDF_CHECK_MSG(fs.success, "spot, octahedron metric of the surface's area: " << fs.message);
+    const auto fdev = SMDF::develop_flat_metric(mesh, SMDF::parameters::edge_length_map(fine));
+    Surface_mesh fout;
+    SMDF::Grid_tessellation_status fst = SMDF::tessellate_flat_metric(mesh, fdev, SMDF::TRIANGULAR_GRID, fh, fout);
+    const std::string fwhat = "spot, octahedron polyhedron, 40 triangles a side";
+    std::size_t grid_inverted = fst.inverted_faces;
+    if(!fst.success && fst.inverted_faces > 0) {
+      auto held = fout.add_property_map<Surface_mesh::Vertex_index, bool>("v:held", false).first;
+      for(const auto& iv : fst.irregular_vertices) held[Surface_mesh::Vertex_index(Surface_mesh::size_type(iv.first))] = true;
+      const SMDF::Untangle_status us = SMDF::untangle_remesh(mesh, fout, SMDF::parameters::vertex_is_constrained_map(held));
+      fst.success = us.success;
+      fst.inverted_faces = us.inverted_after;
+      std::cout << fwhat << ": untangling " << us.inverted_before << " -> " << us.inverted_after << " (" << us.straddling_faces
+                << " across a thin part or tip, " << us.faces_at_held_vertices << " next to a cone), " << us.moved_vertices << " moved" << std::endl;
+      SMDF_CHECK_MSG(us.success || us.straddling_faces + us.faces_at_held_vertices == us.inverted_after,
+                     fwhat << ": what stays inverted lies across a thin part or next to a cone: " << us.message);
+    }
+    if(fst.success) check_remesh(mesh, mesh, fout, fst, 3, {{4, 6}}, 8 * 1600, fwhat);
+    const double r = polygon_area(fout) / area;
+    SMDF_CHECK_MSG(std::abs(r - 1) < 0.01, fwhat << ": the remesh's area is within 1 % of the input's (" << r << ")");
+    std::cout << fwhat << ": " << grid_inverted << " inverted in the grid, area ratio " << r << std::endl;
+  }
   // a polyhedron that is not a sphere, and a polygon that is neither a triangle nor a square
   bool threw = false;
   try { SMDF::polyhedron_metric(mesh, corners, std::vector<std::vector<int>>(faces.begin(), faces.begin() + 4), side, lengths); }
@@ -586,7 +614,7 @@ void obelisk(const std::string& dir)
   auto flat = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:obelisk_flat", 0).first;
   const auto cm = SMDF::compute_cone_metric(mesh, targets, flat, SMDF::parameters::intrinsic_edge_flips(false));
   SMDF_CHECK_MSG(cm.converged, "spot, obelisk cones: " << cm.message);
-  for(int n : {3, 6}) {
+  for(int n : {3, 6, 20}) {
     Surface_mesh out;
     const auto st = SMDF::polyhedron_remesh(mesh, corners, pfaces, n, out, SMDF::parameters::edge_length_map(flat));
     const std::string what = "spot, obelisk, " + std::to_string(n) + " grid edges per side";
@@ -611,12 +639,30 @@ void obelisk(const std::string& dir)
     for(auto v : vertices(out)) far = std::max(far, std::sqrt(tree.squared_distance(out.point(v))));
     SMDF_CHECK_MSG(far < 1e-12, what << ": every output vertex on the input surface (" << far << ")");
     SMDF_CHECK_MSG(st.success == (st.inverted_faces == 0), what << ": success unless faces are inverted (" << st.inverted_faces << ")");
+    SMDF_CHECK_MSG(chi == 2 && num_faces(out) == std::size_t(9 * n * n), what << ": all faces there");
     // the read-back of the metric (the mixed grid's Theorem 3.5 test): every face of P a whole grid polygon of n edges a side
     const auto& pc = st.compatibility;
     SMDF_CHECK_MSG(pc.compatible && pc.failing_faces.empty() && pc.curved_vertices == 0 && pc.max_angle_deviation < 1e-9 &&
                        pc.max_side_deviation < 1e-9 && pc.edges.size() == 16 && std::count(pc.sides.begin(), pc.sides.end(), n) == 16,
                    what << ": the metric read back as P's faces of " << n << " edges a side (angles off by " << pc.max_angle_deviation
                         << ", sides by " << pc.max_side_deviation << ", " << pc.curved_vertices << " vertices not flat)");
+    if(n == 20) {   // fine (issue 13: area within 1 %), inverted faces unfolded along the surface, P's corners held
+      std::size_t left = st.inverted_faces;
+      if(st.inverted_faces > 0) {
+        auto held = out.add_property_map<Surface_mesh::Vertex_index, bool>("v:held", false).first;
+        for(auto v : vertices(out))
+          for(auto c : corners) held[v] = held[v] || out.point(v) == mesh.point(c);
+        const SMDF::Untangle_status us = SMDF::untangle_remesh(mesh, out, SMDF::parameters::vertex_is_constrained_map(held));
+        left = us.inverted_after;
+        std::cout << what << ": untangling " << us.inverted_before << " -> " << us.inverted_after << " (" << us.straddling_faces
+                  << " across a thin part or tip, " << us.faces_at_held_vertices << " next to a cone)" << std::endl;
+        SMDF_CHECK_MSG(us.success || us.straddling_faces + us.faces_at_held_vertices == us.inverted_after,
+                       what << ": what stays inverted lies across a thin part or next to a cone: " << us.message);
+      }
+      const double r = polygon_area(out) / surface_area(mesh);
+      SMDF_CHECK_MSG(std::abs(r - 1) < 0.01, what << ": area within 1 % of the input's (" << r << "; " << st.inverted_faces << " inverted in the grid, "
+                                                  << left << " after untangling)");
+    }
     std::cout << what << ": " << sides[4] << " quads, " << sides[3] << " triangles, " << st.inverted_faces << " inverted, path stretch "
               << st.metric.max_path_stretch << "; read back: angles off by " << pc.max_angle_deviation << ", sides by " << pc.max_side_deviation
               << std::endl;
@@ -970,6 +1016,18 @@ void untangling(const std::string& dir)
               << " across a thin part), " << us.moved_vertices << " vertices moved by up to " << us.max_displacement << " edge lengths, "
               << us.rounds << " rounds" << std::endl;
     if(quads == 8000) {
+      // the same untangling with the input as a Polyhedron_3 (the grid's positions again)
+      Polyhedron poly;
+      CGAL::copy_face_graph(mesh, poly);
+      Surface_mesh again = out;
+      for(auto v : vertices(again)) again.point(v) = before[std::size_t(v)];
+      auto held_again = again.property_map<Surface_mesh::Vertex_index, bool>("v:held").first;
+      const SMDF::Untangle_status up = SMDF::untangle_remesh(poly, again, SMDF::parameters::vertex_is_constrained_map(held_again));
+      double gap = 0;
+      for(auto v : vertices(again)) gap = std::max(gap, std::sqrt(CGAL::squared_distance(again.point(v), out.point(v))));
+      SMDF_CHECK_MSG(up.success && up.inverted_before == us.inverted_before,
+                     what << ": the same on a Polyhedron_3 input (" << up.inverted_before << " inverted, " << up.moved_vertices << " moved, "
+                          << "largest distance to the Surface_mesh run " << gap << ": closest points tie differently on input edges)");
       SMDF::Grid_tessellation_status after = st;   // the status of the moved mesh: the tessellation's checks, then no inversion
       after.success = us.success;
       after.inverted_faces = us.inverted_after;

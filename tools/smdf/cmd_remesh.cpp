@@ -199,6 +199,7 @@ Json untangle_inverted(const Mesh& input, Mesh& remesh, bool& ok, std::size_t& l
   u["moved_vertices"] = us.moved_vertices;
   u["max_displacement_over_edge_length"] = us.max_displacement;
   u["straddling_faces"] = us.straddling_faces;
+  u["faces_at_held_vertices"] = us.faces_at_held_vertices;
   u["rounds"] = us.rounds;
   return u;
 }
@@ -669,7 +670,8 @@ Command remesh_command()
           "untangle (when the grid had inverted faces: {grid_inverted_faces, inverted_before,\n"
           "inverted_after (by the normals of the input faces nearest the corners), moved_vertices,\n"
           "max_displacement_over_edge_length, straddling_faces (left across a thin part or tip),\n"
-          "rounds}), quality:\n"
+          "faces_at_held_vertices (left next to a cone, which never moves), rounds}; a failed\n"
+          "untangling moves no vertex), quality:\n"
           "{min_corner_angle_deg, max_corner_angle_deg, min_scaled_jacobian, mean_scaled_jacobian},\n"
           "distance_over_edge_length: {remesh_to_input (largest distance of the remesh's vertices,\n"
           "edge midpoints and face-fan centroids to the input), input_to_remesh (of the input's\n"

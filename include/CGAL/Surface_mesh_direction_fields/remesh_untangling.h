@@ -41,6 +41,9 @@ struct Untangle_status
   /// (a face across a thin part, such as an ear, or a sharp tip): no move along the surface
   /// unfolds them, a smaller edge length does
   std::size_t straddling_faces = 0;
+  /// of the faces still inverted and not counted in `straddling_faces`, those next to a vertex
+  /// that may not move (a cone, a border vertex)
+  std::size_t faces_at_held_vertices = 0;
   int rounds = 0;                    ///< smoothing rounds taken (each over a wider ring of vertices)
   /// the largest distance a vertex moved, in units of the remesh's mean edge length
   double max_displacement = 0;
@@ -153,19 +156,18 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
     for(std::size_t f = 0; f < fv.size(); ++f) n += inverted(f);
     return n;
   };
-  // inverted faces across a thin part or a tip: their corners' normals point apart
+  // an inverted face across a thin part or a tip: its corners' normals point apart
+  auto straddles = [&](std::size_t f) {
+    for(std::size_t a = 0; a < fv[f].size(); ++a)
+      for(std::size_t b = a + 1; b < fv[f].size(); ++b) {
+        const V3 &n1 = normal[fv[f][a]], &n2 = normal[fv[f][b]];
+        if(n1[0] * n2[0] + n1[1] * n2[1] + n1[2] * n2[2] < 0) return true;
+      }
+    return false;
+  };
   auto count_straddling = [&] {
     std::size_t n = 0;
-    for(std::size_t f = 0; f < fv.size(); ++f) {
-      if(!inverted(f)) continue;
-      bool apart = false;
-      for(std::size_t a = 0; a < fv[f].size() && !apart; ++a)
-        for(std::size_t b = a + 1; b < fv[f].size() && !apart; ++b) {
-          const V3 &n1 = normal[fv[f][a]], &n2 = normal[fv[f][b]];
-          apart = n1[0] * n2[0] + n1[1] * n2[1] + n1[2] * n2[2] < 0;
-        }
-      n += apart;
-    }
+    for(std::size_t f = 0; f < fv.size(); ++f) n += inverted(f) && straddles(f);
     return n;
   };
   st.inverted_before = count_inverted();
@@ -188,26 +190,30 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
         if(fixed[v]) continue;
         V3 mean{{0, 0, 0}};
         for(std::size_t w : nb[v]) for(int d = 0; d < 3; ++d) mean[std::size_t(d)] += pos[w][std::size_t(d)] / double(nb[v].size());
-        V3 n;
-        const Input_point q = input_normal(Input_point(mean[0], mean[1], mean[2]), n);
-        if(n[0] * normal[v][0] + n[1] * normal[v][1] + n[2] * normal[v][2] <= 0) continue;   // the other side of a thin part
         std::vector<char> was;
         for(std::size_t f : vf[v]) was.push_back(inverted(f) ? 1 : 0);
         const V3 old_pos = pos[v], old_normal = normal[v];
-        pos[v] = V3{{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())}};
-        normal[v] = n;
-        // kept if fewer faces around v are inverted, or as many and none that was fine turned over
-        std::size_t before = 0, after = 0;
-        bool turned = false;
-        for(std::size_t k = 0; k < vf[v].size(); ++k) {
-          const bool now_inverted = inverted(vf[v][k]);
-          before += std::size_t(was[k]);
-          after += std::size_t(now_inverted);
-          turned = turned || (!was[k] && now_inverted);
+        // the whole step towards the mean, else a half or a quarter of it
+        for(double t : {1., 0.5, 0.25}) {
+          V3 n;
+          const Input_point q = input_normal(Input_point(old_pos[0] + t * (mean[0] - old_pos[0]), old_pos[1] + t * (mean[1] - old_pos[1]),
+                                                         old_pos[2] + t * (mean[2] - old_pos[2])), n);
+          if(n[0] * old_normal[0] + n[1] * old_normal[1] + n[2] * old_normal[2] <= 0) continue;   // the other side of a thin part
+          pos[v] = V3{{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())}};
+          normal[v] = n;
+          // kept if fewer faces around v are inverted, or as many and none that was fine turned over
+          std::size_t before = 0, after = 0;
+          bool turned = false;
+          for(std::size_t k = 0; k < vf[v].size(); ++k) {
+            const bool now_inverted = inverted(vf[v][k]);
+            before += std::size_t(was[k]);
+            after += std::size_t(now_inverted);
+            turned = turned || (!was[k] && now_inverted);
+          }
+          if(after < before || (after == before && !turned)) { moved[v] = 1; break; }
+          pos[v] = old_pos;
+          normal[v] = old_normal;
         }
-        const bool worse = after > before || (after == before && turned);
-        if(worse) { pos[v] = old_pos; normal[v] = old_normal; }
-        else moved[v] = 1;
       }
     }
     now = count_inverted();
@@ -215,6 +221,12 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
   }
   st.inverted_after = now;
   st.straddling_faces = count_straddling();
+  for(std::size_t f = 0; f < fv.size(); ++f) {   // the others left inverted: next to a vertex that may not move
+    if(!inverted(f) || straddles(f)) continue;
+    bool held = false;
+    for(std::size_t v : fv[f]) held = held || fixed[v];
+    st.faces_at_held_vertices += held;
+  }
   if(now > 0) {   // not all unfolded: the remesh is left as the grid made it
     pos = start;
     std::fill(moved.begin(), moved.end(), 0);
@@ -234,6 +246,8 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
                  std::to_string(st.rounds) + " rounds of moving vertices along the surface" +
                  (st.straddling_faces ? " (" + std::to_string(st.straddling_faces) + " lie across a thin part or a sharp tip, where the input's " +
                                             "normals at their corners point apart: use a smaller edge length)" : std::string()) +
+                 (st.faces_at_held_vertices ? " (" + std::to_string(st.faces_at_held_vertices) + " next to a cone or border vertex, which may not move)"
+                                            : std::string()) +
                  "; the remesh is left as the grid made it";
   return st;
 }
