@@ -10,6 +10,7 @@
 
 #include <CGAL/Surface_mesh_direction_fields/errors.h>
 #include <CGAL/Surface_mesh_direction_fields/parameters.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/two_threads.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -132,8 +133,13 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
   for(std::size_t i = 0; i < vs.size(); ++i) {
     const auto& p = get(rvpm, vs[i]);
     pos[i] = V3{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
-    input_normal(Input_point(pos[i][0], pos[i][1], pos[i][2]), normal[i]);
   }
+  // The normals under every vertex, on two threads (433k vertices: most of the time); one query
+  // first, which builds the tree and its search structure, so that the threads only read them.
+  if(!vs.empty()) input_normal(Input_point(pos[0][0], pos[0][1], pos[0][2]), normal[0]);
+  internal::run_on_two_threads([&](int t) {
+    for(std::size_t i = std::size_t(t); i < vs.size(); i += 2) input_normal(Input_point(pos[i][0], pos[i][1], pos[i][2]), normal[i]);
+  }, vs.size() >= 20000);
   for(std::size_t i = 0; i < vs.size(); ++i)
     for(std::size_t j : nb[i]) {
       const double d[3] = {pos[j][0] - pos[i][0], pos[j][1] - pos[i][1], pos[j][2] - pos[i][2]};
