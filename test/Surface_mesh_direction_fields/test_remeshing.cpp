@@ -35,6 +35,7 @@
 #include <sstream>
 #include <iostream>
 #include <map>
+#include <set>
 #include <algorithm>
 #include <random>
 #include <string>
@@ -1039,6 +1040,98 @@ void untangling(const std::string& dir)
                                                                 << outcome[2000] << " left, across the ear)");
 }
 
+// A polycube of three unit cubes in an L (Lai et al.: "some cone singularities ... are
+// negative, which can be handled by our method consistently"): its 14 unit squares as P, on a
+// smoothly deformed mesh of that shape (6 x 6 cells a square). P has corners of 3 squares
+// (cones of pi/2), of 4 (flat) and, at the inner corner of the L, of 5 (cones of -pi/2).
+// polyhedron_metric() gives the metric, polyhedron_compatibility() reads it back as P's squares,
+// and the quad remesh has valence 3 at the convex corners and 5 at the two concave ones.
+void l_shaped_polycube()
+{
+  const std::set<std::array<int, 3>> cubes = {{{0, 0, 0}}, {{1, 0, 0}}, {{0, 1, 0}}};
+  const int k = 6;
+  Surface_mesh mesh;
+  std::map<std::array<int, 3>, Surface_mesh::Vertex_index> at;   // mesh vertices by coordinates times k
+  std::map<std::array<int, 3>, int> corner_of;                   // P's corners by lattice coordinates
+  std::vector<Surface_mesh::Vertex_index> corners;
+  std::vector<std::vector<int>> pfaces;
+  auto vertex = [&](std::array<int, 3> g) {
+    auto it = at.find(g);
+    if(it != at.end()) return it->second;
+    const double x = double(g[0]) / k, y = double(g[1]) / k, z = double(g[2]) / k;
+    const auto v = mesh.add_vertex(K::Point_3(x + 0.08 * std::sin(1.3 * y + 0.5 * z), y + 0.08 * std::sin(1.1 * z + 0.7 * x),
+                                              z + 0.08 * std::sin(0.9 * x + 1.2 * y)));
+    at[g] = v;
+    return v;
+  };
+  for(const auto& c : cubes)
+    for(int a = 0; a < 3; ++a)
+      for(int side = 0; side < 2; ++side) {
+        std::array<int, 3> n = c;
+        n[std::size_t(a)] += side ? 1 : -1;
+        if(cubes.count(n)) continue;   // shared with another cube: inside
+        const int u = (a + 1) % 3, w = (a + 2) % 3;
+        auto lattice = [&](int i, int j) {   // cell coordinates (i, j) of the square, times k
+          std::array<int, 3> g{{c[0] * k, c[1] * k, c[2] * k}};
+          g[std::size_t(a)] += side * k;
+          g[std::size_t(u)] += i;
+          g[std::size_t(w)] += j;
+          return g;
+        };
+        // counterclockwise seen from outside: (u, w) for the + side, (w, u) for the - side
+        const std::array<std::array<int, 2>, 4> ccw = side ? std::array<std::array<int, 2>, 4>{{{{0, 0}}, {{1, 0}}, {{1, 1}}, {{0, 1}}}}
+                                                           : std::array<std::array<int, 2>, 4>{{{{0, 0}}, {{0, 1}}, {{1, 1}}, {{1, 0}}}};
+        std::vector<int> pf;
+        for(const auto& q : ccw) {
+          std::array<int, 3> g = lattice(q[0] * k, q[1] * k);
+          auto it = corner_of.find(g);
+          if(it == corner_of.end()) { it = corner_of.emplace(g, int(corners.size())).first; corners.push_back(vertex(g)); }
+          pf.push_back(it->second);
+        }
+        pfaces.push_back(pf);
+        for(int i = 0; i < k; ++i)
+          for(int j = 0; j < k; ++j) {
+            std::array<Surface_mesh::Vertex_index, 4> q;
+            for(std::size_t m = 0; m < 4; ++m) q[m] = vertex(lattice(i + ccw[m][0], j + ccw[m][1]));
+            mesh.add_face(q[0], q[1], q[2]);
+            mesh.add_face(q[0], q[2], q[3]);
+          }
+      }
+  SMDF_CHECK_MSG(CGAL::is_valid_polygon_mesh(mesh) && CGAL::is_closed(mesh) && pfaces.size() == 14 && corners.size() == 16,
+                 "L polycube: a closed mesh, 14 squares, 16 corners (" << pfaces.size() << ", " << corners.size() << ")");
+  std::map<int, int> squares_at;
+  for(const auto& f : pfaces) for(int c : f) ++squares_at[c];
+  std::map<int, std::size_t> expected;   // valence -> count, the corners of 3 and 5 squares
+  for(const auto& p : squares_at) if(p.second != 4) ++expected[p.second];
+  SMDF_CHECK_MSG(expected.size() == 2 && expected[5] == 2, "L polycube: two concave corners of 5 squares (" << expected[5] << ")");
+  const double L = std::sqrt(surface_area(mesh) / 14);
+  auto lengths = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:l", 0).first;
+  const auto ps = SMDF::polyhedron_metric(mesh, corners, pfaces, L, lengths);
+  SMDF_CHECK_MSG(ps.success, "L polycube metric: " << ps.message);
+  if(!ps.success) return;
+  const auto fit = SMDF::polyhedron_compatibility(mesh, corners, pfaces, L / 4, SMDF::parameters::edge_length_map(lengths));
+  SMDF_CHECK_MSG(fit.compatible && std::count(fit.sides.begin(), fit.sides.end(), 4) == int(fit.sides.size()),
+                 "L polycube metric: P's unit squares, 4 grid edges a side (angles off by " << fit.max_angle_deviation << ", sides by "
+                                                                                            << fit.max_side_deviation << ")");
+  const auto dev = SMDF::develop_flat_metric(mesh, SMDF::parameters::edge_length_map(lengths));
+  const SMDF::internal::Mesh_arrays<Surface_mesh> arrays(mesh, SMDF::parameters::edge_length_map(lengths));
+  std::vector<double> curvature;
+  SMDF::internal::vertex_curvatures(arrays, curvature);
+  double total = 0;
+  std::size_t negative = 0, cones = 0;
+  for(double c : curvature) {
+    total += c;
+    negative += std::abs(c + M_PI / 2) < 1e-9;
+    cones += std::abs(c) > 1e-9;
+  }
+  SMDF_CHECK_MSG(negative == 2 && cones == dev.cones().size() && cones == expected[3] + 2 && std::abs(total - 4 * M_PI) < 1e-9,
+                 "L polycube metric: cones of pi/2 at the convex corners, two of -pi/2, flat elsewhere, 4 pi in all (" << negative << " of -pi/2, "
+                     << cones << " cones, " << total << ")");
+  Surface_mesh out;
+  const auto st = SMDF::tessellate_flat_metric(mesh, dev, SMDF::SQUARE_GRID, L / 4, out);
+  check_remesh(mesh, mesh, out, st, 4, expected, 14 * 16, "L polycube, quads of a quarter side");
+}
+
 int main()
 {
   cube();
@@ -1046,6 +1139,7 @@ int main()
   flat_torus();
   open_square();
   box_corner_order();
+  l_shaped_polycube();
   const std::string dir = smdf_test::shared_data_dir();
   if(!dir.empty()) { box_polycube(dir); seam_relaxation(dir); flipped_flat_metric(dir); delaunay_refinement(dir); octahedron_polyhedron(dir); obelisk(dir); untangling(dir); }
   else std::cout << "../shared/data not found: box polycube on shared meshes skipped" << std::endl;
