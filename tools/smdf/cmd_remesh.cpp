@@ -50,6 +50,26 @@ double metric_area(const Mesh& mesh, const Edge_length_property& l)
 
 } // namespace
 
+// The JSON of polyhedron_compatibility(): the face-by-face test of a metric against P.
+Json compatibility_json(const SMDF::Polyhedron_compatibility& pc)
+{
+  Json c = Json::object(), failing = Json::array();
+  c["compatible"] = pc.compatible;
+  if(!pc.message.empty()) c["message"] = pc.message;
+  c["max_angle_deviation"] = pc.max_angle_deviation;
+  c["max_side_deviation"] = pc.max_side_deviation;
+  c["curved_vertices"] = pc.curved_vertices;
+  for(std::size_t i = 0; i < pc.failing_faces.size() && i < 20; ++i) {
+    Json o = Json::object();
+    o["face"] = pc.failing_faces[i];
+    o["angle_deviation"] = pc.failing_face_angle_deviations[i];
+    o["side_deviation"] = pc.failing_face_side_deviations[i];
+    failing.push_back(std::move(o));
+  }
+  c["failing_faces"] = std::move(failing);   // the first 20
+  return c;
+}
+
 // The inverted faces of a remesh unfolded along the input surface (untangle_remesh()), the
 // cones (vertices whose faces do not fill 2 pi in the grid's angles) held; `ok` says whether
 // none is left, `left` how many are (on entry: the tessellation's count), `message` why. Returns
@@ -294,23 +314,8 @@ Json run_remesh(const Args& args)
       metric["max_path_stretch"] = rs.metric.max_path_stretch;
       metric["relaxation_steps"] = rs.metric.relaxation_steps;
       out["metric"] = metric;
-      if(rs.metric.success) {   // the mixed grid's Theorem 3.5 test, face by face of P, on the metric built
-        const SMDF::Polyhedron_compatibility& pc = rs.compatibility;
-        Json c = Json::object(), failing = Json::array();
-        c["compatible"] = pc.compatible;
-        c["max_angle_deviation"] = pc.max_angle_deviation;
-        c["max_side_deviation"] = pc.max_side_deviation;
-        c["curved_vertices"] = pc.curved_vertices;
-        for(std::size_t i = 0; i < pc.failing_faces.size() && i < 20; ++i) {
-          Json o = Json::object();
-          o["face"] = pc.failing_faces[i];
-          o["angle_deviation"] = pc.failing_face_angle_deviations[i];
-          o["side_deviation"] = pc.failing_face_side_deviations[i];
-          failing.push_back(std::move(o));
-        }
-        c["failing_faces"] = std::move(failing);   // the first 20
-        out["polyhedron_compatibility"] = std::move(c);
-      }
+      // the mixed grid's Theorem 3.5 test, face by face of P, on the metric built
+      if(rs.metric.success) out["polyhedron_compatibility"] = compatibility_json(rs.compatibility);
       out["subdivisions"] = n;
       Json timings = Json::object();
       timings["metric_s"] = metric_s;
@@ -383,6 +388,10 @@ Json run_remesh(const Args& args)
     metric["seam_relaxed_vertices"] = ps.seam_relaxed_vertices;
     out["metric"] = metric;
     if(!ps.success) throw Failed_result{out, file + ": polyhedron metric: " + ps.message, 3};
+    // the face-by-face test too (the tessellation then runs the holonomy test of its grid)
+    out["polyhedron_compatibility"] = compatibility_json(on_file(file, [&] {
+      return SMDF::polyhedron_compatibility(mesh, corners, pfaces, h, SMDF::parameters::edge_length_map(lengths));
+    }));
   } else if(args.has("polycube")) {
     std::array<vertex_descriptor, 8> corners = file_box ? file_box_corners : box_corners(mesh);
     if(file_box) metric["box_from_file"] = polycube;
@@ -557,7 +566,8 @@ Command remesh_command()
           "and triangles) each face of P gets its own grid: subdivisions, unexpected_valences, and\n"
           "irregular_vertices: [{vertex, cone, valence, curvature}] (vertices whose faces do not fill\n"
           "2 pi in the grid's angles, cone: P's corner there or null); compensation_s is null (in\n"
-          "tessellation_s); polyhedron_compatibility: {compatible, max_angle_deviation (radians),\n"
+          "tessellation_s); polyhedron_compatibility (also with the octahedron and files of one\n"
+          "kind of face): {compatible, max_angle_deviation (radians),\n"
           "max_side_deviation (grid edges), curved_vertices, failing_faces: [{face, angle_deviation,\n"
           "side_deviation}]}: the mixed grid's Theorem 3.5 test on the metric built, every face of P\n"
           "developed again from the edge lengths must be a square or triangle of whole grid edges\n"
