@@ -565,7 +565,7 @@ void octahedron_polyhedron(const std::string& dir)
       fst.inverted_faces = us.inverted_after;
       std::cout << fwhat << ": untangling " << us.inverted_before << " -> " << us.inverted_after << " (" << us.straddling_faces
                 << " across a thin part or tip, " << us.faces_at_held_vertices << " next to a cone), " << us.moved_vertices << " moved" << std::endl;
-      // known: one triangle of the 18 stays inverted (reported, and the grid left as it was)
+      // known: one triangle of the 18, next to a cone, stays inverted (reported, the grid left as it was)
       SMDF_CHECK_MSG(us.success || (us.moved_vertices == 0 && us.inverted_after > 0 && us.inverted_after < us.inverted_before &&
                                     us.message.find("left as the grid made it") != std::string::npos),
                      fwhat << ": untangled, or the failure reported with the grid unmoved: " << us.message);

@@ -45,7 +45,7 @@ struct Untangle_status
   /// of the faces still inverted and not counted in `straddling_faces`, those next to a vertex
   /// that may not move (a cone, a border vertex)
   std::size_t faces_at_held_vertices = 0;
-  int rounds = 0;                    ///< smoothing rounds taken (each over a wider ring of vertices)
+  int rounds = 0;                    ///< smoothing rounds taken, over both attempts (each round over a wider ring of vertices)
   /// the largest distance a vertex moved, in units of the remesh's mean edge length
   double max_displacement = 0;
 };
@@ -55,7 +55,9 @@ struct Untangle_status
 /// is inverted when its area vector points against the input's normals at its corners, the test
 /// of tessellate_flat_metric() and polyhedron_remesh()) by moving vertices near them along the
 /// input: each round smooths the vertices within a ring of the inverted faces (one ring wider
-/// each round, up to `number_of_iterations` rounds) towards the mean of their neighbours, puts
+/// each round, up to `number_of_iterations` rounds) towards the mean of their neighbours (a
+/// first attempt with whole steps; if a face stays inverted, a second from the grid's positions
+/// that falls back on half and quarter steps where a whole one is refused), puts
 /// each one back on the input at its closest point, and keeps a move only if it inverts no face
 /// around the vertex that was not inverted and does not jump to a part of the surface whose
 /// normal turns away (as across a thin ear). Only positions change: faces, valences and the
@@ -177,50 +179,68 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
     return n;
   };
   st.inverted_before = count_inverted();
-  std::vector<V3> start = pos;
+  const std::vector<V3> start = pos, start_normal = normal;
   std::vector<char> moved(vs.size(), 0);
-  std::size_t now = st.inverted_before;
-  for(int round = 1; round <= max_rounds && now > 0; ++round) {
-    st.rounds = round;
-    // the vertices within `round` rings of an inverted face
-    std::vector<char> active(vs.size(), 0);
-    std::vector<std::size_t> ring;
-    for(std::size_t f = 0; f < fv.size(); ++f)
-      if(inverted(f)) for(std::size_t v : fv[f]) if(!active[v]) { active[v] = 1; ring.push_back(v); }
-    for(int r = 0; r < round; ++r) {
-      const std::vector<std::size_t> last = ring;
-      for(std::size_t v : last) for(std::size_t w : nb[v]) if(!active[w]) { active[w] = 1; ring.push_back(w); }
-    }
-    for(int sweep = 0; sweep < 10; ++sweep) {
-      for(std::size_t v : ring) {
-        if(fixed[v]) continue;
-        V3 mean{{0, 0, 0}};
-        for(std::size_t w : nb[v]) for(int d = 0; d < 3; ++d) mean[std::size_t(d)] += pos[w][std::size_t(d)] / double(nb[v].size());
-        std::vector<char> was;
-        for(std::size_t f : vf[v]) was.push_back(inverted(f) ? 1 : 0);
-        const V3 old_pos = pos[v], old_normal = normal[v];
-        // the whole step to the mean (fallbacks of half and quarter steps unfolded fewer: Spot's
-        // octahedron at 2,048 triangles kept 1 of 11 inverted, Cheburashka at 8,000 quads 1 of 2)
-        V3 n;
-        const Input_point q = input_normal(Input_point(mean[0], mean[1], mean[2]), n);
-        if(n[0] * old_normal[0] + n[1] * old_normal[1] + n[2] * old_normal[2] <= 0) continue;   // the other side of a thin part
-        pos[v] = V3{{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())}};
-        normal[v] = n;
-        // kept if fewer faces around v are inverted, or as many and none that was fine turned over
-        std::size_t before = 0, after = 0;
-        bool turned = false;
-        for(std::size_t k = 0; k < vf[v].size(); ++k) {
-          const bool now_inverted = inverted(vf[v][k]);
-          before += std::size_t(was[k]);
-          after += std::size_t(now_inverted);
-          turned = turned || (!was[k] && now_inverted);
-        }
-        if(after < before || (after == before && !turned)) moved[v] = 1;
-        else { pos[v] = old_pos; normal[v] = old_normal; }
+  // One attempt from the grid's positions: up to `max_rounds` rounds, each vertex stepping to its
+  // neighbours' mean, or with `fallbacks` to half or a quarter of the way when the whole step is
+  // refused. Returns how many faces stay inverted.
+  auto attempt = [&](bool fallbacks) {
+    pos = start;
+    normal = start_normal;
+    std::fill(moved.begin(), moved.end(), 0);
+    std::size_t left = st.inverted_before;
+    for(int round = 1; round <= max_rounds && left > 0; ++round) {
+      ++st.rounds;
+      // the vertices within `round` rings of an inverted face
+      std::vector<char> active(vs.size(), 0);
+      std::vector<std::size_t> ring;
+      for(std::size_t f = 0; f < fv.size(); ++f)
+        if(inverted(f)) for(std::size_t v : fv[f]) if(!active[v]) { active[v] = 1; ring.push_back(v); }
+      for(int r = 0; r < round; ++r) {
+        const std::vector<std::size_t> last = ring;
+        for(std::size_t v : last) for(std::size_t w : nb[v]) if(!active[w]) { active[w] = 1; ring.push_back(w); }
       }
+      for(int sweep = 0; sweep < 10; ++sweep) {
+        for(std::size_t v : ring) {
+          if(fixed[v]) continue;
+          V3 mean{{0, 0, 0}};
+          for(std::size_t w : nb[v]) for(int d = 0; d < 3; ++d) mean[std::size_t(d)] += pos[w][std::size_t(d)] / double(nb[v].size());
+          std::vector<char> was;
+          for(std::size_t f : vf[v]) was.push_back(inverted(f) ? 1 : 0);
+          const V3 old_pos = pos[v], old_normal = normal[v];
+          for(double t : {1., 0.5, 0.25}) {
+            if(t < 1 && !fallbacks) break;
+            V3 n;
+            const Input_point q = input_normal(Input_point(old_pos[0] + t * (mean[0] - old_pos[0]), old_pos[1] + t * (mean[1] - old_pos[1]),
+                                                           old_pos[2] + t * (mean[2] - old_pos[2])), n);
+            if(n[0] * old_normal[0] + n[1] * old_normal[1] + n[2] * old_normal[2] <= 0) continue;   // the other side of a thin part
+            pos[v] = V3{{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())}};
+            normal[v] = n;
+            // kept if fewer faces around v are inverted, or as many and none that was fine turned over
+            std::size_t before = 0, after = 0;
+            bool turned = false;
+            for(std::size_t k = 0; k < vf[v].size(); ++k) {
+              const bool now_inverted = inverted(vf[v][k]);
+              before += std::size_t(was[k]);
+              after += std::size_t(now_inverted);
+              turned = turned || (!was[k] && now_inverted);
+            }
+            if(after < before || (after == before && !turned)) { moved[v] = 1; break; }
+            pos[v] = old_pos;
+            normal[v] = old_normal;
+          }
+        }
+      }
+      left = count_inverted();
     }
-    now = count_inverted();
-  }
+    return left;
+  };
+  // Whole steps first, then with the fallbacks: each unfolds cases the other does not (whole
+  // steps: Cheburashka at 8,000 quads, Spot's relaxed octahedron at 2,048 triangles; fallbacks:
+  // Spot's plain octahedron at 2,048 triangles).
+  std::size_t now = st.inverted_before;
+  if(now > 0) now = attempt(false);
+  if(now > 0) now = attempt(true);
   st.inverted_after = now;
   st.straddling_faces = count_straddling();
   for(std::size_t f = 0; f < fv.size(); ++f) {   // the others left inverted: next to a vertex that may not move
