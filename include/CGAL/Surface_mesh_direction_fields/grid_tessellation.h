@@ -12,6 +12,7 @@
 #include <CGAL/Surface_mesh_direction_fields/errors.h>
 #include <CGAL/Surface_mesh_direction_fields/flat_development.h>
 #include <CGAL/Surface_mesh_direction_fields/holonomy_group.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/inversion.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/two_threads.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -670,25 +671,14 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
     const int f = w.kind == 0 ? w.id : w.kind == 1 ? (m.face[std::size_t(2 * w.id)] >= 0 ? m.face[std::size_t(2 * w.id)] : m.face[std::size_t(2 * w.id + 1)])
                                                     : m.face[std::size_t(m.vertex_out[std::size_t(w.id)])];
     const int g = m.face_halfedge[std::size_t(f)];
-    const std::array<double, 3> a = point3(m.source(g)), b = point3(m.target[std::size_t(g)]), c = point3(m.target[std::size_t(m.next[std::size_t(g)])]);
-    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-    std::array<double, 3> n{{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]}};
-    const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    for(double& x : n) x /= (l > 0 ? l : 1);
-    return n;
+    return internal::unit_triangle_normal(point3(m.source(g)), point3(m.target[std::size_t(g)]), point3(m.target[std::size_t(m.next[std::size_t(g)])]));
   };
   for(const auto& fc : out_faces) {
-    double area[3] = {0, 0, 0}, under[3] = {0, 0, 0};
-    for(std::size_t k = 0; k < fc.size(); ++k) {
+    auto corner = [&](std::size_t k) {
       const Out_point& p = get(opm, ov[fc[k]]);
-      const Out_point& q = get(opm, ov[fc[(k + 1) % fc.size()]]);
-      const double px = CGAL::to_double(p.x()), py = CGAL::to_double(p.y()), pz = CGAL::to_double(p.z());
-      const double qx = CGAL::to_double(q.x()), qy = CGAL::to_double(q.y()), qz = CGAL::to_double(q.z());
-      area[0] += py * qz - pz * qy; area[1] += pz * qx - px * qz; area[2] += px * qy - py * qx;
-      const std::array<double, 3> n = input_normal(points[fc[k]]);
-      for(int j = 0; j < 3; ++j) under[j] += n[std::size_t(j)];
-    }
-    st.inverted_faces += area[0] * under[0] + area[1] * under[1] + area[2] * under[2] <= 0;
+      return internal::Vec3{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+    };
+    st.inverted_faces += internal::turns_against_input(fc.size(), corner, [&](std::size_t k) { return input_normal(points[fc[k]]); });
   }
   if(st.inverted_faces > 0) {
     st.message = std::to_string(st.inverted_faces) + " faces are inverted in space (their corners turn against the input's normals: "

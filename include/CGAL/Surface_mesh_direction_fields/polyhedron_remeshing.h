@@ -9,6 +9,7 @@
 // its own grid, squares a square grid and triangles a triangular one, of n edges per side, so the
 // grids meet along the polyhedron's edges at the same points.
 
+#include <CGAL/Surface_mesh_direction_fields/internal/inversion.h>
 #include <CGAL/Surface_mesh_direction_fields/polycube_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/polyhedron_compatibility.h>
 
@@ -271,23 +272,11 @@ Polyhedron_remesh_status polyhedron_remesh(const TriangleMesh& tm,
   if(st.unexpected_valences) { st.message = std::to_string(st.unexpected_valences) + " vertices have a valence their place does not explain"; return st; }
   auto input_normal = [&](int f) {
     const int g = m.face_halfedge[std::size_t(f)];
-    const V3 a = point3(m.source(g)), b = point3(m.target[std::size_t(g)]), c = point3(m.target[std::size_t(m.next[std::size_t(g)])]);
-    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-    V3 nn{{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]}};
-    const double l = std::sqrt(nn[0] * nn[0] + nn[1] * nn[1] + nn[2] * nn[2]);
-    for(double& x : nn) x /= (l > 0 ? l : 1);
-    return nn;
+    return internal::unit_triangle_normal(point3(m.source(g)), point3(m.target[std::size_t(g)]), point3(m.target[std::size_t(m.next[std::size_t(g)])]));
   };
-  for(const auto& c : cells) {
-    double area[3] = {0, 0, 0}, nsum[3] = {0, 0, 0};
-    for(std::size_t k = 0; k < c.size(); ++k) {
-      const V3 &p = position[std::size_t(c[k])], &q = position[std::size_t(c[(k + 1) % c.size()])];
-      area[0] += p[1] * q[2] - p[2] * q[1]; area[1] += p[2] * q[0] - p[0] * q[2]; area[2] += p[0] * q[1] - p[1] * q[0];
-      const V3 nn = input_normal(under[std::size_t(c[k])]);
-      for(int d = 0; d < 3; ++d) nsum[d] += nn[std::size_t(d)];
-    }
-    st.inverted_faces += area[0] * nsum[0] + area[1] * nsum[1] + area[2] * nsum[2] <= 0;
-  }
+  for(const auto& c : cells)
+    st.inverted_faces += internal::turns_against_input(c.size(), [&](std::size_t k) { return position[std::size_t(c[k])]; },
+                                                       [&](std::size_t k) { return input_normal(under[std::size_t(c[k])]); });
   if(st.inverted_faces) {
     st.message = std::to_string(st.inverted_faces) + " faces are inverted in space (their corners turn against the input's normals)";
     return st;

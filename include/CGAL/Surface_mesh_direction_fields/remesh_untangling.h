@@ -10,6 +10,7 @@
 
 #include <CGAL/Surface_mesh_direction_fields/errors.h>
 #include <CGAL/Surface_mesh_direction_fields/parameters.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/inversion.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/two_threads.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
@@ -124,10 +125,8 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
   auto input_normal = [&](const Input_point& p, V3& n) {
     const auto cp = tree.closest_point_and_primitive(p);
     const auto h = halfedge(cp.second, input);
-    const Input_point &a = get(ivpm, source(h, input)), &b = get(ivpm, target(h, input)), &c = get(ivpm, target(next(h, input), input));
-    const auto nn = CGAL::cross_product(b - a, c - a);
-    const double l = std::sqrt(CGAL::to_double(nn.squared_length()));
-    n = V3{{CGAL::to_double(nn.x()) / l, CGAL::to_double(nn.y()) / l, CGAL::to_double(nn.z()) / l}};
+    auto v3 = [](const Input_point& x) { return V3{{CGAL::to_double(x.x()), CGAL::to_double(x.y()), CGAL::to_double(x.z())}}; };
+    n = internal::unit_triangle_normal(v3(get(ivpm, source(h, input))), v3(get(ivpm, target(h, input))), v3(get(ivpm, target(next(h, input), input))));
     return cp.first;
   };
   double mean_edge = 0;
@@ -150,14 +149,8 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
     }
   mean_edge /= double((std::max)(edge_count, std::size_t(1)));
   auto inverted = [&](std::size_t f) {
-    double area[3] = {0, 0, 0}, under[3] = {0, 0, 0};
     const std::vector<std::size_t>& c = fv[f];
-    for(std::size_t k = 0; k < c.size(); ++k) {
-      const V3 &p = pos[c[k]], &q = pos[c[(k + 1) % c.size()]];
-      area[0] += p[1] * q[2] - p[2] * q[1]; area[1] += p[2] * q[0] - p[0] * q[2]; area[2] += p[0] * q[1] - p[1] * q[0];
-      for(int d = 0; d < 3; ++d) under[d] += normal[c[k]][std::size_t(d)];
-    }
-    return area[0] * under[0] + area[1] * under[1] + area[2] * under[2] <= 0;
+    return internal::turns_against_input(c.size(), [&](std::size_t k) { return pos[c[k]]; }, [&](std::size_t k) { return normal[c[k]]; });
   };
   auto count_inverted = [&] {
     std::size_t n = 0;
