@@ -668,10 +668,8 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
   }
   // inverted faces: the polygon's area vector against the sum of the input normals under its corners
   auto input_normal = [&](const Where& w) {
-    const int f = w.kind == 0 ? w.id : w.kind == 1 ? (m.face[std::size_t(2 * w.id)] >= 0 ? m.face[std::size_t(2 * w.id)] : m.face[std::size_t(2 * w.id + 1)])
-                                                    : m.face[std::size_t(m.vertex_out[std::size_t(w.id)])];
-    const int g = m.face_halfedge[std::size_t(f)];
-    return internal::unit_triangle_normal(point3(m.source(g)), point3(m.target[std::size_t(g)]), point3(m.target[std::size_t(m.next[std::size_t(g)])]));
+    return w.kind == 0 ? internal::face_normal(m, w.id, point3) : w.kind == 1 ? internal::edge_normal(m, 2 * w.id, point3)
+                                                                              : internal::vertex_normal(m, w.id, point3);
   };
   for(const auto& fc : out_faces) {
     auto corner = [&](std::size_t k) {

@@ -10,8 +10,9 @@
 
 #include <CGAL/Surface_mesh_direction_fields/errors.h>
 #include <CGAL/Surface_mesh_direction_fields/parameters.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/face_location.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/inversion.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/two_threads.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/packed_lists.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -24,6 +25,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -64,6 +66,8 @@ struct Untangle_status
 /// normal turns away (as across a thin ear). Only positions change: faces, valences and the
 /// irregular vertices are those of the grid. If some faces stay inverted, `remesh` is left as it
 /// was (the status says how many would have stayed, and how many of those lie across a thin part).
+/// The input's normal under a vertex is that of the input face it lies on, searched first among
+/// the faces near the one under a neighbour (a vertex off the input gets its closest face's).
 ///
 /// This is a repair outside Lai et al.'s method. Their remesh is the grid of the metric, and
 /// where one polyhedron fits the shape poorly (the bunny's ears on a box, limbs) a grid cell can
@@ -99,48 +103,48 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
   if(max_rounds < 0) throw Input_error(Input_error::INVALID_ARGUMENT, "number_of_iterations must not be negative");
   auto constrained = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_is_constrained),
                                       CGAL::Static_boolean_property_map<vertex_descriptor, false>());
-  Tree tree(faces(input).first, faces(input).second, input, ivpm);
-  tree.accelerate_distance_queries();
+  // The tree of the input's faces is built only when needed: for the vertices the local search
+  // below does not place, and for the moves (none when no face is inverted).
+  std::unique_ptr<Tree> tree;
 
   // the remesh's vertices and faces as indices
   auto vim = get(CGAL::dynamic_vertex_property_t<std::size_t>(), remesh);
   std::vector<vertex_descriptor> vs;
   for(vertex_descriptor v : vertices(remesh)) { put(vim, v, vs.size()); vs.push_back(v); }
-  std::vector<std::vector<std::size_t>> fv;                 // per face: its vertices
-  std::vector<std::vector<std::size_t>> vf(vs.size()), nb(vs.size());   // per vertex: its faces, its neighbours
-  std::vector<char> fixed(vs.size(), 0);
+  internal::Packed_lists<std::size_t> fv, nb;   // per face: its vertices; per vertex: its neighbours
+  fv.reserve(num_faces(remesh), 4 * num_faces(remesh));
   for(face_descriptor f : faces(remesh)) {
-    std::vector<std::size_t> c;
-    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, remesh), remesh)) c.push_back(get(vim, target(h, remesh)));
-    for(std::size_t v : c) vf[v].push_back(fv.size());
-    fv.push_back(c);
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, remesh), remesh)) fv.push_back(get(vim, target(h, remesh)));
+    fv.close_list();
   }
-  for(vertex_descriptor v : vertices(remesh)) {
-    const std::size_t i = get(vim, v);
-    fixed[i] = CGAL::is_border(v, remesh) || get(constrained, v);
-    for(halfedge_descriptor h : CGAL::halfedges_around_target(halfedge(v, remesh), remesh)) nb[i].push_back(get(vim, source(h, remesh)));
+  const internal::Packed_lists<std::size_t> vf = fv.transposed(vs.size());   // per vertex: its faces
+  std::vector<char> fixed(vs.size(), 0);
+  nb.reserve(vs.size(), 2 * num_edges(remesh));
+  for(vertex_descriptor v : vs) {
+    fixed[get(vim, v)] = CGAL::is_border(v, remesh) || get(constrained, v);
+    for(halfedge_descriptor h : CGAL::halfedges_around_target(halfedge(v, remesh), remesh)) nb.push_back(get(vim, source(h, remesh)));
+    nb.close_list();
   }
   auto rvpm = get(CGAL::vertex_point, remesh);
+  internal::Input_faces<TriangleMesh> located(input, ivpm);
   std::vector<V3> pos(vs.size()), normal(vs.size());   // per vertex: position, input normal under it
-  auto input_normal = [&](const Input_point& p, V3& n) {
-    const auto cp = tree.closest_point_and_primitive(p);
-    const auto h = halfedge(cp.second, input);
-    auto v3 = [](const Input_point& x) { return V3{{CGAL::to_double(x.x()), CGAL::to_double(x.y()), CGAL::to_double(x.z())}}; };
-    n = internal::unit_triangle_normal(v3(get(ivpm, source(h, input))), v3(get(ivpm, target(h, input))), v3(get(ivpm, target(next(h, input), input))));
-    return cp.first;
+  std::vector<int> under(vs.size(), -1);                 // ... and the input face it lies on
+  // The closest point on the input to p, and the face it lies in; the search starts from vertex
+  // `from`'s point and face, if any (without the tree's own search structure, whose construction
+  // took longer at 433k faces than all queries).
+  auto closest = [&](const Input_point& p, std::size_t from) {
+    if(!tree) tree.reset(new Tree(faces(input).first, faces(input).second, input, ivpm));
+    const auto cp = from < vs.size() && under[from] >= 0
+                      ? tree->closest_point_and_primitive(p, std::make_pair(Input_point(pos[from][0], pos[from][1], pos[from][2]), located.face(under[from])))
+                      : tree->closest_point_and_primitive(p);
+    return std::make_pair(cp.first, located.index(cp.second));
   };
-  double mean_edge = 0;
-  std::size_t edge_count = 0;
   for(std::size_t i = 0; i < vs.size(); ++i) {
     const auto& p = get(rvpm, vs[i]);
     pos[i] = V3{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
   }
-  // The normals under every vertex, on two threads (433k vertices: most of the time); one query
-  // first, which builds the tree and its search structure, so that the threads only read them.
-  if(!vs.empty()) input_normal(Input_point(pos[0][0], pos[0][1], pos[0][2]), normal[0]);
-  internal::run_on_two_threads([&](int t) {
-    for(std::size_t i = std::size_t(t); i < vs.size(); i += 2) input_normal(Input_point(pos[i][0], pos[i][1], pos[i][2]), normal[i]);
-  }, vs.size() >= 20000);
+  double mean_edge = 0;
+  std::size_t edge_count = 0;
   for(std::size_t i = 0; i < vs.size(); ++i)
     for(std::size_t j : nb[i]) {
       const double d[3] = {pos[j][0] - pos[i][0], pos[j][1] - pos[i][1], pos[j][2] - pos[i][2]};
@@ -148,8 +152,31 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
       ++edge_count;
     }
   mean_edge /= double((std::max)(edge_count, std::size_t(1)));
+  const double tol = 1e-7 * mean_edge;   // a vertex closer to an input face or vertex lies on it
+  // The normal under every vertex, from the input face it lies on: searched near the face under
+  // a neighbour, breadth first over the remesh, the tree only where that finds none (433k
+  // vertices: a tree query each took most of the time).
+  {
+    std::vector<char> queued(vs.size(), 0);
+    std::vector<std::size_t> queue;
+    queue.reserve(vs.size());
+    for(std::size_t s = 0; s < vs.size(); ++s) {
+      if(queued[s]) continue;
+      queued[s] = 1;
+      queue.push_back(s);
+      for(std::size_t q = queue.size() - 1; q < queue.size(); ++q) {
+        const std::size_t i = queue[q];
+        std::size_t from = vs.size();
+        for(std::size_t j : nb[i]) if(under[j] >= 0) { from = j; break; }
+        if(from < vs.size()) under[i] = located.face_under(pos[i], under[from], tol * tol, 4);
+        if(under[i] < 0) under[i] = closest(Input_point(pos[i][0], pos[i][1], pos[i][2]), from).second;
+        normal[i] = located.normal_at(pos[i], under[i], tol * tol);
+        for(std::size_t j : nb[i]) if(!queued[j]) { queued[j] = 1; queue.push_back(j); }
+      }
+    }
+  }
   auto inverted = [&](std::size_t f) {
-    const std::vector<std::size_t>& c = fv[f];
+    const auto c = fv[f];
     return internal::turns_against_input(c.size(), [&](std::size_t k) { return pos[c[k]]; }, [&](std::size_t k) { return normal[c[k]]; });
   };
   auto count_inverted = [&] {
@@ -173,6 +200,7 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
   };
   st.inverted_before = count_inverted();
   const std::vector<V3> start = pos, start_normal = normal;
+  const std::vector<int> start_under = under;
   std::vector<char> moved(vs.size(), 0);
   // One attempt from the grid's positions: up to `max_rounds` rounds, each vertex stepping to its
   // neighbours' mean, or with `fallbacks` to half or a quarter of the way when the whole step is
@@ -180,6 +208,7 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
   auto attempt = [&](bool fallbacks) {
     pos = start;
     normal = start_normal;
+    under = start_under;
     std::fill(moved.begin(), moved.end(), 0);
     std::size_t left = st.inverted_before;
     for(int round = 1; round <= max_rounds && left > 0; ++round) {
@@ -201,14 +230,17 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
           std::vector<char> was;
           for(std::size_t f : vf[v]) was.push_back(inverted(f) ? 1 : 0);
           const V3 old_pos = pos[v], old_normal = normal[v];
+          const int old_under = under[v];
           for(double t : {1., 0.5, 0.25}) {
             if(t < 1 && !fallbacks) break;
-            V3 n;
-            const Input_point q = input_normal(Input_point(old_pos[0] + t * (mean[0] - old_pos[0]), old_pos[1] + t * (mean[1] - old_pos[1]),
-                                                           old_pos[2] + t * (mean[2] - old_pos[2])), n);
+            const auto q = closest(Input_point(old_pos[0] + t * (mean[0] - old_pos[0]), old_pos[1] + t * (mean[1] - old_pos[1]),
+                                               old_pos[2] + t * (mean[2] - old_pos[2])), v);
+            const V3 p = {{CGAL::to_double(q.first.x()), CGAL::to_double(q.first.y()), CGAL::to_double(q.first.z())}};
+            const V3& n = located.normal_at(p, q.second, tol * tol);
             if(n[0] * old_normal[0] + n[1] * old_normal[1] + n[2] * old_normal[2] <= 0) continue;   // the other side of a thin part
-            pos[v] = V3{{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())}};
+            pos[v] = p;
             normal[v] = n;
+            under[v] = q.second;
             // kept if fewer faces around v are inverted, or as many and none that was fine turned over
             std::size_t before = 0, after = 0;
             bool turned = false;
@@ -221,6 +253,7 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
             if(after < before || (after == before && !turned)) { moved[v] = 1; break; }
             pos[v] = old_pos;
             normal[v] = old_normal;
+            under[v] = old_under;
           }
         }
       }

@@ -27,6 +27,53 @@ inline Vec3 unit_triangle_normal(const Vec3& a, const Vec3& b, const Vec3& c)
   return n;
 }
 
+// The input's unit normal at a point of its surface (Mesh_arrays `m`, `point3(v)` the position
+// of vertex v): inside face f, the face's (face_normal()); on the edge of halfedge h, the
+// normalised sum of the unit normals of the faces beside it (edge_normal()); at vertex v, that of
+// the faces around it (vertex_normal()). A remesh corner on an input edge or vertex (a cone) thus
+// gets one normal, rather than that of whichever face was picked.
+template <typename Arrays, typename Point3>
+Vec3 face_normal(const Arrays& m, int f, const Point3& point3)
+{
+  const int g = m.face_halfedge[std::size_t(f)];
+  return unit_triangle_normal(point3(m.source(g)), point3(m.target[std::size_t(g)]), point3(m.target[std::size_t(m.next[std::size_t(g)])]));
+}
+
+inline Vec3 normalized(Vec3 n)
+{
+  const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  for(double& x : n) x /= (l > 0 ? l : 1);
+  return n;
+}
+
+template <typename Arrays, typename Point3>
+Vec3 edge_normal(const Arrays& m, int h, const Point3& point3)
+{
+  Vec3 sum{{0, 0, 0}};
+  for(int g : {h, h ^ 1}) {
+    if(m.face[std::size_t(g)] < 0) continue;
+    const Vec3 n = face_normal(m, m.face[std::size_t(g)], point3);
+    for(std::size_t d = 0; d < 3; ++d) sum[d] += n[d];
+  }
+  return normalized(sum);
+}
+
+template <typename Arrays, typename Point3>
+Vec3 vertex_normal(const Arrays& m, int v, const Point3& point3)
+{
+  Vec3 sum{{0, 0, 0}};
+  const int first = m.vertex_out[std::size_t(v)];
+  if(first < 0) return sum;
+  int h = first;
+  do {
+    if(m.is_border(h)) break;
+    const Vec3 n = face_normal(m, m.face[std::size_t(h)], point3);
+    for(std::size_t d = 0; d < 3; ++d) sum[d] += n[d];
+    h = m.ccw_out(h);
+  } while(h != first);
+  return normalized(sum);
+}
+
 // A polygon of `n` corners, `corner(k)` its k-th corner and `normal(k)` the input's unit normal
 // under it, is inverted when its area vector points against the sum of those normals.
 template <typename Corner, typename Normal>
