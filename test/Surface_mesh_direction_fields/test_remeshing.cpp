@@ -183,8 +183,25 @@ void check_remesh(const InputMesh& input, const Surface_mesh& in_sm, const Surfa
     for(std::size_t i = 0; i < p.size(); ++i) {
       n = n + CGAL::cross_product(p[i] - CGAL::ORIGIN, p[(i + 1) % p.size()] - CGAL::ORIGIN);
       const auto hit = tree.closest_point_and_primitive(p[i]);
-      const auto h = halfedge(hit.second, in_sm);
-      const K::Vector_3 m = CGAL::normal(in_sm.point(source(h, in_sm)), in_sm.point(target(h, in_sm)), in_sm.point(target(next(h, in_sm), in_sm)));
+      auto unit_normal = [&](Surface_mesh::Face_index g) {
+        const auto h = halfedge(g, in_sm);
+        const K::Vector_3 m = CGAL::normal(in_sm.point(source(h, in_sm)), in_sm.point(target(h, in_sm)), in_sm.point(target(next(h, in_sm), in_sm)));
+        return m / std::sqrt(m.squared_length());
+      };
+      // at an input vertex (a cone), the normalised sum of its faces' unit normals; on an input
+      // edge, of the two beside it; else the face's
+      K::Vector_3 m = unit_normal(hit.second);
+      bool at_vertex = false;
+      for(auto c : CGAL::vertices_around_face(halfedge(hit.second, in_sm), in_sm))
+        if(CGAL::squared_distance(in_sm.point(c), p[i]) < 1e-24) {
+          at_vertex = true;
+          m = K::Vector_3(0, 0, 0);
+          for(auto g : CGAL::faces_around_target(halfedge(c, in_sm), in_sm)) if(g != Surface_mesh::null_face()) m = m + unit_normal(g);
+        }
+      for(auto h : CGAL::halfedges_around_face(halfedge(hit.second, in_sm), in_sm))
+        if(!at_vertex && !CGAL::is_border(opposite(h, in_sm), in_sm) &&
+           CGAL::squared_distance(K::Segment_3(in_sm.point(source(h, in_sm)), in_sm.point(target(h, in_sm))), p[i]) < 1e-24)
+          m = m + unit_normal(face(opposite(h, in_sm), in_sm));
       under = under + m / std::sqrt(m.squared_length());
     }
     if(n * under <= 0 && std::getenv("SMDF_DEBUG_FLIPS")) {
@@ -720,6 +737,112 @@ Box_cone_metric box_cone_metric(Surface_mesh& mesh)
   return b;
 }
 
+// Lai et al.'s segments (segment_flattening(RICCI_FLOW_SEGMENTS)) against the relaxed ones, on
+// Spot's box: both metrics read back as six rectangles of whole grid edges; the two segments
+// beside a path disagree on where its vertices lie (the gap the mean closes); the Ricci
+// segments, conformal maps, spread the areas more (measured on the output lengths alone); the
+// remesh of the Ricci metric passes the full read-back.
+void ricci_flow_segments(const std::string& dir)
+{
+  Surface_mesh mesh;
+  SMDF::read_triangle_mesh(dir + "/meshes/spot_c3d.obj", mesh);
+  const Box_cone_metric box = box_cone_metric(mesh);
+  SMDF_CHECK_MSG(box.status.converged, "spot, 8 cones: flat cone metric " << box.status.message);
+  const double input_area = surface_area(mesh), h = std::sqrt(input_area / 1500);
+  std::map<SMDF::Segment_flattening, double> angle_error, area_spread;
+  for(SMDF::Segment_flattening method : {SMDF::RELAXED_SEGMENTS, SMDF::RICCI_FLOW_SEGMENTS}) {
+    const bool ricci = method == SMDF::RICCI_FLOW_SEGMENTS;
+    const std::string what = std::string("spot, box, ") + (ricci ? "Ricci flow segments" : "relaxed segments");
+    auto lengths = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:segments", 0).first;
+    const auto ps = SMDF::box_polycube_metric(mesh, box.corners, h, lengths, SMDF::parameters::conformal_factor_map(box.u).segment_flattening(method));
+    SMDF_CHECK_MSG(ps.success, what << ": " << ps.message);
+    if(!ps.success) continue;
+    if(ricci)
+      SMDF_CHECK_MSG(ps.relaxation_steps == 0 && ps.max_side_parameter_gap > 1e-3 && ps.max_side_parameter_gap < 0.5,
+                     what << ": no relaxation, and the two segments beside a path place its vertices apart (" << ps.max_side_parameter_gap << " of the edge)");
+    else
+      SMDF_CHECK_MSG(ps.max_side_parameter_gap == 0, what << ": no side gap reported");
+    std::vector<std::vector<int>> pfaces;
+    std::vector<std::array<int, 2>> axes;
+    SMDF::internal::box_faces(pfaces, axes);
+    const std::vector<Surface_mesh::Vertex_index> pc(box.corners.begin(), box.corners.end());
+    const auto fit = SMDF::polyhedron_compatibility(mesh, pc, pfaces, h, SMDF::parameters::edge_length_map(lengths));
+    SMDF_CHECK_MSG(fit.compatible && fit.edges.size() == 12, what << ": reads back as six rectangles of whole grid edges (angles off by "
+                                                               << fit.max_angle_deviation << ", sides by " << fit.max_side_deviation << ")");
+    // the metric's corner angles against the input's, and the spread of its triangles' areas
+    double angle_sum = 0, log_sum = 0, log_sq = 0;
+    std::size_t corners_seen = 0;
+    for(auto f : faces(mesh)) {
+      double l[3], e[3];
+      int k = 0;
+      for(auto hd : CGAL::halfedges_around_face(halfedge(f, mesh), mesh)) {
+        l[k] = lengths[edge(hd, mesh)];
+        e[k] = std::sqrt(CGAL::squared_distance(mesh.point(source(hd, mesh)), mesh.point(target(hd, mesh))));
+        ++k;
+      }
+      auto angle = [](const double* x, int i) {   // the angle opposite side i
+        const double a = x[i], b = x[(i + 1) % 3], c = x[(i + 2) % 3];
+        return std::acos(std::max(-1., std::min(1., (b * b + c * c - a * a) / (2 * b * c))));
+      };
+      for(int i = 0; i < 3; ++i) { angle_sum += std::abs(angle(l, i) - angle(e, i)); ++corners_seen; }
+      auto area = [](const double* x) { const double s = 0.5 * (x[0] + x[1] + x[2]); return std::sqrt(std::max(0., s * (s - x[0]) * (s - x[1]) * (s - x[2]))); };
+      const double r = std::log(area(l) / area(e));
+      log_sum += r;
+      log_sq += r * r;
+    }
+    const double n = double(num_faces(mesh));
+    angle_error[method] = angle_sum / double(corners_seen);
+    area_spread[method] = std::sqrt(std::max(0., log_sq / n - (log_sum / n) * (log_sum / n)));
+    // the remesh, its inverted quads (if any) unfolded along the surface, then the full read-back
+    const auto dev = SMDF::develop_flat_metric(mesh, SMDF::parameters::edge_length_map(lengths));
+    Surface_mesh out;
+    SMDF::Grid_tessellation_status st = SMDF::tessellate_flat_metric(mesh, dev, SMDF::SQUARE_GRID, h, out);
+    if(!st.success && st.inverted_faces > 0) {
+      auto held = out.add_property_map<Surface_mesh::Vertex_index, bool>("v:held", false).first;
+      for(const auto& iv : st.irregular_vertices) held[Surface_mesh::Vertex_index(Surface_mesh::size_type(iv.first))] = true;
+      const SMDF::Untangle_status us = SMDF::untangle_remesh(mesh, out, SMDF::parameters::vertex_is_constrained_map(held));
+      std::cout << what << ": untangling " << us.inverted_before << " -> " << us.inverted_after << std::endl;
+      st.success = us.success;
+      st.inverted_faces = us.inverted_after;
+    }
+    const auto& D = ps.dimensions;
+    check_remesh(mesh, mesh, out, st, 4, {{3, 8}}, 2 * (D[0] * D[1] + D[1] * D[2] + D[2] * D[0]) / (h * h), what);
+    std::cout << what << ": mean angle error " << angle_error[method] << " rad, spread of log area ratios " << area_spread[method]
+              << ", side gap " << ps.max_side_parameter_gap << ", area ratio " << (num_faces(out) ? polygon_area(out) / input_area : 0.) << std::endl;
+    mesh.remove_property_map(lengths);
+  }
+  if(area_spread.size() == 2)
+    SMDF_CHECK_MSG(area_spread[SMDF::RICCI_FLOW_SEGMENTS] > area_spread[SMDF::RELAXED_SEGMENTS],
+                   "spot, box: the Ricci flow segments (conformal) spread the areas more (" << area_spread[SMDF::RICCI_FLOW_SEGMENTS] << " against "
+                       << area_spread[SMDF::RELAXED_SEGMENTS] << ")");
+  // On a cube whose six faces are the segments (flat squares with straight sides), the Ricci
+  // flow has nothing to change: the two segments beside an edge agree, and the cube's edges keep
+  // their lengths in the metric.
+  Surface_mesh cube;
+  smdf_test::soup_to_mesh(cube_soup(4, 11u), cube);
+  std::array<Surface_mesh::Vertex_index, 8> cc;
+  for(auto v : vertices(cube)) {
+    const K::Point_3& p = cube.point(v);
+    if((p.x() == 0 || p.x() == 1) && (p.y() == 0 || p.y() == 1) && (p.z() == 0 || p.z() == 1))
+      cc[std::size_t(int(p.x()) + 2 * int(p.y()) + 4 * int(p.z()))] = v;
+  }
+  auto cl = cube.add_property_map<Surface_mesh::Edge_index, double>("e:segments", 0).first;
+  const auto cs = SMDF::box_polycube_metric(cube, cc, 0.25, cl, SMDF::parameters::segment_flattening(SMDF::RICCI_FLOW_SEGMENTS));
+  double worst = 0;
+  std::size_t on_edges = 0;
+  for(auto e : edges(cube)) {
+    const K::Point_3 &p = cube.point(source(halfedge(e, cube), cube)), &q = cube.point(target(halfedge(e, cube), cube));
+    int shared = 0;   // coordinates at 0 or 1 in both: two for a piece of a cube edge
+    for(int k = 0; k < 3; ++k) shared += p[k] == q[k] && (p[k] == 0 || p[k] == 1);
+    if(shared < 2) continue;
+    ++on_edges;
+    worst = std::max(worst, std::abs(cl[e] - std::sqrt(CGAL::squared_distance(p, q))));
+  }
+  SMDF_CHECK_MSG(cs.success && cs.max_side_parameter_gap < 1e-9 && on_edges == 48 && worst < 1e-9,
+                 "cube, Ricci flow segments: the sides agree (gap " << cs.max_side_parameter_gap << ") and the cube's " << on_edges
+                     << " edge pieces keep their lengths (off by " << worst << "): " << cs.message);
+}
+
 // The relaxation across the box's edges (named parameter seam_relaxation_rings), at the grid
 // where it matters: Spot Loop-subdivided once (23k faces), about as many quads as faces. With and
 // without it the metric is the box's (eight cones, flat elsewhere); with it the remesh reads back
@@ -1143,7 +1266,7 @@ int main()
   box_corner_order();
   l_shaped_polycube();
   const std::string dir = smdf_test::shared_data_dir();
-  if(!dir.empty()) { box_polycube(dir); seam_relaxation(dir); flipped_flat_metric(dir); delaunay_refinement(dir); octahedron_polyhedron(dir); obelisk(dir); untangling(dir); }
+  if(!dir.empty()) { box_polycube(dir); ricci_flow_segments(dir); seam_relaxation(dir); flipped_flat_metric(dir); delaunay_refinement(dir); octahedron_polyhedron(dir); obelisk(dir); untangling(dir); }
   else std::cout << "../shared/data not found: box polycube on shared meshes skipped" << std::endl;
   return smdf_test::finish();
 }

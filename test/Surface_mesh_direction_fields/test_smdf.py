@@ -473,6 +473,14 @@ def test_remesh(smdf, c, torus, tmp):
         c.check(d.get("vertices_to_input", 1) < 1e-9 and 0 < d.get("remesh_to_input", 1) < 1 and 0 < d.get("input_to_remesh", 1) < 1,
                 "remesh spot, box polycube: vertices on the input, its faces and the input within one edge length of each other "
                 "(%r)" % d)
+    # Lai et al.'s segments by Ricci flow: the same invariants, the two sides' gap reported
+    r = smdf.json(["remesh", spot, "--polycube", "box", "--segments", "ricci", "--faces", "2000", "--out", os.path.join(tmp, "spot_ricci.obj")],
+                  "smdf remesh spot --polycube box --segments ricci")
+    if r:
+        m = r.get("metric", {})
+        c.check(r.get("success") is True and r.get("valences", {}).get("3") == 8 and set(r["valences"]) == {"3", "4"}
+                and m.get("segments") == "ricci" and m.get("relaxation_steps") == 0 and 0 < m.get("max_side_parameter_gap", 0) < 0.5,
+                "remesh spot --segments ricci: quads, 8 vertices of valence 3, the segments' side gap reported (%r)" % m)
     r = smdf.json(["remesh", cube, "--polycube", "octahedron", "--faces", "300", "--out", out], "smdf remesh cube --polycube octahedron")
     c.check(r is not None and r.get("grid") == "triangle" and set(r.get("faces_by_size", {})) == {"3"}
             and r.get("valences", {}).get("4") == 6 and set(r["valences"]) == {"4", "6"},
@@ -558,6 +566,10 @@ def test_remesh_cones_and_files(smdf, c, torus, tmp, cube, spot):
     smdf.error(["remesh", spot, "--polycube", "octahedron", "--faces", "700", "--out", out, "--knot-svg", knot], "remesh --knot-svg on triangles", 2,
                "quad")
     # bad input
+    smdf.error(["remesh", spot, "--polycube", "box", "--segments", "conformal", "--faces", "500", "--out", out], "remesh --segments unknown", 2,
+               ["relaxed or ricci", "conformal"])
+    smdf.error(["remesh", spot, "--cones", "2202:pi/2", "--segments", "ricci", "--faces", "500", "--out", out], "remesh --segments without --polycube", 2,
+               "--polycube")
     smdf.error(["remesh", torus, "--polycube", "box", "--faces", "500", "--out", out], "remesh --polycube on a torus", 1,
                ["genus-0", "genus 1"])
     smdf.error(["remesh", spot, "--cones", "2202:pi/2,1077:pi/2", "--faces", "500", "--out", out], "remesh: cones not summing to 4 pi", 1,

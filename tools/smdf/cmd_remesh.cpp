@@ -117,6 +117,10 @@ Json run_remesh(const Args& args)
     throw Usage_error("--polycube octahedron gives a metric for --grid triangle");
   if(grid_name == "mixed" && (polycube.empty() || polycube == "box" || polycube == "octahedron"))
     throw Usage_error("--grid mixed needs a polyhedron of squares and triangles: --polycube obelisk or --polycube FILE");
+  if(!args.has("polycube") && (args.has("segments") || args.has("relaxation")))
+    throw Usage_error("--segments and --relaxation shape a polyhedron's metric: give --polycube");
+  if(args.has("segments") && args.has("relaxation") && args.value("segments") == "ricci")
+    throw Usage_error("--relaxation applies to --segments relaxed; Lai et al.'s Ricci flow segments are not relaxed");
   if(!args.has("out")) throw Usage_error("option --out FILE is required (.off or .obj)");
   const std::string out_file = args.value("out");
   if(args.has("knot-svg") && (grid_name != "quad" || polycube == "octahedron" || polycube == "obelisk"))
@@ -137,6 +141,10 @@ Json run_remesh(const Args& args)
   const long relax = args.has("relaxation") ? args.integer("relaxation", 0) : 10;
   if(relax < 0 || relax > 1000) throw Usage_error("option --relaxation expects an integer from 0 to 1000");
   const int relax_steps = int(relax);
+  const std::string segments = args.value("segments", "relaxed");
+  if(segments != "relaxed" && segments != "ricci")
+    throw Usage_error("option --segments expects relaxed or ricci, got '" + segments + "'");
+  const SMDF::Segment_flattening flattening = segments == "ricci" ? SMDF::RICCI_FLOW_SEGMENTS : SMDF::RELAXED_SEGMENTS;
   auto stage = [&](const char* what) {
     if(!progress) return;
     std::ostringstream os;
@@ -306,13 +314,15 @@ Json run_remesh(const Args& args)
       const int n = int((std::max)(1., std::round(side / h)));
       Mesh remesh;
       const SMDF::Polyhedron_remesh_status rs = on_file(file, [&] {
-        return SMDF::polyhedron_remesh(mesh, corners, pfaces, n, remesh, SMDF::parameters::conformal_factor_map(u).number_of_iterations(relax_steps));
+        return SMDF::polyhedron_remesh(mesh, corners, pfaces, n, remesh, SMDF::parameters::conformal_factor_map(u).number_of_iterations(relax_steps).segment_flattening(flattening));
       });
       Json c = Json::array();
       for(vertex_descriptor v : corners) c.push_back(index(v));
       metric["corners"] = std::move(c);
       metric["max_path_stretch"] = rs.metric.max_path_stretch;
       metric["relaxation_steps"] = rs.metric.relaxation_steps;
+      metric["segments"] = segments;
+      if(flattening == SMDF::RICCI_FLOW_SEGMENTS) metric["max_side_parameter_gap"] = rs.metric.max_side_parameter_gap;
       out["metric"] = metric;
       // the mixed grid's Theorem 3.5 test, face by face of P, on the metric built
       if(rs.metric.success) out["polyhedron_compatibility"] = compatibility_json(rs.compatibility);
@@ -376,7 +386,7 @@ Json run_remesh(const Args& args)
       return out;
     }
     const SMDF::Polycube_metric_status ps = on_file(file, [&] {
-      return SMDF::polyhedron_metric(mesh, corners, pfaces, side, lengths, SMDF::parameters::conformal_factor_map(u).number_of_iterations(relax_steps));
+      return SMDF::polyhedron_metric(mesh, corners, pfaces, side, lengths, SMDF::parameters::conformal_factor_map(u).number_of_iterations(relax_steps).segment_flattening(flattening));
     });
     compensation_s = clock.lap();
     Json c = Json::array();
@@ -386,6 +396,8 @@ Json run_remesh(const Args& args)
     metric["max_path_stretch"] = ps.max_path_stretch;
     metric["relaxation_steps"] = ps.relaxation_steps;
     metric["seam_relaxed_vertices"] = ps.seam_relaxed_vertices;
+    metric["segments"] = segments;
+    if(flattening == SMDF::RICCI_FLOW_SEGMENTS) metric["max_side_parameter_gap"] = ps.max_side_parameter_gap;
     out["metric"] = metric;
     if(!ps.success) throw Failed_result{out, file + ": polyhedron metric: " + ps.message, 3};
     // the face-by-face test too (the tessellation then runs the holonomy test of its grid)
@@ -407,7 +419,7 @@ Json run_remesh(const Args& args)
     for(vertex_descriptor v : corners) targets[v] = CGAL_PI / 2;
     flat_cone_factors(targets);
     const SMDF::Polycube_metric_status ps = on_file(file, [&] {
-      return SMDF::box_polycube_metric(mesh, corners, h, lengths, SMDF::parameters::conformal_factor_map(u).number_of_iterations(relax_steps));
+      return SMDF::box_polycube_metric(mesh, corners, h, lengths, SMDF::parameters::conformal_factor_map(u).number_of_iterations(relax_steps).segment_flattening(flattening));
     });
     compensation_s = clock.lap();
     Json c = Json::array();
@@ -418,6 +430,8 @@ Json run_remesh(const Args& args)
     metric["max_path_stretch"] = ps.max_path_stretch;
     metric["relaxation_steps"] = ps.relaxation_steps;
     metric["seam_relaxed_vertices"] = ps.seam_relaxed_vertices;
+    metric["segments"] = segments;
+    if(flattening == SMDF::RICCI_FLOW_SEGMENTS) metric["max_side_parameter_gap"] = ps.max_side_parameter_gap;
     out["metric"] = metric;
     if(!ps.success) throw Failed_result{out, file + ": box polycube metric: " + ps.message, 3};
   }
@@ -520,6 +534,7 @@ Command remesh_command()
            {"view", "A,E[,UP]", "view of --svg: azimuth,elevation in degrees, up axis x|y|z"},
            {"width", "PX", "width of the --svg picture in pixels (default 800)"},
            {"knot-svg", "FILE", "write a woven Celtic knot along the quad remesh's medial graph (Lai et al. Fig. 13)"},
+           {"segments", "relaxed|ricci", "with --polycube: how the pieces between the polyhedron's edges are mapped onto its faces: relaxed (default: stretch-minimising Tutte embedding relaxed as rigidly as possible, grid cells of even size) or ricci (Lai et al.: each piece flattened by Ricci flow to its polygon, conformal; the two pieces beside an edge path disagree on its vertices, whose mean is taken: max_side_parameter_gap)"},
            {"relaxation", "K", "with --polycube: one round of stretch-minimising reweighting, then at most K steps of as-rigid-as-possible relaxation of the polyhedron's charts (fewer once a triangle about to fold throttles a step below 1 %) and 3K sweeps across its edges near the paths (default 10; 0: the plain Tutte embedding)"},
            {"no-untangle", "", "keep the grid's faces that come out inverted on the surface (default: their vertices are moved along the input until none is, the cones held; reported as untangle)"},
            {"progress", "", "report each stage on stderr with the elapsed time"}},
@@ -541,7 +556,8 @@ Command remesh_command()
           "Prints {grid, metric: {source, converged, iterations, max_curvature_error,\n"
           "delaunay_refinement: {input_triangulation_message, success, faces, inserted_vertices} (when\n"
           "used), flat_cone_metric_converged, flat_cone_metric_edge_flips, corners,\n"
-          "dimensions or side_length, max_path_stretch, relaxation_steps, seam_relaxed_vertices},\n"
+          "dimensions or side_length, max_path_stretch, relaxation_steps, seam_relaxed_vertices, segments,\n"
+          "max_side_parameter_gap with --segments ricci},\n"
           "edge_length, cut_edges, cones, grid_spacing_of_metric, failing_cut_edges (first 20),\n"
           "failing_cut_edge_deviations (theirs: {rotation (radians from the grid's rotations),\n"
           "translation (grid edges from the lattice)}),\n"

@@ -13,6 +13,7 @@
 #include <CGAL/Surface_mesh_direction_fields/errors.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/chart_relaxation.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/seam_relaxation.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/segment_ricci_flow.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/polyhedron_paths.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/two_threads.h>
 
@@ -50,6 +51,32 @@ struct Polycube_metric_status
   /// beside each edge unfolded into one plane (so that the zigzag of an edge path does not shear
   /// its triangles); 0 without relaxation and for polyhedron_remesh(), whose grid follows the paths
   std::size_t seam_relaxed_vertices = 0;
+  /// with `RICCI_FLOW_SEGMENTS`: the largest difference between the places along P's edge that
+  /// the two segments beside it give a path vertex, as a fraction of the edge (how far apart Lai
+  /// et al.'s assembly of the segments leaves the two sides; the charts take their mean); 0 otherwise
+  double max_side_parameter_gap = 0;
+};
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsRemeshing
+/// How box_polycube_metric(), polyhedron_metric() and polyhedron_remesh() map the pieces of the
+/// surface between P's edges (Lai et al.'s segments) onto P's faces (named parameter
+/// `segment_flattening`).
+enum Segment_flattening
+{
+  /// a stretch-minimising Tutte embedding, its sides by arc length, relaxed as rigidly as
+  /// possible with the paths sliding along P's edges (the default: close to the input's own
+  /// triangles, so grid cells of about the same size everywhere)
+  RELAXED_SEGMENTS,
+  /// Lai et al.'s step 3: each segment flattened by Ricci flow to a polygon with P's face's
+  /// angles (boundary curvature \f$\pi\f$ minus the angle at P's corners, 0 elsewhere) and
+  /// straight sides, the vertices of each side placed where that metric puts them (the mean of
+  /// the two segments beside the path, which disagree: `max_side_parameter_gap` in the status),
+  /// the inside by a Tutte embedding with the mean value weights of the mesh's metric and that
+  /// boundary (a discrete harmonic map; harmonic maps do not change under conformal scaling, so
+  /// with the conformal boundary it approximates the segment's conformal map onto its polygon,
+  /// stretched to the polygon's sides); no relaxation. Conformal maps shrink protrusions
+  /// exponentially, so the grid's cells vary in size on the surface.
+  RICCI_FLOW_SEGMENTS
 };
 
 namespace internal {
@@ -76,6 +103,7 @@ struct Chart_inputs
   std::vector<double> reference;
   int iterations = 0;
   int seam_rings = 8;   // relax_across_polyhedron_edges(): the bands' width in edges (0: none)
+  bool ricci_segments = false;   // Lai et al.'s segments by Ricci flow instead of relaxed charts
   double area = 0;
   std::vector<double> path_metric;
 };
@@ -153,6 +181,30 @@ Polycube_metric_status polyhedron_metric_core(const Mesh_arrays<TM>& m, const st
   // The pieces are independent: embedded on two threads, the larger ones first, each to the
   // thread with less work so far (a piece writes only its own faces' charts).
   std::vector<std::string> failure(pfaces.size());
+  std::vector<std::size_t> piece_faces(pfaces.size(), 0), by_size(pfaces.size());
+  for(std::size_t f = 0; f < nf; ++f) ++piece_faces[std::size_t(face_of_region[std::size_t(region[f])])];
+  for(std::size_t j = 0; j < by_size.size(); ++j) by_size[j] = j;
+  std::stable_sort(by_size.begin(), by_size.end(), [&](std::size_t x, std::size_t y) { return piece_faces[x] > piece_faces[y]; });
+  std::vector<std::size_t> share[2];
+  std::size_t load[2] = {0, 0};
+  for(std::size_t j : by_size) { const int t = load[1] < load[0] ? 1 : 0; share[t].push_back(j); load[t] += piece_faces[j]; }
+  // With Ricci flow segments, where the path vertices lie along P's edges: the mean of the two
+  // segments' parameters (Lai et al. leave the two apart; their gap is reported)
+  std::vector<std::vector<double>> conformal(np);
+  if(in.ricci_segments) {
+    Side_parameters sides(np);
+    run_on_two_threads([&](int t) {
+      for(std::size_t j : share[t]) ricci_flow_segment(m, corner_vertex, cut, pfaces, shape, j, sides, failure[j]);
+    }, nf >= 20000);
+    for(const std::string& why : failure) if(!why.empty()) { st.message = why; return st; }
+    for(std::size_t k = 0; k < np; ++k) {
+      conformal[k].resize(paths[k].size());
+      for(std::size_t q = 0; q < paths[k].size(); ++q) {
+        conformal[k][q] = 0.5 * (sides[k][0][q] + sides[k][1][q]);
+        st.max_side_parameter_gap = (std::max)(st.max_side_parameter_gap, std::abs(sides[k][0][q] - sides[k][1][q]));
+      }
+    }
+  }
   auto embed = [&](std::size_t j) {
     const int r = region_of_face[j];
     std::map<int, Point_2> fixed;
@@ -166,7 +218,8 @@ Polycube_metric_status polyhedron_metric_core(const Mesh_arrays<TM>& m, const st
       double s = 0;
       for(std::size_t q = 0; q < p.size(); ++q) {
         if(q > 0) s += along[std::size_t(k)][q - 1];
-        const double t = forward ? s / reference_length[std::size_t(k)] : 1 - s / reference_length[std::size_t(k)];
+        const double along_edge = in.ricci_segments ? conformal[std::size_t(k)][q] : s / reference_length[std::size_t(k)];
+        const double t = forward ? along_edge : 1 - along_edge;
         fixed[p[q]] = Point_2((1 - t) * pa.x() + t * pb.x(), (1 - t) * pa.y() + t * pb.y());
       }
     }
@@ -187,20 +240,17 @@ Polycube_metric_status polyhedron_metric_core(const Mesh_arrays<TM>& m, const st
     // as-rigid-as-possible steps more sheared triangles (Spot 433k: 71 quads with a negative
     // scaled Jacobian after ten rounds, 48 after one; Homer and the armadillo: one inverted quad
     // each at 2000 quads after ten, none after one) and take 2.8 instead of 1.1 s at 433k faces.
-    if(!stretch_minimizing_tutte(m, piece, column, unknowns, fixed, reference, (std::min)(iterations, 1), solved, failure[j])) return;
+    // Ricci flow segments: no reweighting, a discrete harmonic map onto the polygon with the
+    // sides placed conformally (close to the segment's conformal map: harmonicity does not
+    // change under conformal scaling).
+    const int rounds = in.ricci_segments ? 0 : (std::min)(iterations, 1);
+    if(!stretch_minimizing_tutte(m, piece, column, unknowns, fixed, reference, rounds, solved, failure[j])) return;
     auto place = [&](int v) { return column[std::size_t(v)] >= 0 ? solved[std::size_t(column[std::size_t(v)])] : fixed.at(v); };
     for(int f : piece) {
       int h = m.face_halfedge[std::size_t(f)];
       for(int i = 0; i < 3; ++i, h = m.next[std::size_t(h)]) chart[std::size_t(f)][std::size_t(i)] = place(m.source(h));
     }
   };
-  std::vector<std::size_t> piece_faces(pfaces.size(), 0), by_size(pfaces.size());
-  for(std::size_t f = 0; f < nf; ++f) ++piece_faces[std::size_t(face_of_region[std::size_t(region[f])])];
-  for(std::size_t j = 0; j < by_size.size(); ++j) by_size[j] = j;
-  std::stable_sort(by_size.begin(), by_size.end(), [&](std::size_t x, std::size_t y) { return piece_faces[x] > piece_faces[y]; });
-  std::vector<std::size_t> share[2];
-  std::size_t load[2] = {0, 0};
-  for(std::size_t j : by_size) { const int t = load[1] < load[0] ? 1 : 0; share[t].push_back(j); load[t] += piece_faces[j]; }
   run_on_two_threads([&](int t) { for(std::size_t j : share[t]) embed(j); }, nf >= 20000);
   for(const std::string& why : failure) if(!why.empty()) { st.message = why; return st; }
   // 4. validity: every triangle non-degenerate, all on the same side (mirrored corners are fine:
@@ -223,7 +273,7 @@ Polycube_metric_status polyhedron_metric_core(const Mesh_arrays<TM>& m, const st
   }
   std::vector<int> pface(nf);
   for(std::size_t f = 0; f < nf; ++f) pface[f] = face_of_region[std::size_t(region[f])];
-  if(reference) {
+  if(reference && !in.ricci_segments) {
     std::vector<int> path_of_vertex(nv, -1);
     for(std::size_t k = 0; k < np; ++k) for(std::size_t i = 1; i + 1 < paths[k].size(); ++i) path_of_vertex[std::size_t(paths[k][i])] = int(k);
     const Polyhedron_cut_view cut{&corner_of, &path_of_vertex, &pface, &pfaces, &shape, &pedges, &paths};
@@ -295,6 +345,7 @@ Chart_inputs chart_inputs(const TM& tm, const Mesh_arrays<TM>& m, const NP& np)
   in.seam_rings = choose_parameter(get_parameter(np, internal_np::seam_relaxation_rings), 8);
   if(in.seam_rings < 0 || in.seam_rings > 1000)
     throw Input_error(Input_error::INVALID_ARGUMENT, "seam_relaxation_rings must be between 0 and 1000, got " + std::to_string(in.seam_rings));
+  in.ricci_segments = choose_parameter(get_parameter(np, internal_np::segment_flattening), RELAXED_SEGMENTS) == RICCI_FLOW_SEGMENTS;
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
   std::vector<double>& reference = in.reference;
   reference.assign(m.number_of_edges(), 0.);
@@ -443,14 +494,15 @@ inline bool box_corner_order(const std::vector<std::vector<int>>& faces, std::ar
 /// corners, with cut-graph motions that are symmetries of the square grid of edge length
 /// `edge_length`, so tessellate_flat_metric() accepts it.
 ///
-/// Departure from the paper: Lai et al. flatten each disk to a rectangle by Ricci flow with
-/// corner curvatures \f$\pi/2\f$ and then scale the rectangles; the two sides of a path then
-/// disagree on where its vertices go, and a conformal map shrinks protrusions exponentially (a
-/// remesh then cuts them off). Sharing each path vertex between its two sides keeps the sides
-/// consistent by construction, and the relaxation towards the input's own triangles gives every
+/// Lai et al. flatten each disk to a rectangle by Ricci flow with corner curvatures
+/// \f$\pi/2\f$ and then scale the rectangles: `segment_flattening(RICCI_FLOW_SEGMENTS)`. The two
+/// sides of a path then disagree on where its vertices go (their mean is taken), and a conformal
+/// map shrinks protrusions exponentially (a remesh then cuts them off). The default,
+/// `RELAXED_SEGMENTS`, shares each path vertex between its two sides, which keeps the sides
+/// consistent by construction, and its relaxation towards the input's own triangles gives every
 /// part of the surface grid cells of about the same size: on Spot, the remesh's area is within
 /// 0.5 % of the input's and every input vertex within one edge length of it, against 2.8 % and
-/// up to 5 edge lengths with the plain Tutte embedding.
+/// up to 5 edge lengths with the plain Tutte embedding (the manual compares the two methods).
 ///
 /// Named parameters: `edge_length_map` (the metric \f$\ell\f$ of the path lengths and of the
 /// angles of the first mean value weights; default: Euclidean lengths) or `intrinsic_mesh`;
@@ -468,7 +520,9 @@ inline bool box_corner_order(const std::vector<std::vector<int>>& faces, std::ar
 /// surface the relaxation measures against); `seam_relaxation_rings` (default 8: the width, in
 /// edges, of the bands beside the paths relaxed across the box's edges; 0 leaves the paths
 /// straight; on Spot at 100k faces and as many quads, 8 rings give 5 quads with a negative scaled
-/// Jacobian, 4 rings 14, 16 rings 12, none 145); and the index maps.
+/// Jacobian, 4 rings 14, 16 rings 12, none 145); `segment_flattening` (default
+/// `RELAXED_SEGMENTS`; `RICCI_FLOW_SEGMENTS` for Lai et al.'s segments, which ignores
+/// `number_of_iterations` and `seam_relaxation_rings` but for the box's sides); and the index maps.
 /// Failures (a path that cannot avoid the earlier ones, pieces that do not match the box's
 /// faces, a degenerate triangle) are in the status; `Input_error` for a mesh that is not a
 /// closed genus-0 surface or corners that are not eight distinct vertices.

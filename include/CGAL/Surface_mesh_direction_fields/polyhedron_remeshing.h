@@ -68,7 +68,8 @@ struct Polyhedron_remesh_status
 /// weights; default: Euclidean lengths) or `intrinsic_mesh`; `conformal_factor_map` (the
 /// paths under the conformal scaling of that metric, e.g. the flat cone metric with P's cones,
 /// as for box_polycube_metric());
-/// `number_of_iterations` (as for box_polycube_metric(), default 10), `vertex_point_map`, and
+/// `number_of_iterations` (as for box_polycube_metric(), default 10), `segment_flattening`
+/// (as for box_polycube_metric(), default `RELAXED_SEGMENTS`), `vertex_point_map`, and
 /// the index maps. `out` is cleared and receives the remesh when its faces could be built.
 template <typename TriangleMesh, typename PolygonMesh, typename NamedParameters = parameters::Default_named_parameters>
 Polyhedron_remesh_status polyhedron_remesh(const TriangleMesh& tm,
@@ -137,7 +138,9 @@ Polyhedron_remesh_status polyhedron_remesh(const TriangleMesh& tm,
 
   // output vertices: P's corners, the points inside P's edges, the points inside P's faces
   std::vector<V3> position;
-  std::vector<int> under;      // per output vertex: an input face it lies on (for the inversion test)
+  // per output vertex, for the inversion test: the input face it lies in (kind 0), the edge
+  // of the halfedge it lies on (1) or the input vertex it is (2)
+  std::vector<std::pair<int, int>> under;
   std::vector<int> expected;   // per output vertex: the valence its place asks
   std::vector<int> corner_id(cv.size());
   std::vector<int> faces_at_corner(cv.size(), 0);
@@ -145,7 +148,7 @@ Polyhedron_remesh_status polyhedron_remesh(const TriangleMesh& tm,
   for(std::size_t i = 0; i < cv.size(); ++i) {
     corner_id[i] = int(position.size());
     position.push_back(point3(cv[i]));
-    under.push_back(m.face[std::size_t(m.vertex_out[std::size_t(cv[i])])]);
+    under.emplace_back(2, cv[i]);
     expected.push_back(faces_at_corner[i]);
   }
   // per P edge: its n - 1 inner points along the path, evenly in the charts; valence from its two faces
@@ -168,8 +171,7 @@ Polyhedron_remesh_status polyhedron_remesh(const TriangleMesh& tm,
       const double t = ch.steps[k][seg] > 0 ? (std::min)(1., (std::max)(0., (s - at) / ch.steps[k][seg])) : 0.;
       const V3 a = point3(p[seg]), b = point3(p[seg + 1]);
       position.push_back(V3{{(1 - t) * a[0] + t * b[0], (1 - t) * a[1] + t * b[1], (1 - t) * a[2] + t * b[2]}});
-      const int h = ch.path_halfedges[k][seg];   // a face beside the path edge
-      under.push_back(m.face[std::size_t(h)] >= 0 ? m.face[std::size_t(h)] : m.face[std::size_t(h ^ 1)]);
+      under.emplace_back(1, ch.path_halfedges[k][seg]);
       expected.push_back(2 + edge_sides[k]);
     }
   }
@@ -222,7 +224,7 @@ Polyhedron_remesh_status polyhedron_remesh(const TriangleMesh& tm,
         const V3 p0 = point3(m.source(h0)), p1 = point3(m.target[std::size_t(h0)]), p2 = point3(m.target[std::size_t(m.next[std::size_t(h0)])]);
         inner[j][std::make_pair(a, b)] = int(position.size());
         position.push_back(V3{{l0 * p0[0] + l1 * p1[0] + l2 * p2[0], l0 * p0[1] + l1 * p1[1] + l2 * p2[1], l0 * p0[2] + l1 * p1[2] + l2 * p2[2]}});
-        under.push_back(int(f));
+        under.emplace_back(0, int(f));
         expected.push_back(square ? 4 : 6);
       }
   }
@@ -270,9 +272,9 @@ Polyhedron_remesh_status polyhedron_remesh(const TriangleMesh& tm,
   }
   st.vertices = num_vertices(out);
   if(st.unexpected_valences) { st.message = std::to_string(st.unexpected_valences) + " vertices have a valence their place does not explain"; return st; }
-  auto input_normal = [&](int f) {
-    const int g = m.face_halfedge[std::size_t(f)];
-    return internal::unit_triangle_normal(point3(m.source(g)), point3(m.target[std::size_t(g)]), point3(m.target[std::size_t(m.next[std::size_t(g)])]));
+  auto input_normal = [&](const std::pair<int, int>& w) {
+    return w.first == 0 ? internal::face_normal(m, w.second, point3) : w.first == 1 ? internal::edge_normal(m, w.second, point3)
+                                                                                    : internal::vertex_normal(m, w.second, point3);
   };
   for(const auto& c : cells)
     st.inverted_faces += internal::turns_against_input(c.size(), [&](std::size_t k) { return position[std::size_t(c[k])]; },
