@@ -1090,8 +1090,9 @@ void delaunay_refinement(const std::string& dir)
 // ears and 16 quads come out inverted: afterwards none is, the connectivity is the grid's (the
 // same valence at every vertex, the eight cones held in place) and the full read-back passes on
 // the moved mesh (every vertex on the input, no face flipped by the test's own normals, CGAL's
-// readers). At about 2,000 quads one quad lies across a thin part, its corners' normals
-// pointing apart: the status says so, and no vertex moves.
+// readers). At about 2,000 quads one quad lies across the ear, where smoothing finds no move;
+// the pattern search of the third attempt unfolds it (before it, the status reported that face
+// and moved nothing).
 void untangling(const std::string& dir)
 {
   Surface_mesh mesh;
@@ -1141,6 +1142,12 @@ void untangling(const std::string& dir)
     std::cout << what << ": " << us.inverted_before << " inverted, " << us.inverted_after << " left (" << us.straddling_faces
               << " across a thin part), " << us.moved_vertices << " vertices moved by up to " << us.max_displacement << " edge lengths, "
               << us.rounds << " rounds" << std::endl;
+    if(us.success) {   // the status of the moved mesh: the tessellation's checks, then no inversion
+      SMDF::Grid_tessellation_status after = st;
+      after.success = us.success;
+      after.inverted_faces = us.inverted_after;
+      check_remesh(mesh, mesh, out, after, 4, {{3, 8}}, double(num_faces(out)), what);
+    }
     if(quads == 8000) {
       // the same untangling with the input as a Polyhedron_3 (the grid's positions again)
       Polyhedron poly;
@@ -1154,15 +1161,10 @@ void untangling(const std::string& dir)
       SMDF_CHECK_MSG(up.success && up.inverted_before == us.inverted_before,
                      what << ": the same on a Polyhedron_3 input (" << up.inverted_before << " inverted, " << up.moved_vertices << " moved, "
                           << "largest distance to the Surface_mesh run " << gap << ": closest points tie differently on input edges)");
-      SMDF::Grid_tessellation_status after = st;   // the status of the moved mesh: the tessellation's checks, then no inversion
-      after.success = us.success;
-      after.inverted_faces = us.inverted_after;
-      const double faces = double(num_faces(out));
-      check_remesh(mesh, mesh, out, after, 4, {{3, 8}}, faces, what);
     }
   }
-  SMDF_CHECK_MSG(outcome[8000] == 0 && outcome[2000] > 0, "bunny: untangled at 8000 quads (" << outcome[8000] << " left), not at 2000 ("
-                                                                << outcome[2000] << " left, across the ear)");
+  SMDF_CHECK_MSG(outcome[8000] == 0 && outcome[2000] == 0, "bunny: untangled at 8000 quads (" << outcome[8000] << " left) and at 2000 ("
+                                                                 << outcome[2000] << " left, across the ear)");
 }
 
 // A polycube of three unit cubes in an L (Lai et al.: "some cone singularities ... are

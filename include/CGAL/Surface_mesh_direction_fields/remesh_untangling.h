@@ -205,7 +205,74 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
   // One attempt from the grid's positions: up to `max_rounds` rounds, each vertex stepping to its
   // neighbours' mean, or with `fallbacks` to half or a quarter of the way when the whole step is
   // refused. Returns how many faces stay inverted.
-  auto attempt = [&](bool fallbacks) {
+  // How face f faces the input: the cosine between its area vector and the sum of the normals
+  // under its corners (at most 0: inverted).
+  auto facing = [&](std::size_t f) {
+    const auto c = fv[f];
+    double area[3] = {0, 0, 0}, sum[3] = {0, 0, 0};
+    for(std::size_t k = 0; k < c.size(); ++k) {
+      const V3 &p = pos[c[k]], &q = pos[c[(k + 1) % c.size()]];
+      area[0] += p[1] * q[2] - p[2] * q[1];
+      area[1] += p[2] * q[0] - p[0] * q[2];
+      area[2] += p[0] * q[1] - p[1] * q[0];
+      for(std::size_t d = 0; d < 3; ++d) sum[d] += normal[c[k]][d];
+    }
+    const double la = std::sqrt(area[0] * area[0] + area[1] * area[1] + area[2] * area[2]), ls = std::sqrt(sum[0] * sum[0] + sum[1] * sum[1] + sum[2] * sum[2]);
+    return la > 0 && ls > 0 ? (area[0] * sum[0] + area[1] * sum[1] + area[2] * sum[2]) / (la * ls) : -1.;
+  };
+  // A pattern search for vertex v where smoothing finds no move (a face pinned by a cone at one
+  // corner): steps in eight directions of the input's tangent plane, a quarter, an eighth and a
+  // sixteenth of its mean edge long, each put back on the input, the best kept while it has fewer
+  // inverted faces around v, or as many and the worst of them facing the input better.
+  auto search = [&](std::size_t v) {
+    auto score = [&](std::size_t& inverted_faces, double& worst) {
+      inverted_faces = 0;
+      worst = 1;
+      for(std::size_t f : vf[v]) { const double c = facing(f); inverted_faces += c <= 0; worst = (std::min)(worst, c); }
+    };
+    double reach = 0;
+    for(std::size_t w : nb[v])
+      reach += std::sqrt((pos[w][0] - pos[v][0]) * (pos[w][0] - pos[v][0]) + (pos[w][1] - pos[v][1]) * (pos[w][1] - pos[v][1]) +
+                         (pos[w][2] - pos[v][2]) * (pos[w][2] - pos[v][2])) / double(nb[v].size());
+    std::size_t best_count;
+    double best_worst;
+    score(best_count, best_worst);
+    for(int step = 0; step < 12; ++step) {
+      const V3 n = normal[v];   // a tangent frame at v
+      V3 t1 = std::abs(n[0]) < 0.9 ? V3{{0, -n[2], n[1]}} : V3{{-n[2], 0, n[0]}};
+      t1 = internal::normalized(t1);
+      const V3 t2 = {{n[1] * t1[2] - n[2] * t1[1], n[2] * t1[0] - n[0] * t1[2], n[0] * t1[1] - n[1] * t1[0]}};
+      const V3 here = pos[v], here_normal = normal[v];
+      const int here_under = under[v];
+      V3 best_pos = here, best_normal = here_normal;
+      int best_under = here_under;
+      bool improved = false;
+      for(double r : {0.25, 0.125, 0.0625})
+        for(int k = 0; k < 8; ++k) {
+          const double a = k * CGAL_PI / 4, x = r * reach * std::cos(a), y = r * reach * std::sin(a);
+          const auto q = closest(Input_point(here[0] + x * t1[0] + y * t2[0], here[1] + x * t1[1] + y * t2[1], here[2] + x * t1[2] + y * t2[2]), v);
+          const V3 p = {{CGAL::to_double(q.first.x()), CGAL::to_double(q.first.y()), CGAL::to_double(q.first.z())}};
+          const V3 m = located.normal_at(p, q.second, tol * tol);
+          if(m[0] * here_normal[0] + m[1] * here_normal[1] + m[2] * here_normal[2] <= 0) continue;   // the other side of a thin part
+          pos[v] = p;
+          normal[v] = m;
+          std::size_t count;
+          double worst;
+          score(count, worst);
+          if(count < best_count || (count == best_count && worst > best_worst)) {
+            best_count = count; best_worst = worst; best_pos = p; best_normal = m; best_under = q.second; improved = true;
+          }
+          pos[v] = here;
+          normal[v] = here_normal;
+        }
+      if(!improved) break;
+      pos[v] = best_pos;
+      normal[v] = best_normal;
+      under[v] = best_under;
+      moved[v] = 1;
+    }
+  };
+  auto attempt = [&](bool fallbacks, bool searching) {
     pos = start;
     normal = start_normal;
     under = start_under;
@@ -257,6 +324,9 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
           }
         }
       }
+      if(searching)
+        for(std::size_t f = 0; f < fv.size(); ++f)
+          if(inverted(f)) for(std::size_t v : fv[f]) if(!fixed[v]) search(v);
       left = count_inverted();
     }
     return left;
@@ -265,8 +335,9 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
   // steps: Cheburashka at 8,000 quads, Spot's relaxed octahedron at 2,048 triangles; fallbacks:
   // Spot's plain octahedron at 2,048 triangles).
   std::size_t now = st.inverted_before;
-  if(now > 0) now = attempt(false);
-  if(now > 0) now = attempt(true);
+  if(now > 0) now = attempt(false, false);
+  if(now > 0) now = attempt(true, false);
+  if(now > 0) now = attempt(true, true);
   st.inverted_after = now;
   st.straddling_faces = count_straddling();
   for(std::size_t f = 0; f < fv.size(); ++f) {   // the others left inverted: next to a vertex that may not move
