@@ -11,11 +11,13 @@ view=(--view 60,20,y --width 500)
 run() { echo "smdf $*"; "$smdf" "$@" > /dev/null || echo "  (exit $?: see the caption)"; }
 # quads through the box polycube: eight cones of valence 3
 run remesh "$spot" --polycube box --faces 2000 --out /tmp/smdf_spot_quads.obj --svg "$here/spot_remesh_box.svg" "${view[@]}"
-# triangles through the octahedron: six cones of valence 4 (unrelaxed: relaxed, 8 triangles of
-# 2,888 come out inverted on Spot; see the manual)
-run remesh "$spot" --polycube octahedron --faces 1200 --relaxation 0 --out /tmp/smdf_spot_triangles.obj --svg "$here/spot_remesh_octahedron.svg" "${view[@]}"
-# quads and triangles through the obelisk of Lai et al. Fig. 1c (one face comes out inverted:
-# the tool exits 3 and still writes the remesh)
+# the same box with Lai et al.'s segments by Ricci flow (conformal: the legs and head shrink)
+run remesh "$spot" --polycube box --segments ricci --faces 2000 --out /tmp/smdf_spot_quads_ricci.obj --svg "$here/spot_remesh_box_ricci.svg" "${view[@]}"
+# triangles through the octahedron: six cones of valence 4 (the grid's 5 inverted triangles are
+# unfolded along the surface)
+run remesh "$spot" --polycube octahedron --faces 1200 --out /tmp/smdf_spot_triangles.obj --svg "$here/spot_remesh_octahedron.svg" "${view[@]}"
+# quads and triangles through the obelisk of Lai et al. Fig. 1c (one face next to the apex cone
+# comes out inverted: the tool exits 3 and still writes the remesh)
 run remesh "$spot" --polycube obelisk --grid mixed --faces 1500 --out /tmp/smdf_spot_obelisk.obj --svg "$here/spot_remesh_obelisk.svg" "${view[@]}"
 # a woven Celtic knot along the box remesh's medial graph (Lai et al. Fig. 13)
 run remesh "$spot" --polycube box --faces 700 --out /tmp/smdf_spot_knot.obj --knot-svg "$here/spot_celtic_knot.svg" "${view[@]}"

@@ -60,14 +60,17 @@ struct Untangle_status
 /// input: each round smooths the vertices within a ring of the inverted faces (one ring wider
 /// each round, up to `number_of_iterations` rounds) towards the mean of their neighbours (a
 /// first attempt with whole steps; if a face stays inverted, a second from the grid's positions
-/// that falls back on half and quarter steps where a whole one is refused), puts
-/// each one back on the input at its closest point, and keeps a move only if it inverts no face
+/// that falls back on half and quarter steps where a whole one is refused; if one still does, a
+/// third that also moves the corners of each inverted face by a pattern search in the tangent
+/// plane, towards fewer inverted faces around it and the worst of them facing the input
+/// better), puts each one back on the input at its closest point, and keeps a move only if it inverts no face
 /// around the vertex that was not inverted and does not jump to a part of the surface whose
 /// normal turns away (as across a thin ear). Only positions change: faces, valences and the
 /// irregular vertices are those of the grid. If some faces stay inverted, `remesh` is left as it
 /// was (the status says how many would have stayed, and how many of those lie across a thin part).
 /// The input's normal under a vertex is that of the input face it lies on, searched first among
-/// the faces near the one under a neighbour (a vertex off the input gets its closest face's).
+/// the faces near the one under a neighbour (a vertex off the input gets its closest face's); on
+/// an input edge or vertex, the normalised sum of the unit normals of the faces around it.
 ///
 /// This is a repair outside Lai et al.'s method. Their remesh is the grid of the metric, and
 /// where one polyhedron fits the shape poorly (the bunny's ears on a box, limbs) a grid cell can
