@@ -13,6 +13,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/face_location.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/inversion.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/packed_lists.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/two_threads.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -25,7 +26,6 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <memory>
 #include <string>
 #include <vector>
 
@@ -106,76 +106,110 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
   if(max_rounds < 0) throw Input_error(Input_error::INVALID_ARGUMENT, "number_of_iterations must not be negative");
   auto constrained = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_is_constrained),
                                       CGAL::Static_boolean_property_map<vertex_descriptor, false>());
-  // The tree of the input's faces is built only when needed: for the vertices the local search
-  // below does not place, and for the moves (none when no face is inverted).
-  std::unique_ptr<Tree> tree;
-
-  // the remesh's vertices and faces as indices
+  internal::Input_faces<TriangleMesh> located(input, ivpm);
+  // the remesh's vertices and faces as indices; per vertex its position, the input face it lies
+  // on and the input's normal there
   auto vim = get(CGAL::dynamic_vertex_property_t<std::size_t>(), remesh);
   std::vector<vertex_descriptor> vs;
   for(vertex_descriptor v : vertices(remesh)) { put(vim, v, vs.size()); vs.push_back(v); }
-  internal::Packed_lists<std::size_t> fv, nb;   // per face: its vertices; per vertex: its neighbours
-  fv.reserve(num_faces(remesh), 4 * num_faces(remesh));
-  for(face_descriptor f : faces(remesh)) {
-    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, remesh), remesh)) fv.push_back(get(vim, target(h, remesh)));
-    fv.close_list();
-  }
-  const internal::Packed_lists<std::size_t> vf = fv.transposed(vs.size());   // per vertex: its faces
+  internal::Packed_lists<std::size_t> fv, vf, nb;   // per face: its vertices; per vertex: its faces, its neighbours
   std::vector<char> fixed(vs.size(), 0);
-  nb.reserve(vs.size(), 2 * num_edges(remesh));
-  for(vertex_descriptor v : vs) {
-    fixed[get(vim, v)] = CGAL::is_border(v, remesh) || get(constrained, v);
-    for(halfedge_descriptor h : CGAL::halfedges_around_target(halfedge(v, remesh), remesh)) nb.push_back(get(vim, source(h, remesh)));
-    nb.close_list();
-  }
+  std::vector<V3> pos(vs.size()), normal(vs.size());
+  std::vector<int> under(vs.size(), -1);
+  std::vector<std::size_t> pending;   // vertices the local search did not place
+  double mean_edge = 0, tol = 0;
   auto rvpm = get(CGAL::vertex_point, remesh);
-  internal::Input_faces<TriangleMesh> located(input, ivpm);
-  std::vector<V3> pos(vs.size()), normal(vs.size());   // per vertex: position, input normal under it
-  std::vector<int> under(vs.size(), -1);                 // ... and the input face it lies on
-  // The closest point on the input to p, and the face it lies in; the search starts from vertex
-  // `from`'s point and face, if any (without the tree's own search structure, whose construction
-  // took longer at 433k faces than all queries).
-  auto closest = [&](const Input_point& p, std::size_t from) {
-    if(!tree) tree.reset(new Tree(faces(input).first, faces(input).second, input, ivpm));
-    const auto cp = from < vs.size() && under[from] >= 0
-                      ? tree->closest_point_and_primitive(p, std::make_pair(Input_point(pos[from][0], pos[from][1], pos[from][2]), located.face(under[from])))
-                      : tree->closest_point_and_primitive(p);
-    return std::make_pair(cp.first, located.index(cp.second));
-  };
-  for(std::size_t i = 0; i < vs.size(); ++i) {
-    const auto& p = get(rvpm, vs[i]);
-    pos[i] = V3{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
-  }
-  double mean_edge = 0;
-  std::size_t edge_count = 0;
-  for(std::size_t i = 0; i < vs.size(); ++i)
-    for(std::size_t j : nb[i]) {
-      const double d[3] = {pos[j][0] - pos[i][0], pos[j][1] - pos[i][1], pos[j][2] - pos[i][2]};
-      mean_edge += std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-      ++edge_count;
+  auto index_and_locate = [&] {
+    fv.reserve(num_faces(remesh), 4 * num_faces(remesh));
+    for(face_descriptor f : faces(remesh)) {
+      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, remesh), remesh)) fv.push_back(get(vim, target(h, remesh)));
+      fv.close_list();
     }
-  mean_edge /= double((std::max)(edge_count, std::size_t(1)));
-  const double tol = 1e-7 * mean_edge;   // a vertex closer to an input face or vertex lies on it
-  // The normal under every vertex, from the input face it lies on: searched near the face under
-  // a neighbour, breadth first over the remesh, the tree only where that finds none (433k
-  // vertices: a tree query each took most of the time).
-  {
+    vf = fv.transposed(vs.size());
+    nb.reserve(vs.size(), 2 * num_edges(remesh));
+    for(vertex_descriptor v : vs) {
+      fixed[get(vim, v)] = CGAL::is_border(v, remesh) || get(constrained, v);
+      for(halfedge_descriptor h : CGAL::halfedges_around_target(halfedge(v, remesh), remesh)) nb.push_back(get(vim, source(h, remesh)));
+      nb.close_list();
+    }
+    for(std::size_t i = 0; i < vs.size(); ++i) {
+      const auto& p = get(rvpm, vs[i]);
+      pos[i] = V3{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+    }
+    std::size_t edge_count = 0;
+    for(std::size_t i = 0; i < vs.size(); ++i)
+      for(std::size_t j : nb[i]) {
+        const double d[3] = {pos[j][0] - pos[i][0], pos[j][1] - pos[i][1], pos[j][2] - pos[i][2]};
+        mean_edge += std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        ++edge_count;
+      }
+    mean_edge /= double((std::max)(edge_count, std::size_t(1)));
+    tol = 1e-7 * mean_edge;   // a vertex closer to an input face or vertex lies on it
+    // the input face under every vertex, searched near the face under a neighbour, breadth first
+    // over the remesh (433k vertices: a tree query each took most of the time)
     std::vector<char> queued(vs.size(), 0);
+    std::vector<int> hint(vs.size(), -1);
     std::vector<std::size_t> queue;
     queue.reserve(vs.size());
-    for(std::size_t s = 0; s < vs.size(); ++s) {
-      if(queued[s]) continue;
-      queued[s] = 1;
-      queue.push_back(s);
-      for(std::size_t q = queue.size() - 1; q < queue.size(); ++q) {
+    int seeds = 0;
+    for(std::size_t s0 = 0; s0 < vs.size(); ++s0) {
+      if(queued[s0]) continue;
+      queued[s0] = 1;
+      queue.push_back(s0);
+      const std::size_t first = queue.size() - 1;
+      for(std::size_t q = first; q < queue.size(); ++q) {
         const std::size_t i = queue[q];
-        std::size_t from = vs.size();
-        for(std::size_t j : nb[i]) if(under[j] >= 0) { from = j; break; }
+        if(q == first && seeds++ < 8) {   // the first vertex of a component: every face tried
+          const int f = located.nearest_face(pos[i]);
+          if(located.squared_distance(pos[i], f) <= tol * tol) under[i] = f;
+          hint[i] = f;
+        }
+        for(std::size_t j : nb[i])
+          if(under[i] < 0 && hint[j] >= 0) under[i] = located.face_under(pos[i], hint[j], tol * tol, 4, &hint[i]);
+        if(under[i] >= 0) { normal[i] = located.normal_at(pos[i], under[i], tol * tol); hint[i] = under[i]; }
+        else pending.push_back(i);   // its nearest face found still guides the search for its neighbours
+        for(std::size_t j : nb[i]) if(!queued[j]) { queued[j] = 1; queue.push_back(j); }
+      }
+    }
+  };
+  // The tree of the input's faces (for those vertices and for the moves) is built on the other
+  // thread meanwhile, without its own search structure (queries start from a vertex's point and
+  // face instead; at 433k faces that structure took longer to build than all queries).
+  Tree tree;
+  internal::run_on_two_threads([&](int t) {
+    if(t == 1) { tree.insert(faces(input).first, faces(input).second, input, ivpm); tree.build(); }
+    else index_and_locate();
+  }, num_faces(input) >= 20000);
+  // The closest point on the input to p, and the face it lies in; the search starts from vertex
+  // `from`'s point and face, if any.
+  auto closest = [&](const Input_point& p, std::size_t from) {
+    const auto cp = from < vs.size() && under[from] >= 0
+                      ? tree.closest_point_and_primitive(p, std::make_pair(Input_point(pos[from][0], pos[from][1], pos[from][2]), located.face(under[from])))
+                      : tree.closest_point_and_primitive(p);
+    return std::make_pair(cp.first, located.index(cp.second));
+  };
+  // The vertices left: breadth first again from the placed ones, the tree where the local
+  // search fails once more (one failure would otherwise leave all the vertices behind it unplaced).
+  {
+    std::vector<char> waiting(vs.size(), 0);
+    for(std::size_t i : pending) waiting[i] = 1;
+    std::vector<std::size_t> queue;
+    auto placed_neighbour = [&](std::size_t i) {
+      for(std::size_t j : nb[i]) if(under[j] >= 0) return j;
+      return vs.size();
+    };
+    for(std::size_t i : pending) if(placed_neighbour(i) < vs.size()) { waiting[i] = 2; queue.push_back(i); }
+    for(std::size_t k = 0; k <= pending.size(); ++k) {   // the queue, then any vertex not reached from a placed one
+      for(std::size_t q = 0; q < queue.size(); ++q) {
+        const std::size_t i = queue[q], from = placed_neighbour(i);
         if(from < vs.size()) under[i] = located.face_under(pos[i], under[from], tol * tol, 4);
         if(under[i] < 0) under[i] = closest(Input_point(pos[i][0], pos[i][1], pos[i][2]), from).second;
         normal[i] = located.normal_at(pos[i], under[i], tol * tol);
-        for(std::size_t j : nb[i]) if(!queued[j]) { queued[j] = 1; queue.push_back(j); }
+        for(std::size_t j : nb[i]) if(waiting[j] == 1) { waiting[j] = 2; queue.push_back(j); }
       }
+      queue.clear();
+      while(k < pending.size() && waiting[pending[k]] != 1) ++k;
+      if(k < pending.size()) { waiting[pending[k]] = 2; queue.push_back(pending[k]); }
     }
   }
   auto inverted = [&](std::size_t f) {

@@ -18,6 +18,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -133,11 +134,26 @@ public:
     return squared_distance_to_triangle(p, point_[std::size_t(c[0])], point_[std::size_t(c[1])], point_[std::size_t(c[2])]);
   }
 
-  // A face within `rings` vertex rings of `hint` whose squared distance to p is at most `tol2`
-  // (the first found, ring by ring), or -1. Not thread-safe (marks faces).
-  int face_under(const Vec3& p, int hint, double tol2, int rings = 2)
+  // The face nearest to p, by trying every face (for the first point of a search).
+  int nearest_face(const Vec3& p) const
   {
-    if(squared_distance(p, hint) <= tol2) return hint;
+    int best = -1;
+    double best_d2 = std::numeric_limits<double>::infinity();
+    for(std::size_t f = 0; f < corner_.size(); ++f) {
+      const double d2 = squared_distance(p, int(f));
+      if(d2 < best_d2) { best_d2 = d2; best = int(f); }
+    }
+    return best;
+  }
+
+  // A face within `rings` vertex rings of `hint` whose squared distance to p is at most `tol2`
+  // (the first found, ring by ring), or -1; then `nearest`, if given, receives the nearest face
+  // examined (a hint for the next search). Not thread-safe (marks faces).
+  int face_under(const Vec3& p, int hint, double tol2, int rings = 2, int* nearest = nullptr)
+  {
+    double best_d2 = squared_distance(p, hint);
+    if(best_d2 <= tol2) return hint;
+    int best = hint;
     ++stamp_;
     mark_[std::size_t(hint)] = stamp_;
     std::vector<int>& front = front_;
@@ -151,10 +167,13 @@ public:
             if(mark_[std::size_t(g)] == stamp_) continue;
             mark_[std::size_t(g)] = stamp_;
             front.push_back(g);
-            if(squared_distance(p, g) <= tol2) return g;   // the first found: ties lie on shared edges
+            const double d2 = squared_distance(p, g);
+            if(d2 <= tol2) return g;   // the first found: ties lie on shared edges
+            if(d2 < best_d2) { best_d2 = d2; best = g; }
           }
       front.erase(front.begin(), front.begin() + std::ptrdiff_t(end));
     }
+    if(nearest) *nearest = best;
     return -1;
   }
 
