@@ -15,7 +15,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/packed_lists.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/two_threads.h>
 
-#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -92,7 +92,10 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
   typedef typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type Input_VPM;
   typedef typename boost::property_traits<Input_VPM>::value_type Input_point;
   typedef typename CGAL::Kernel_traits<Input_point>::Kernel K;
-  typedef CGAL::AABB_face_graph_triangle_primitive<TriangleMesh, Input_VPM> Primitive;
+  typedef typename K::Triangle_3 Triangle;
+  typedef typename std::vector<Triangle>::const_iterator Triangle_iterator;
+  // triangles stored in the primitives: the tree's construction reads no property map (433k faces: 0.5 -> s)
+  typedef CGAL::AABB_triangle_primitive<K, Triangle_iterator, CGAL::Tag_true> Primitive;
   typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> Tree;
   typedef std::array<double, 3> V3;
 
@@ -164,8 +167,11 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
           if(located.squared_distance(pos[i], f) <= tol * tol) under[i] = f;
           hint[i] = f;
         }
-        for(std::size_t j : nb[i])
-          if(under[i] < 0 && hint[j] >= 0) under[i] = located.face_under(pos[i], hint[j], tol * tol, 4, &hint[i]);
+        for(std::size_t j : nb[i])   // a walk from a neighbour's face, else the faces around it
+          if(under[i] < 0 && hint[j] >= 0) {
+            under[i] = located.walk_to(pos[i], hint[j], tol * tol);
+            if(under[i] < 0) under[i] = located.face_under(pos[i], hint[j], tol * tol, 4, &hint[i]);
+          }
         if(under[i] >= 0) { normal[i] = located.normal_at(pos[i], under[i], tol * tol); hint[i] = under[i]; }
         else pending.push_back(i);   // its nearest face found still guides the search for its neighbours
         for(std::size_t j : nb[i]) if(!queued[j]) { queued[j] = 1; queue.push_back(j); }
@@ -176,17 +182,27 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
   // thread meanwhile, without its own search structure (queries start from a vertex's point and
   // face instead; at 433k faces that structure took longer to build than all queries).
   Tree tree;
+  std::vector<Triangle> triangles;   // the input's faces, in the order of `located`
   internal::run_on_two_threads([&](int t) {
-    if(t == 1) { tree.insert(faces(input).first, faces(input).second, input, ivpm); tree.build(); }
+    if(t == 1) {
+      triangles.reserve(located.size());
+      for(std::size_t f = 0; f < located.size(); ++f) {
+        const auto h = halfedge(located.face(int(f)), input);
+        triangles.emplace_back(get(ivpm, source(h, input)), get(ivpm, target(h, input)), get(ivpm, target(next(h, input), input)));
+      }
+      tree.insert(triangles.cbegin(), triangles.cend());
+      tree.build();
+    }
     else index_and_locate();
   }, num_faces(input) >= 20000);
   // The closest point on the input to p, and the face it lies in; the search starts from vertex
   // `from`'s point and face, if any.
   auto closest = [&](const Input_point& p, std::size_t from) {
     const auto cp = from < vs.size() && under[from] >= 0
-                      ? tree.closest_point_and_primitive(p, std::make_pair(Input_point(pos[from][0], pos[from][1], pos[from][2]), located.face(under[from])))
+                      ? tree.closest_point_and_primitive(p, std::make_pair(Input_point(pos[from][0], pos[from][1], pos[from][2]),
+                                                                           triangles.cbegin() + std::ptrdiff_t(under[from])))
                       : tree.closest_point_and_primitive(p);
-    return std::make_pair(cp.first, located.index(cp.second));
+    return std::make_pair(cp.first, int(cp.second - triangles.cbegin()));
   };
   // The vertices left: breadth first again from the placed ones, the tree where the local
   // search fails once more (one failure would otherwise leave all the vertices behind it unplaced).

@@ -93,6 +93,15 @@ public:
       normal_.push_back(unit_triangle_normal(point_[std::size_t(c[0])], point_[std::size_t(c[1])], point_[std::size_t(c[2])]));
     }
     around_ = corners.transposed(std::size_t(nv));
+    adjacent_.assign(corner_.size(), std::array<int, 3>{{-1, -1, -1}});   // across side k, from corner k to k + 1
+    for(std::size_t f = 0; f < corner_.size(); ++f)
+      for(std::size_t k = 0; k < 3; ++k) {
+        const int a = corner_[f][k], b = corner_[f][(k + 1) % 3];
+        for(std::size_t g : around_[std::size_t(a)]) {
+          const std::array<int, 3>& e = corner_[g];
+          if(g != f && (e[0] == b || e[1] == b || e[2] == b)) { adjacent_[f][k] = int(g); break; }
+        }
+      }
     vertex_normal_.assign(std::size_t(nv), Vec3{{0, 0, 0}});   // as internal::vertex_normal()
     for(std::size_t f = 0; f < corner_.size(); ++f)
       for(int v : corner_[f]) for(std::size_t d = 0; d < 3; ++d) vertex_normal_[std::size_t(v)][d] += normal_[f][d];
@@ -146,6 +155,30 @@ public:
     return best;
   }
 
+  // The face under p by walking from face `start` towards p: across the side beyond which p's
+  // projection onto the face's plane lies (its most negative barycentric coordinate) until it
+  // lies inside; -1 if that face is farther than `tol2` (squared) from p, or after `steps`
+  // faces, or at the border. A few faces at most where the remesh is about as fine as the input.
+  int walk_to(const Vec3& p, int start, double tol2, int steps = 16) const
+  {
+    int f = start;
+    for(int step = 0; step < steps && f >= 0; ++step) {
+      const std::array<int, 3>& c = corner_[std::size_t(f)];
+      const Vec3 &a = point_[std::size_t(c[0])], &b = point_[std::size_t(c[1])], &q = point_[std::size_t(c[2])];
+      const Vec3& n = normal_[std::size_t(f)];
+      // twice the signed areas of the sub-triangles seen along the normal, opposite each corner
+      auto twice_area = [&](const Vec3& x, const Vec3& y) {
+        const double u[3] = {y[0] - x[0], y[1] - x[1], y[2] - x[2]}, v[3] = {p[0] - x[0], p[1] - x[1], p[2] - x[2]};
+        return (u[1] * v[2] - u[2] * v[1]) * n[0] + (u[2] * v[0] - u[0] * v[2]) * n[1] + (u[0] * v[1] - u[1] * v[0]) * n[2];
+      };
+      const double w[3] = {twice_area(b, q), twice_area(q, a), twice_area(a, b)};   // opposite corners 0, 1, 2
+      const int worst = w[0] <= w[1] && w[0] <= w[2] ? 0 : w[1] <= w[2] ? 1 : 2;
+      if(w[worst] >= 0) return squared_distance(p, f) <= tol2 ? f : -1;
+      f = adjacent_[std::size_t(f)][std::size_t((worst + 1) % 3)];   // the side opposite that corner
+    }
+    return -1;
+  }
+
   // A face within `rings` vertex rings of `hint` whose squared distance to p is at most `tol2`
   // (the first found, ring by ring), or -1; then `nearest`, if given, receives the nearest face
   // examined (a hint for the next search). Not thread-safe (marks faces).
@@ -182,6 +215,7 @@ private:
   std::vector<face_descriptor> face_;
   std::vector<std::array<int, 3>> corner_;
   Packed_lists<std::size_t> around_;   // per vertex: its faces
+  std::vector<std::array<int, 3>> adjacent_;   // per face: the face across each side (-1: none)
   std::vector<int> front_;
   std::vector<unsigned> mark_;
   unsigned stamp_ = 0;
