@@ -171,7 +171,8 @@ Polyhedron_remesh_status polyhedron_remesh(const TriangleMesh& tm,
       const double t = ch.steps[k][seg] > 0 ? (std::min)(1., (std::max)(0., (s - at) / ch.steps[k][seg])) : 0.;
       const V3 a = point3(p[seg]), b = point3(p[seg + 1]);
       position.push_back(V3{{(1 - t) * a[0] + t * b[0], (1 - t) * a[1] + t * b[1], (1 - t) * a[2] + t * b[2]}});
-      under.emplace_back(1, ch.path_halfedges[k][seg]);
+      if(t == 0 || t == 1) under.emplace_back(2, t == 0 ? p[seg] : p[seg + 1]);   // at a vertex of the path
+      else under.emplace_back(1, ch.path_halfedges[k][seg]);
       expected.push_back(2 + edge_sides[k]);
     }
   }

@@ -119,6 +119,7 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
   std::vector<char> fixed(vs.size(), 0);
   std::vector<V3> pos(vs.size()), normal(vs.size());
   std::vector<int> under(vs.size(), -1);
+  std::vector<V3> foot;   // per vertex: a point of face under[v], its closest point on the input (a query's start)
   std::vector<std::size_t> pending;   // vertices the local search did not place
   double mean_edge = 0, tol = 0;
   auto rvpm = get(CGAL::vertex_point, remesh);
@@ -192,18 +193,21 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
       }
       tree.insert(triangles.cbegin(), triangles.cend());
       tree.build();
+      tree.do_not_accelerate_distance_queries();   // queries start from a point of the surface instead
     }
     else index_and_locate();
   }, num_faces(input) >= 20000);
   // The closest point on the input to p, and the face it lies in; the search starts from vertex
-  // `from`'s point and face, if any.
+  // `from`'s point on the input and its face, if any (CGAL may return that start as the answer,
+  // so it must lie on the surface: `foot`, not the vertex's position, which may be off it).
   auto closest = [&](const Input_point& p, std::size_t from) {
     const auto cp = from < vs.size() && under[from] >= 0
-                      ? tree.closest_point_and_primitive(p, std::make_pair(Input_point(pos[from][0], pos[from][1], pos[from][2]),
+                      ? tree.closest_point_and_primitive(p, std::make_pair(Input_point(foot[from][0], foot[from][1], foot[from][2]),
                                                                            triangles.cbegin() + std::ptrdiff_t(under[from])))
                       : tree.closest_point_and_primitive(p);
     return std::make_pair(cp.first, int(cp.second - triangles.cbegin()));
   };
+  foot = pos;
   // The vertices left: breadth first again from the placed ones, the tree where the local
   // search fails once more (one failure would otherwise leave all the vertices behind it unplaced).
   {
@@ -219,8 +223,12 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
       for(std::size_t q = 0; q < queue.size(); ++q) {
         const std::size_t i = queue[q], from = placed_neighbour(i);
         if(from < vs.size()) under[i] = located.face_under(pos[i], under[from], tol * tol, 4);
-        if(under[i] < 0) under[i] = closest(Input_point(pos[i][0], pos[i][1], pos[i][2]), from).second;
-        normal[i] = located.normal_at(pos[i], under[i], tol * tol);
+        if(under[i] < 0) {   // off the input: its closest point
+          const auto cp = closest(Input_point(pos[i][0], pos[i][1], pos[i][2]), from);
+          under[i] = cp.second;
+          foot[i] = V3{{CGAL::to_double(cp.first.x()), CGAL::to_double(cp.first.y()), CGAL::to_double(cp.first.z())}};
+        }
+        normal[i] = located.normal_at(foot[i], under[i], tol * tol);
         for(std::size_t j : nb[i]) if(waiting[j] == 1) { waiting[j] = 2; queue.push_back(j); }
       }
       queue.clear();
@@ -254,6 +262,7 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
   st.inverted_before = count_inverted();
   const std::vector<V3> start = pos, start_normal = normal;
   const std::vector<int> start_under = under;
+  const std::vector<V3> start_foot = foot;
   std::vector<char> moved(vs.size(), 0);
   // One attempt from the grid's positions: up to `max_rounds` rounds, each vertex stepping to its
   // neighbours' mean, or with `fallbacks` to half or a quarter of the way when the whole step is
@@ -320,6 +329,7 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
         }
       if(!improved) break;
       pos[v] = best_pos;
+      foot[v] = best_pos;
       normal[v] = best_normal;
       under[v] = best_under;
       moved[v] = 1;
@@ -329,6 +339,7 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
     pos = start;
     normal = start_normal;
     under = start_under;
+    foot = start_foot;
     std::fill(moved.begin(), moved.end(), 0);
     std::size_t left = st.inverted_before;
     for(int round = 1; round <= max_rounds && left > 0; ++round) {
@@ -349,7 +360,7 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
           for(std::size_t w : nb[v]) for(int d = 0; d < 3; ++d) mean[std::size_t(d)] += pos[w][std::size_t(d)] / double(nb[v].size());
           std::vector<char> was;
           for(std::size_t f : vf[v]) was.push_back(inverted(f) ? 1 : 0);
-          const V3 old_pos = pos[v], old_normal = normal[v];
+          const V3 old_pos = pos[v], old_normal = normal[v], old_foot = foot[v];
           const int old_under = under[v];
           for(double t : {1., 0.5, 0.25}) {
             if(t < 1 && !fallbacks) break;
@@ -359,6 +370,7 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
             const V3& n = located.normal_at(p, q.second, tol * tol);
             if(n[0] * old_normal[0] + n[1] * old_normal[1] + n[2] * old_normal[2] <= 0) continue;   // the other side of a thin part
             pos[v] = p;
+            foot[v] = p;
             normal[v] = n;
             under[v] = q.second;
             // kept if fewer faces around v are inverted, or as many and none that was fine turned over
@@ -372,6 +384,7 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
             }
             if(after < before || (after == before && !turned)) { moved[v] = 1; break; }
             pos[v] = old_pos;
+            foot[v] = old_foot;
             normal[v] = old_normal;
             under[v] = old_under;
           }
