@@ -271,16 +271,7 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
   // under its corners (at most 0: inverted).
   auto facing = [&](std::size_t f) {
     const auto c = fv[f];
-    double area[3] = {0, 0, 0}, sum[3] = {0, 0, 0};
-    for(std::size_t k = 0; k < c.size(); ++k) {
-      const V3 &p = pos[c[k]], &q = pos[c[(k + 1) % c.size()]];
-      area[0] += p[1] * q[2] - p[2] * q[1];
-      area[1] += p[2] * q[0] - p[0] * q[2];
-      area[2] += p[0] * q[1] - p[1] * q[0];
-      for(std::size_t d = 0; d < 3; ++d) sum[d] += normal[c[k]][d];
-    }
-    const double la = std::sqrt(area[0] * area[0] + area[1] * area[1] + area[2] * area[2]), ls = std::sqrt(sum[0] * sum[0] + sum[1] * sum[1] + sum[2] * sum[2]);
-    return la > 0 && ls > 0 ? (area[0] * sum[0] + area[1] * sum[1] + area[2] * sum[2]) / (la * ls) : -1.;
+    return internal::facing_input(c.size(), [&](std::size_t k) { return pos[c[k]]; }, [&](std::size_t k) { return normal[c[k]]; });
   };
   // A pattern search for vertex v where smoothing finds no move (a face pinned by a cone at one
   // corner): steps in eight directions of the input's tangent plane, a quarter, an eighth and a

@@ -74,10 +74,11 @@ Vec3 vertex_normal(const Arrays& m, int v, const Point3& point3)
   return normalized(sum);
 }
 
-// A polygon of `n` corners, `corner(k)` its k-th corner and `normal(k)` the input's unit normal
-// under it, is inverted when its area vector points against the sum of those normals.
+// How a polygon of `n` corners faces the input, `corner(k)` its k-th corner and `normal(k)` the
+// input's unit normal under it: the cosine between its area vector and the sum of those normals
+// (-1 when either vanishes).
 template <typename Corner, typename Normal>
-bool turns_against_input(std::size_t n, const Corner& corner, const Normal& normal)
+double facing_input(std::size_t n, const Corner& corner, const Normal& normal)
 {
   double area[3] = {0, 0, 0}, under[3] = {0, 0, 0};
   for(std::size_t k = 0; k < n; ++k) {
@@ -87,7 +88,16 @@ bool turns_against_input(std::size_t n, const Corner& corner, const Normal& norm
     area[2] += p[0] * q[1] - p[1] * q[0];
     for(int d = 0; d < 3; ++d) under[d] += m[std::size_t(d)];
   }
-  return area[0] * under[0] + area[1] * under[1] + area[2] * under[2] <= 0;
+  const double la = std::sqrt(area[0] * area[0] + area[1] * area[1] + area[2] * area[2]);
+  const double lu = std::sqrt(under[0] * under[0] + under[1] * under[1] + under[2] * under[2]);
+  return la > 0 && lu > 0 ? (area[0] * under[0] + area[1] * under[1] + area[2] * under[2]) / (la * lu) : -1.;
+}
+
+// The polygon is inverted when its area vector points against the sum of the normals under it.
+template <typename Corner, typename Normal>
+bool turns_against_input(std::size_t n, const Corner& corner, const Normal& normal)
+{
+  return facing_input(n, corner, normal) <= 0;
 }
 
 } // namespace internal
