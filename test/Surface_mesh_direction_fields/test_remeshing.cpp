@@ -147,35 +147,14 @@ double surface_area(const Surface_mesh& m)
 }
 
 // The read-back of a remesh, from the output mesh alone.
-template <typename InputMesh>
-void check_remesh(const InputMesh& input, const Surface_mesh& in_sm, const Surface_mesh& out, const SMDF::Grid_tessellation_status& st,
-                  int sides, const std::map<int, std::size_t>& expected_irregular, double expected_faces, const std::string& what)
+typedef CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_face_graph_triangle_primitive<Surface_mesh>>> Input_tree;
+
+// The faces of `out` flipped against the input surface `in_sm` (`tree` over its faces): a face's
+// area vector against the input's normals under its corners, computed here independently of the
+// library's test.
+std::size_t flipped_faces(const Surface_mesh& in_sm, const Surface_mesh& out, const Input_tree& tree)
 {
-  (void)input;
-  SMDF_CHECK_MSG(st.success, what << ": " << st.message);
-  if(!st.success) return;
-  std::size_t wrong_size = 0;
-  for(auto f : faces(out)) wrong_size += CGAL::halfedges_around_face(halfedge(f, out), out).size() != std::size_t(sides);
-  const long chi_in = long(num_vertices(in_sm)) - long(num_edges(in_sm)) + long(num_faces(in_sm));
-  const long chi_out = long(num_vertices(out)) - long(num_edges(out)) + long(num_faces(out));
-  std::map<int, std::size_t> irregular;
-  const int regular = sides == 4 ? 4 : 6;
-  for(auto v : vertices(out)) {   // interior vertices (those on an open input's boundary have fewer faces)
-    const int d = int(degree(v, out));
-    if(d != regular && !CGAL::is_border(v, out)) ++irregular[d];
-  }
-  SMDF_CHECK_MSG(wrong_size == 0 && CGAL::is_valid_polygon_mesh(out), what << ": all faces have " << sides << " sides (" << wrong_size << " do not)");
-  SMDF_CHECK_MSG(chi_out == chi_in, what << ": Euler characteristic " << chi_out << ", input " << chi_in);
-  SMDF_CHECK_MSG(irregular == expected_irregular, what << ": the irregular vertices are those of the cones (" << irregular.size() << " valences)");
-  SMDF_CHECK_MSG(std::abs(double(num_faces(out)) - expected_faces) < 1e-6 * expected_faces,
-                 what << ": " << num_faces(out) << " faces, area / face area = " << expected_faces);
-  // every output vertex on the input surface; no face flipped against the input's normal
-  typedef CGAL::AABB_face_graph_triangle_primitive<Surface_mesh> Primitive;
-  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> Tree;
-  Tree tree(faces(in_sm).first, faces(in_sm).second, in_sm);
-  double far = 0;
   std::size_t flipped = 0;
-  for(auto v : vertices(out)) far = std::max(far, std::sqrt(tree.squared_distance(out.point(v))));
   for(auto f : faces(out)) {   // the face's area vector against the input's normals under its corners
     K::Vector_3 n(0, 0, 0), under(0, 0, 0);
     std::vector<K::Point_3> p;
@@ -211,6 +190,36 @@ void check_remesh(const InputMesh& input, const Surface_mesh& in_sm, const Surfa
     }
     flipped += n * under <= 0;
   }
+  return flipped;
+}
+
+template <typename InputMesh>
+void check_remesh(const InputMesh& input, const Surface_mesh& in_sm, const Surface_mesh& out, const SMDF::Grid_tessellation_status& st,
+                  int sides, const std::map<int, std::size_t>& expected_irregular, double expected_faces, const std::string& what)
+{
+  (void)input;
+  SMDF_CHECK_MSG(st.success, what << ": " << st.message);
+  if(!st.success) return;
+  std::size_t wrong_size = 0;
+  for(auto f : faces(out)) wrong_size += CGAL::halfedges_around_face(halfedge(f, out), out).size() != std::size_t(sides);
+  const long chi_in = long(num_vertices(in_sm)) - long(num_edges(in_sm)) + long(num_faces(in_sm));
+  const long chi_out = long(num_vertices(out)) - long(num_edges(out)) + long(num_faces(out));
+  std::map<int, std::size_t> irregular;
+  const int regular = sides == 4 ? 4 : 6;
+  for(auto v : vertices(out)) {   // interior vertices (those on an open input's boundary have fewer faces)
+    const int d = int(degree(v, out));
+    if(d != regular && !CGAL::is_border(v, out)) ++irregular[d];
+  }
+  SMDF_CHECK_MSG(wrong_size == 0 && CGAL::is_valid_polygon_mesh(out), what << ": all faces have " << sides << " sides (" << wrong_size << " do not)");
+  SMDF_CHECK_MSG(chi_out == chi_in, what << ": Euler characteristic " << chi_out << ", input " << chi_in);
+  SMDF_CHECK_MSG(irregular == expected_irregular, what << ": the irregular vertices are those of the cones (" << irregular.size() << " valences)");
+  SMDF_CHECK_MSG(std::abs(double(num_faces(out)) - expected_faces) < 1e-6 * expected_faces,
+                 what << ": " << num_faces(out) << " faces, area / face area = " << expected_faces);
+  // every output vertex on the input surface; no face flipped against the input's normal
+  Input_tree tree(faces(in_sm).first, faces(in_sm).second, in_sm);
+  double far = 0;
+  for(auto v : vertices(out)) far = std::max(far, std::sqrt(tree.squared_distance(out.point(v))));
+  const std::size_t flipped = flipped_faces(in_sm, out, tree);
   // the output read back by CGAL's own readers (OFF and OBJ, Surface_mesh and Polyhedron_3)
   for(const char* format : {"off", "obj"}) {
     std::stringstream file;
@@ -652,9 +661,7 @@ void obelisk(const std::string& dir)
     SMDF_CHECK_MSG(chi == 2 && CGAL::is_valid_polygon_mesh(out), what << ": a valid sphere (chi " << chi << ")");
     SMDF_CHECK_MSG(valence[3] == 4 && valence[5] == 4 * n1 && valence[6] == 4 * tri_inner + 4 * n1 && st.unexpected_valences == 0,
                    what << ": valences 3 (base corners), 5 (ring), 6 (pyramid): " << valence[3] << ", " << valence[5] << ", " << valence[6]);
-    typedef CGAL::AABB_face_graph_triangle_primitive<Surface_mesh> Primitive;
-    typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> Tree;
-    Tree tree(faces(mesh).first, faces(mesh).second, mesh);
+    Input_tree tree(faces(mesh).first, faces(mesh).second, mesh);
     double far = 0;
     for(auto v : vertices(out)) far = std::max(far, std::sqrt(tree.squared_distance(out.point(v))));
     SMDF_CHECK_MSG(far < 1e-12, what << ": every output vertex on the input surface (" << far << ")");
@@ -666,18 +673,37 @@ void obelisk(const std::string& dir)
                        pc.max_side_deviation < 1e-9 && pc.edges.size() == 16 && std::count(pc.sides.begin(), pc.sides.end(), n) == 16,
                    what << ": the metric read back as P's faces of " << n << " edges a side (angles off by " << pc.max_angle_deviation
                         << ", sides by " << pc.max_side_deviation << ", " << pc.curved_vertices << " vertices not flat)");
-    if(n == 20) {   // fine (issue 13: area within 1 %), inverted faces unfolded along the surface, P's corners held
+    if(n == 20) {   // fine (issue 13: area within 1 %), inverted faces unfolded along the surface
       std::size_t left = st.inverted_faces;
       if(st.inverted_faces > 0) {
+        // as smdf remesh: P's corners held first; if faces next to one stay inverted (the apex
+        // on Spot's horn tip, which the flat metric shrinks below a face), the corners slide too
         auto held = out.add_property_map<Surface_mesh::Vertex_index, bool>("v:held", false).first;
+        std::vector<Surface_mesh::Vertex_index> at_corner;
         for(auto v : vertices(out))
-          for(auto c : corners) held[v] = held[v] || out.point(v) == mesh.point(c);
-        const SMDF::Untangle_status us = SMDF::untangle_remesh(mesh, out, SMDF::parameters::vertex_is_constrained_map(held));
-        left = us.inverted_after;
-        std::cout << what << ": untangling " << us.inverted_before << " -> " << us.inverted_after << " (" << us.straddling_faces
-                  << " across a thin part or tip, " << us.faces_at_held_vertices << " next to a cone)" << std::endl;
+          for(auto c : corners)
+            if(out.point(v) == mesh.point(c)) { held[v] = true; at_corner.push_back(v); }
+        SMDF_CHECK_MSG(at_corner.size() == 9, what << ": P's nine corners are output vertices (" << at_corner.size() << ")");
+        auto degrees = [&out] { std::vector<std::size_t> d; for(auto v : vertices(out)) d.push_back(degree(v, out)); return d; };
+        const std::vector<std::size_t> valence_before = degrees();
+        SMDF::Untangle_status us = SMDF::untangle_remesh(mesh, out, SMDF::parameters::vertex_is_constrained_map(held));
+        std::cout << what << ": untangling, corners held: " << us.inverted_before << " -> " << us.inverted_after << " (" << us.straddling_faces
+                  << " across a thin part or tip, " << us.faces_at_held_vertices << " next to a corner)" << std::endl;
         SMDF_CHECK_MSG(us.success || (us.moved_vertices == 0 && us.inverted_after > 0 && us.message.find("left as the grid made it") != std::string::npos),
                        what << ": untangled, or the failure reported with the grid unmoved: " << us.message);
+        if(!us.success && us.faces_at_held_vertices > 0) {
+          for(auto v : at_corner) held[v] = false;
+          us = SMDF::untangle_remesh(mesh, out, SMDF::parameters::vertex_is_constrained_map(held));
+          std::cout << what << ": untangling, corners free: " << us.inverted_before << " -> " << us.inverted_after << ", "
+                    << us.moved_vertices << " moved, at most " << us.max_displacement << " edge lengths" << std::endl;
+        }
+        left = us.inverted_after;
+        SMDF_CHECK_MSG(us.success && left == 0 && degrees() == valence_before,
+                       what << ": untangled, connectivity kept: " << us.message);
+        double far2 = 0;
+        for(auto v : vertices(out)) far2 = std::max(far2, std::sqrt(tree.squared_distance(out.point(v))));
+        SMDF_CHECK_MSG(far2 < 1e-12, what << ": after untangling every output vertex still on the input surface (" << far2 << ")");
+        SMDF_CHECK_MSG(flipped_faces(mesh, out, tree) == 0, what << ": the independent check finds no inverted face after untangling");
       }
       const double r = polygon_area(out) / surface_area(mesh);
       SMDF_CHECK_MSG(std::abs(r - 1) < 0.01, what << ": area within 1 % of the input's (" << r << "; " << st.inverted_faces << " inverted in the grid, "
@@ -975,9 +1001,7 @@ SMDF::Delaunay_refinement_status check_refinement(const Input& input, const Surf
     moved = std::max(moved, std::sqrt(CGAL::squared_distance(in_sm.point(v), out.point(v))));
     scale = std::max(scale, std::sqrt((in_sm.point(v) - CGAL::ORIGIN).squared_length()));
   }
-  typedef CGAL::AABB_face_graph_triangle_primitive<Surface_mesh> Primitive;
-  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> Tree;
-  Tree tree(faces(in_sm).first, faces(in_sm).second, in_sm);
+  Input_tree tree(faces(in_sm).first, faces(in_sm).second, in_sm);
   for(auto v : vertices(out)) far = std::max(far, std::sqrt(tree.squared_distance(out.point(v))));
   std::size_t i = 0;
   for(auto f : faces(out)) {

@@ -71,17 +71,31 @@ Json compatibility_json(const SMDF::Polyhedron_compatibility& pc)
 }
 
 // The inverted faces of a remesh unfolded along the input surface (untangle_remesh()), the
-// cones (vertices whose faces do not fill 2 pi in the grid's angles) held; `ok` says whether
-// none is left, `left` how many are (on entry: the tessellation's count), `message` why. Returns
-// the JSON of what was done.
+// cones (vertices whose faces do not fill 2 pi in the grid's angles) held; where faces next to a
+// cone stay inverted (a cone on a sharp tip, which the metric shrinks to less than a face), a
+// second pass lets the cones slide along the surface too, keeping their valences. `ok` says
+// whether no inverted face is left, `left` how many are (on entry: the tessellation's count),
+// `message` why. Returns the JSON of what was done.
 Json untangle_inverted(const Mesh& input, Mesh& remesh, bool& ok, std::size_t& left, std::string& message)
 {
   const std::size_t grid_inverted = left;
   const std::vector<double> curvature = grid_curvatures(remesh);
   auto held = remesh.add_property_map<vertex_descriptor, bool>("v:smdf_cone_held", false).first;
-  for(vertex_descriptor v : vertices(remesh)) held[v] = std::abs(curvature[index(v)]) > 1e-9;
-  const SMDF::Untangle_status us = SMDF::untangle_remesh(input, remesh, SMDF::parameters::vertex_is_constrained_map(held));
+  std::vector<std::pair<vertex_descriptor, K::Point_3>> cones;
+  for(vertex_descriptor v : vertices(remesh)) {
+    held[v] = std::abs(curvature[index(v)]) > 1e-9;
+    if(held[v]) cones.emplace_back(v, remesh.point(v));
+  }
+  SMDF::Untangle_status us = SMDF::untangle_remesh(input, remesh, SMDF::parameters::vertex_is_constrained_map(held));
+  const bool cones_held = us.success || us.faces_at_held_vertices == 0;
+  if(!cones_held) {   // a failed untangling moved nothing: start again from the grid, the cones free
+    for(const auto& c : cones) held[c.first] = false;
+    const SMDF::Untangle_status free = SMDF::untangle_remesh(input, remesh, SMDF::parameters::vertex_is_constrained_map(held));
+    if(free.success || free.inverted_after < us.inverted_after) us = free;
+  }
   remesh.remove_property_map(held);
+  std::size_t cones_moved = 0;
+  for(const auto& c : cones) cones_moved += remesh.point(c.first) != c.second;
   ok = us.success;
   left = us.success ? 0 : grid_inverted;   // a failed untangling moves nothing
   message = us.message;
@@ -90,6 +104,7 @@ Json untangle_inverted(const Mesh& input, Mesh& remesh, bool& ok, std::size_t& l
   u["inverted_before"] = us.inverted_before;    // the untangler's (normals of the faces nearest the corners)
   u["inverted_after"] = us.inverted_after;
   u["moved_vertices"] = us.moved_vertices;
+  u["cones_moved"] = cones_moved;               // 0 unless holding the cones left faces inverted
   u["max_displacement_over_edge_length"] = us.max_displacement;
   u["straddling_faces"] = us.straddling_faces;
   u["faces_at_held_vertices"] = us.faces_at_held_vertices;
@@ -335,6 +350,29 @@ Json run_remesh(const Args& args)
       bool success = rs.success;
       std::string failure = rs.message;
       std::size_t inverted = rs.inverted_faces;
+      // irregular: a vertex whose faces do not fill 2 pi in the grid's angles (4 squares, 6
+      // triangles, or 2 squares and 3 triangles), a cone of curvature 2 pi - sum; with the
+      // corner of P at the same point (before untangling, which may let a cone slide)
+      std::map<std::array<double, 3>, int> corner_at;
+      for(vertex_descriptor v : corners) {
+        const K::Point_3& q = mesh.point(v);
+        corner_at[{{q.x(), q.y(), q.z()}}] = int(index(v));
+      }
+      Json irr = Json::array();
+      if(num_faces(remesh) > 0) {
+        const std::vector<double> curvature = grid_curvatures(remesh);
+        for(auto v : vertices(remesh)) {
+          if(is_border(v, remesh) || std::abs(curvature[index(v)]) < 1e-9) continue;
+          Json o = Json::object();
+          o["vertex"] = index(v);
+          const K::Point_3& p = remesh.point(v);
+          const auto it = corner_at.find({{p.x(), p.y(), p.z()}});
+          if(it != corner_at.end()) o["cone"] = it->second; else o["cone"] = Json();
+          o["valence"] = degree(v, remesh);
+          o["curvature"] = curvature[index(v)];
+          irr.push_back(std::move(o));
+        }
+      }
       if(num_faces(remesh) > 0 && inverted > 0 && untangle) {   // every other check passed: unfold them
         out["untangle"] = untangle_inverted(mesh, remesh, success, inverted, untangle_message);
         if(!success) failure += "; untangling: " + untangle_message;
@@ -349,27 +387,6 @@ Json run_remesh(const Args& args)
         out["faces_by_size"] = std::move(sizes);
         out["valences"] = std::move(val);
         out["unexpected_valences"] = rs.unexpected_valences;
-        // irregular: a vertex whose faces do not fill 2 pi in the grid's angles (4 squares, 6
-        // triangles, or 2 squares and 3 triangles), a cone of curvature 2 pi - sum; with the
-        // corner of P at the same point
-        std::map<std::array<double, 3>, int> corner_at;
-        for(vertex_descriptor v : corners) {
-          const K::Point_3& q = mesh.point(v);
-          corner_at[{{q.x(), q.y(), q.z()}}] = int(index(v));
-        }
-        Json irr = Json::array();
-        const std::vector<double> curvature = grid_curvatures(remesh);
-        for(auto v : vertices(remesh)) {
-          if(is_border(v, remesh) || std::abs(curvature[index(v)]) < 1e-9) continue;
-          Json o = Json::object();
-          o["vertex"] = index(v);
-          const K::Point_3& p = remesh.point(v);
-          const auto it = corner_at.find({{p.x(), p.y(), p.z()}});
-          if(it != corner_at.end()) o["cone"] = it->second; else o["cone"] = Json();
-          o["valence"] = degree(v, remesh);
-          o["curvature"] = curvature[index(v)];
-          irr.push_back(std::move(o));
-        }
         out["irregular_vertices"] = std::move(irr);
         out["inverted_faces"] = inverted;
         out["quality"] = remesh_quality(remesh);
@@ -536,7 +553,7 @@ Command remesh_command()
            {"knot-svg", "FILE", "write a woven Celtic knot along the quad remesh's medial graph (Lai et al. Fig. 13)"},
            {"segments", "relaxed|ricci", "with --polycube: how the pieces between the polyhedron's edges are mapped onto its faces: relaxed (default: stretch-minimising Tutte embedding relaxed as rigidly as possible, grid cells of even size) or ricci (Lai et al.: each piece flattened by Ricci flow to its polygon, conformal; the two pieces beside an edge path disagree on its vertices, whose mean is taken: max_side_parameter_gap)"},
            {"relaxation", "K", "with --polycube: one round of stretch-minimising reweighting, then at most K steps of as-rigid-as-possible relaxation of the polyhedron's charts (fewer once a triangle about to fold throttles a step below 1 %) and 3K sweeps across its edges near the paths (default 10; 0: the plain Tutte embedding)"},
-           {"no-untangle", "", "keep the grid's faces that come out inverted on the surface (default: their vertices are moved along the input until none is, the cones held; reported as untangle)"},
+           {"no-untangle", "", "keep the grid's faces that come out inverted on the surface (default: their vertices are moved along the input until none is, the cones held, or slid along the surface where holding them leaves faces inverted; reported as untangle)"},
            {"progress", "", "report each stage on stderr with the elapsed time"}},
           "regular quad or triangle remesh from a flat cone metric",
           "Lai et al. 2010, section 5: develops a flat cone metric of the mesh (its own edge lengths,\n"
@@ -567,8 +584,10 @@ Command remesh_command()
           "irregular_vertices: [{vertex, cone, valence}], inverted_faces (after untangling),\n"
           "untangle (when the grid had inverted faces: {grid_inverted_faces, inverted_before,\n"
           "inverted_after (by the normals of the input faces nearest the corners), moved_vertices,\n"
-          "max_displacement_over_edge_length, straddling_faces (left across a thin part or tip),\n"
-          "faces_at_held_vertices (left next to a cone, which never moves), rounds}; a failed\n"
+          "cones_moved (0 unless holding the cones left faces inverted: then a second pass lets them\n"
+          "slide along the surface, valences kept), max_displacement_over_edge_length,\n"
+          "straddling_faces (left across a thin part or tip), faces_at_held_vertices (left next to a\n"
+          "cone held), rounds}; a failed\n"
           "untangling moves no vertex), quality:\n"
           "{min_corner_angle_deg, max_corner_angle_deg, min_scaled_jacobian, mean_scaled_jacobian},\n"
           "distance_over_edge_length: {remesh_to_input (largest distance of the remesh's vertices,\n"

@@ -16,8 +16,8 @@ run remesh "$spot" --polycube box --segments ricci --faces 2000 --out /tmp/smdf_
 # triangles through the octahedron: six cones of valence 4 (the grid's 5 inverted triangles are
 # unfolded along the surface)
 run remesh "$spot" --polycube octahedron --faces 1200 --out /tmp/smdf_spot_triangles.obj --svg "$here/spot_remesh_octahedron.svg" "${view[@]}"
-# quads and triangles through the obelisk of Lai et al. Fig. 1c (one face next to the apex cone
-# comes out inverted: the tool exits 3 and still writes the remesh)
+# quads and triangles through the obelisk of Lai et al. Fig. 1c (the grid's one inverted face, next
+# to the apex on a horn's tip, is unfolded by letting the apex slide)
 run remesh "$spot" --polycube obelisk --grid mixed --faces 1500 --out /tmp/smdf_spot_obelisk.obj --svg "$here/spot_remesh_obelisk.svg" "${view[@]}"
 # a woven Celtic knot along the box remesh's medial graph (Lai et al. Fig. 13)
 run remesh "$spot" --polycube box --faces 700 --out /tmp/smdf_spot_knot.obj --knot-svg "$here/spot_celtic_knot.svg" "${view[@]}"
