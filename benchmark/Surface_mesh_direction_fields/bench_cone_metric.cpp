@@ -38,10 +38,13 @@
 //                           curvature tolerance 1e-6, as smdf remesh: the paths only need its
 //                           conformal factors), the box polycube metric, development and quad
 //                           tessellation with about as many quads as input faces, and, as smdf
-//                           remesh does, untangle_remesh() when quads come out inverted.
+//                           remesh does, untangle_remesh() when quads come out inverted or
+//                           folded at a corner.
 //                           Counters metric_s, compensation_s, tessellation_s, untangle_s,
 //                           output_quads, grid_inverted_faces, inverted_faces (after
-//                           untangling), read_back_ok (valences and no inverted face).
+//                           untangling), folded_quads, folded_quads_after (quads folded at a
+//                           corner, untangle_remesh()'s count; 0 when it did not run),
+//                           read_back_ok (valences and no inverted face).
 //                           Targets (issue #13): <= 1 s at 20k, <= 10 s at 400k (sizes 10k,
 //                           20k, 100k, 400k and 433k).
 #include "benchmark_util.h"
@@ -299,6 +302,22 @@ void BM_field_design(benchmark::State& state)
   }
 }
 
+// Whether some quad of `m` has a scaled Jacobian of at most 0 at a corner (against its own area
+// vector), as smdf remesh checks before untangling.
+bool has_nonconvex_quad(const Mesh& m)
+{
+  for(auto f : faces(m)) {
+    std::vector<Mesh::Point> p;
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, m), m)) p.push_back(m.point(target(h, m)));
+    if(p.size() != 4) continue;
+    Mesh::Point::R::Vector_3 n(0, 0, 0);
+    for(std::size_t i = 0; i < 4; ++i) n = n + CGAL::cross_product(p[i] - CGAL::ORIGIN, p[(i + 1) % 4] - CGAL::ORIGIN);
+    for(std::size_t i = 0; i < 4; ++i)
+      if(CGAL::cross_product(p[(i + 1) % 4] - p[i], p[(i + 3) % 4] - p[i]) * n <= 0) return true;
+  }
+  return false;
+}
+
 void BM_remesh_pipeline(benchmark::State& state)
 {
   const smdf_bench::Bench_mesh* b = nullptr;
@@ -316,7 +335,7 @@ void BM_remesh_pipeline(benchmark::State& state)
     }
     const double h = std::sqrt(area / double(num_faces(b->mesh)));   // about as many quads as input faces
     double metric_s = 0, compensation_s = 0, tessellation_s = 0, untangle_s = 0;
-    std::size_t quads = 0, inverted = 0, grid_inverted = 0, flips = 0;
+    std::size_t quads = 0, inverted = 0, grid_inverted = 0, flips = 0, folded_before = 0, folded_after = 0;
     bool ok = true;
     std::string message;
     smdf_bench::Memory_probe mem;
@@ -349,12 +368,16 @@ void BM_remesh_pipeline(benchmark::State& state)
       inverted = st.inverted_faces;
       grid_inverted = st.inverted_faces;
       bool success = st.success;
-      if(!st.success && st.inverted_faces > 0) {   // as smdf remesh: unfold them along the surface, the cones held
+      // as smdf remesh: the inverted faces unfolded along the surface, the cones held, and the
+      // quads folded at a corner (also when those are all the grid has)
+      if((!st.success && st.inverted_faces > 0) || (st.success && has_nonconvex_quad(out))) {
         t0 = std::chrono::steady_clock::now();
         auto held = out.add_property_map<Vertex, bool>("v:bench_held", false).first;
         for(const auto& iv : st.irregular_vertices) held[Vertex(Mesh::size_type(iv.first))] = true;
         const SMDF::Untangle_status us = SMDF::untangle_remesh(work, out, SMDF::parameters::vertex_is_constrained_map(held));
         untangle_s += since(t0);
+        folded_before = us.folded_before;
+        folded_after = us.folded_after;
         success = us.success;
         inverted = us.success ? 0 : st.inverted_faces;
         if(!us.success) message = us.message;
@@ -371,6 +394,8 @@ void BM_remesh_pipeline(benchmark::State& state)
     state.counters["untangle_s"] = benchmark::Counter(untangle_s, benchmark::Counter::kAvgIterations);
     state.counters["grid_inverted_faces"] = double(grid_inverted);
     state.counters["inverted_faces"] = double(inverted);
+    state.counters["folded_quads"] = double(folded_before);          // folded at a corner in the grid ...
+    state.counters["folded_quads_after"] = double(folded_after);     // ... and after untangling
     state.counters["edge_flips"] = double(flips);
     state.counters["read_back_ok"] = ok ? 1 : 0;
     if(!ok) state.SetLabel(b->source + " READ-BACK FAILED: " + message);

@@ -73,7 +73,9 @@ Json compatibility_json(const SMDF::Polyhedron_compatibility& pc)
 // The inverted faces of a remesh unfolded along the input surface (untangle_remesh()), the
 // cones (vertices whose faces do not fill 2 pi in the grid's angles) held; where faces next to a
 // cone stay inverted (a cone on a sharp tip, which the metric shrinks to less than a face), a
-// second pass lets the cones slide along the surface too, keeping their valences. `ok` says
+// second pass lets the cones slide along the surface too, keeping their valences. Once none is
+// inverted, quads folded at a corner are unfolded as far as moves along the surface can (best
+// effort: `ok` does not depend on it). `ok` says
 // whether no inverted face is left, `left` how many are (on entry: the tessellation's count),
 // `message` why. Returns the JSON of what was done.
 Json untangle_inverted(const Mesh& input, Mesh& remesh, bool& ok, std::size_t& left, std::string& message)
@@ -105,6 +107,8 @@ Json untangle_inverted(const Mesh& input, Mesh& remesh, bool& ok, std::size_t& l
   u["inverted_after"] = us.inverted_after;
   u["moved_vertices"] = us.moved_vertices;
   u["cones_moved"] = cones_moved;               // 0 unless holding the cones left faces inverted
+  u["folded_before"] = us.folded_before;        // quads folded at a corner against the input's normals ...
+  u["folded_after"] = us.folded_after;          // ... and after the moves
   u["max_displacement_over_edge_length"] = us.max_displacement;
   u["straddling_faces"] = us.straddling_faces;
   u["faces_at_held_vertices"] = us.faces_at_held_vertices;
@@ -373,7 +377,8 @@ Json run_remesh(const Args& args)
           irr.push_back(std::move(o));
         }
       }
-      if(num_faces(remesh) > 0 && inverted > 0 && untangle) {   // every other check passed: unfold them
+      // every other check passed: unfold the inverted faces, and the quads folded at a corner
+      if(num_faces(remesh) > 0 && untangle && (inverted > 0 || (success && nonconvex_quads(remesh) > 0))) {
         out["untangle"] = untangle_inverted(mesh, remesh, success, inverted, untangle_message);
         if(!success) failure += "; untangling: " + untangle_message;
         timings["untangle_s"] = clock.lap();
@@ -496,7 +501,8 @@ Json run_remesh(const Args& args)
   bool success = st.success;
   std::string failure = st.message;
   std::size_t inverted = st.inverted_faces;
-  if(num_faces(remesh) > 0 && inverted > 0 && untangle) {   // every other check passed: unfold them
+  // every other check passed: unfold the inverted faces, and the quads folded at a corner
+  if(num_faces(remesh) > 0 && untangle && (inverted > 0 || (success && nonconvex_quads(remesh) > 0))) {
     stage("untangling inverted faces");
     out["untangle"] = untangle_inverted(mesh, remesh, success, inverted, untangle_message);
     if(!success) failure += "; untangling: " + untangle_message;
@@ -553,7 +559,7 @@ Command remesh_command()
            {"knot-svg", "FILE", "write a woven Celtic knot along the quad remesh's medial graph (Lai et al. Fig. 13)"},
            {"segments", "relaxed|ricci", "with --polycube: how the pieces between the polyhedron's edges are mapped onto its faces: relaxed (default: stretch-minimising Tutte embedding relaxed as rigidly as possible, grid cells of even size) or ricci (Lai et al.: each piece flattened by Ricci flow to its polygon, conformal; the two pieces beside an edge path disagree on its vertices, whose mean is taken: max_side_parameter_gap)"},
            {"relaxation", "K", "with --polycube: one round of stretch-minimising reweighting, then at most K steps of as-rigid-as-possible relaxation of the polyhedron's charts (fewer once a triangle about to fold throttles a step below 1 %) and 3K sweeps across its edges near the paths (default 10; 0: the plain Tutte embedding)"},
-           {"no-untangle", "", "keep the grid's faces that come out inverted on the surface (default: their vertices are moved along the input until none is, the cones held, or slid along the surface where holding them leaves faces inverted; reported as untangle)"},
+           {"no-untangle", "", "keep the grid's faces that come out inverted on the surface (default: their vertices are moved along the input until none is, the cones held, or slid along the surface where holding them leaves faces inverted, then quads folded at a corner unfolded as far as such moves can; reported as untangle)"},
            {"progress", "", "report each stage on stderr with the elapsed time"}},
           "regular quad or triangle remesh from a flat cone metric",
           "Lai et al. 2010, section 5: develops a flat cone metric of the mesh (its own edge lengths,\n"
@@ -582,14 +588,17 @@ Command remesh_command()
           "refinement's when delaunay_refinement is present), vertices, faces_by_size, valences\n"
           "(interior vertices),\n"
           "irregular_vertices: [{vertex, cone, valence}], inverted_faces (after untangling),\n"
-          "untangle (when the grid had inverted faces: {grid_inverted_faces, inverted_before,\n"
+          "untangle (when the grid had inverted faces or nonconvex quads: {grid_inverted_faces, inverted_before,\n"
           "inverted_after (by the normals of the input faces nearest the corners), moved_vertices,\n"
           "cones_moved (0 unless holding the cones left faces inverted: then a second pass lets them\n"
-          "slide along the surface, valences kept), max_displacement_over_edge_length,\n"
+          "slide along the surface, valences kept), folded_before, folded_after (quads folded at a\n"
+          "corner against the input's normals; unfolded once none is inverted, best effort; untangle\n"
+          "also runs for them alone), max_displacement_over_edge_length,\n"
           "straddling_faces (left across a thin part or tip), faces_at_held_vertices (left next to a\n"
           "cone held), rounds}; a failed\n"
           "untangling moves no vertex), quality:\n"
-          "{min_corner_angle_deg, max_corner_angle_deg, min_scaled_jacobian, mean_scaled_jacobian},\n"
+          "{min_corner_angle_deg, max_corner_angle_deg, min_scaled_jacobian, mean_scaled_jacobian,\n"
+          "nonconvex_quads (a scaled Jacobian of at most 0 at some corner)},\n"
           "distance_over_edge_length: {remesh_to_input (largest distance of the remesh's vertices,\n"
           "edge midpoints and face-fan centroids to the input), input_to_remesh (of the input's\n"
           "vertices to the remesh), vertices_to_input (of the remesh's vertices alone: 0 up to\n"

@@ -16,37 +16,61 @@
 
 namespace smdf_cli {
 
-// Corner angles (degrees) and, for quads, scaled Jacobians of the remesh.
-Json remesh_quality(const Mesh& out)
+namespace {
+
+// Calls corner(angle_deg, scaled_jacobian, quad) for every corner of every face of `out` (the
+// scaled Jacobian against the face's own area vector; 0 where that vanishes), then face_done(quad)
+// after the corners of each face; corners with a zero-length edge are skipped.
+template <typename Corner, typename Face>
+void for_each_corner(const Mesh& out, const Corner& corner, const Face& face_done)
 {
-  double amin = 360, amax = 0, jmin = 1, jsum = 0;
-  std::size_t jn = 0;
   for(face_descriptor f : faces(out)) {
     std::vector<K::Point_3> p;
     for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, out), out)) p.push_back(out.point(target(h, out)));
     K::Vector_3 n(0, 0, 0);
     for(std::size_t i = 0; i < p.size(); ++i) n = n + CGAL::cross_product(p[i] - CGAL::ORIGIN, p[(i + 1) % p.size()] - CGAL::ORIGIN);
+    const double nl = std::sqrt(n.squared_length());
     for(std::size_t i = 0; i < p.size(); ++i) {
       const K::Vector_3 a = p[(i + 1) % p.size()] - p[i], b = p[(i + p.size() - 1) % p.size()] - p[i];
       const double la = std::sqrt(a.squared_length()), lb = std::sqrt(b.squared_length());
       if(!(la > 0) || !(lb > 0)) continue;
       const double ang = std::atan2(std::sqrt(CGAL::cross_product(a, b).squared_length()), a * b) * 180 / CGAL_PI;
-      amin = (std::min)(amin, ang);
-      amax = (std::max)(amax, ang);
-      if(p.size() == 4) {
-        const double nl = std::sqrt(n.squared_length());
-        const double j = nl > 0 ? (CGAL::cross_product(a, b) * n) / (la * lb * nl) : 0.;
-        jmin = (std::min)(jmin, j);
-        jsum += j;
-        ++jn;
-      }
+      corner(ang, nl > 0 ? (CGAL::cross_product(a, b) * n) / (la * lb * nl) : 0., p.size() == 4);
     }
+    face_done(p.size() == 4);
   }
+}
+
+} // namespace
+
+Json remesh_quality(const Mesh& out)
+{
+  double amin = 360, amax = 0, jmin = 1, jsum = 0;
+  std::size_t jn = 0, nonconvex = 0;
+  bool folded = false;
+  for_each_corner(out, [&](double ang, double j, bool quad) {
+    amin = (std::min)(amin, ang);
+    amax = (std::max)(amax, ang);
+    if(!quad) return;
+    jmin = (std::min)(jmin, j);
+    jsum += j;
+    ++jn;
+    folded = folded || j <= 0;
+  }, [&](bool) { nonconvex += folded; folded = false; });
   Json q = Json::object();
   q["min_corner_angle_deg"] = amin;
   q["max_corner_angle_deg"] = amax;
-  if(jn) { q["min_scaled_jacobian"] = jmin; q["mean_scaled_jacobian"] = jsum / double(jn); }
+  if(jn) { q["min_scaled_jacobian"] = jmin; q["mean_scaled_jacobian"] = jsum / double(jn); q["nonconvex_quads"] = nonconvex; }
   return q;
+}
+
+std::size_t nonconvex_quads(const Mesh& out)
+{
+  std::size_t nonconvex = 0;
+  bool folded = false;
+  for_each_corner(out, [&](double, double j, bool quad) { folded = folded || (quad && j <= 0); },
+                  [&](bool) { nonconvex += folded; folded = false; });
+  return nonconvex;
 }
 
 // Two-sided distance between input and remesh, over the edge length: output vertices to the

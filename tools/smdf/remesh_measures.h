@@ -12,8 +12,12 @@
 namespace smdf_cli {
 
 // {min_corner_angle_deg, max_corner_angle_deg} (degrees) and, when the remesh has quads,
-// {min_scaled_jacobian, mean_scaled_jacobian} of their corners.
+// {min_scaled_jacobian, mean_scaled_jacobian, nonconvex_quads} of their corners (the last: quads
+// with a scaled Jacobian of at most 0 at some corner, against their own area vector).
 Json remesh_quality(const Mesh& out);
+
+// The number of quads whose scaled Jacobian is at most 0 at some corner (remesh_quality()).
+std::size_t nonconvex_quads(const Mesh& out);
 
 // {remesh_to_input, input_to_remesh, vertices_to_input}: the largest distance from the remesh
 // (its vertices, edge midpoints and face-fan centroids) to the input surface, from the input's

@@ -25,29 +25,28 @@ namespace CGAL {
 namespace Surface_mesh_direction_fields {
 namespace internal {
 
-// The squared distance from p to the triangle (a, b, c): the closest point found by the Voronoi
-// regions of its vertices, edges and interior (Ericson, Real-Time Collision Detection, 5.1.5).
-inline double squared_distance_to_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
+// The point of the triangle (a, b, c) closest to p, found by the Voronoi regions of its
+// vertices, edges and interior (Ericson, Real-Time Collision Detection, 5.1.5).
+inline Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
 {
   auto sub = [](const Vec3& x, const Vec3& y) { return Vec3{{x[0] - y[0], x[1] - y[1], x[2] - y[2]}}; };
   auto dot = [](const Vec3& x, const Vec3& y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; };
-  auto at = [&](double s, double t) {   // a + s (b - a) + t (c - a), then its squared distance to p
+  auto at = [&](double s, double t) {   // a + s (b - a) + t (c - a)
     Vec3 q;
     for(std::size_t d = 0; d < 3; ++d) q[d] = a[d] + s * (b[d] - a[d]) + t * (c[d] - a[d]);
-    const Vec3 e = sub(p, q);
-    return dot(e, e);
+    return q;
   };
   const Vec3 ab = sub(b, a), ac = sub(c, a), ap = sub(p, a);
   const double d1 = dot(ab, ap), d2 = dot(ac, ap);
-  if(d1 <= 0 && d2 <= 0) return dot(ap, ap);
+  if(d1 <= 0 && d2 <= 0) return a;
   const Vec3 bp = sub(p, b);
   const double d3 = dot(ab, bp), d4 = dot(ac, bp);
-  if(d3 >= 0 && d4 <= d3) return dot(bp, bp);
+  if(d3 >= 0 && d4 <= d3) return b;
   const double vc = d1 * d4 - d3 * d2;
   if(vc <= 0 && d1 >= 0 && d3 <= 0) return at(d1 / (d1 - d3), 0);
   const Vec3 cp = sub(p, c);
   const double d5 = dot(ab, cp), d6 = dot(ac, cp);
-  if(d6 >= 0 && d5 <= d6) return dot(cp, cp);
+  if(d6 >= 0 && d5 <= d6) return c;
   const double vb = d5 * d2 - d1 * d6;
   if(vb <= 0 && d2 >= 0 && d6 <= 0) return at(0, d2 / (d2 - d6));
   const double va = d3 * d6 - d5 * d4;
@@ -56,8 +55,16 @@ inline double squared_distance_to_triangle(const Vec3& p, const Vec3& a, const V
     return at(1 - w, w);
   }
   const double denom = va + vb + vc;
-  if(!(denom > 0)) return dot(ap, ap);   // a degenerate triangle: its first corner
+  if(!(denom > 0)) return a;   // a degenerate triangle: its first corner
   return at(vb / denom, vc / denom);
+}
+
+// The squared distance from p to the triangle (a, b, c).
+inline double squared_distance_to_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  const Vec3 q = closest_point_on_triangle(p, a, b, c);
+  const double e[3] = {p[0] - q[0], p[1] - q[1], p[2] - q[2]};
+  return e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
 }
 
 // The faces of a triangle mesh as indices, with their corners, unit normals and the faces
@@ -135,6 +142,13 @@ public:
       return normalized(sum);
     }
     return normal_[std::size_t(f)];
+  }
+
+  // The point of face f closest to p.
+  Vec3 closest_point(const Vec3& p, int f) const
+  {
+    const std::array<int, 3>& c = corner_[std::size_t(f)];
+    return closest_point_on_triangle(p, point_[std::size_t(c[0])], point_[std::size_t(c[1])], point_[std::size_t(c[2])]);
   }
 
   double squared_distance(const Vec3& p, int f) const

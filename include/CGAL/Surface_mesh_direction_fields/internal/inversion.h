@@ -7,6 +7,7 @@
 // Whether a face of a remesh is inverted with respect to the input surface, the one test of
 // tessellate_flat_metric(), polyhedron_remesh() and untangle_remesh().
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -91,6 +92,42 @@ double facing_input(std::size_t n, const Corner& corner, const Normal& normal)
   const double la = std::sqrt(area[0] * area[0] + area[1] * area[1] + area[2] * area[2]);
   const double lu = std::sqrt(under[0] * under[0] + under[1] * under[1] + under[2] * under[2]);
   return la > 0 && lu > 0 ? (area[0] * under[0] + area[1] * under[1] + area[2] * under[2]) / (la * lu) : -1.;
+}
+
+// How the polygon turns at its worst corner: the least, over its corners k, of the cosine between
+// (corner(k + 1) - corner(k)) x (corner(k - 1) - corner(k)) and either the polygon's own area
+// vector (the scaled Jacobian at k, as quality measures take it) or the sum of the input's
+// normals under the polygon (the same against the surface); -1 when an edge or a reference
+// vanishes. At most 0: the polygon is folded at that corner (a quad that is not convex, or an
+// inverted one). `at`, if given, receives that corner.
+template <typename Corner, typename Normal>
+double worst_corner_turn(std::size_t n, const Corner& corner, const Normal& normal, std::size_t* at = nullptr)
+{
+  if(at) *at = 0;
+  double area[3] = {0, 0, 0}, under[3] = {0, 0, 0};
+  for(std::size_t k = 0; k < n; ++k) {
+    const Vec3 p = corner(k), q = corner((k + 1) % n), m = normal(k);
+    area[0] += p[1] * q[2] - p[2] * q[1];
+    area[1] += p[2] * q[0] - p[0] * q[2];
+    area[2] += p[0] * q[1] - p[1] * q[0];
+    for(int d = 0; d < 3; ++d) under[d] += m[std::size_t(d)];
+  }
+  const double la = std::sqrt(area[0] * area[0] + area[1] * area[1] + area[2] * area[2]);
+  const double lu = std::sqrt(under[0] * under[0] + under[1] * under[1] + under[2] * under[2]);
+  if(!(la > 0) || !(lu > 0)) return -1.;
+  double worst = 1;
+  for(std::size_t k = 0; k < n; ++k) {
+    const Vec3 p = corner(k), q = corner((k + 1) % n), r = corner((k + n - 1) % n);
+    const double a[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]}, b[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
+    const double c[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    const double l = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]) * std::sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
+    if(!(l > 0)) { if(at) *at = k; return -1.; }
+    const double own = (c[0] * area[0] + c[1] * area[1] + c[2] * area[2]) / (l * la);
+    const double input = (c[0] * under[0] + c[1] * under[1] + c[2] * under[2]) / (l * lu);
+    const double turn = (std::min)(own, input);
+    if(turn < worst) { worst = turn; if(at) *at = k; }
+  }
+  return worst;
 }
 
 // The polygon is inverted when its area vector points against the sum of the normals under it.
