@@ -193,6 +193,24 @@ std::size_t flipped_faces(const Surface_mesh& in_sm, const Surface_mesh& out, co
   return flipped;
 }
 
+// The quads of `q` with a corner turning against the quad's own area vector (a scaled Jacobian
+// of at most 0 there): not convex, or inverted.
+std::size_t nonconvex_quads(const Surface_mesh& q)
+{
+  std::size_t count = 0;
+  for(auto f : faces(q)) {
+    std::vector<K::Point_3> p;
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, q), q)) p.push_back(q.point(target(h, q)));
+    if(p.size() != 4) continue;
+    K::Vector_3 n(0, 0, 0);
+    for(std::size_t i = 0; i < 4; ++i) n = n + CGAL::cross_product(p[i] - CGAL::ORIGIN, p[(i + 1) % 4] - CGAL::ORIGIN);
+    bool bad = false;
+    for(std::size_t i = 0; i < 4; ++i) bad = bad || CGAL::cross_product(p[(i + 1) % 4] - p[i], p[(i + 3) % 4] - p[i]) * n <= 0;
+    count += bad;
+  }
+  return count;
+}
+
 template <typename InputMesh>
 void check_remesh(const InputMesh& input, const Surface_mesh& in_sm, const Surface_mesh& out, const SMDF::Grid_tessellation_status& st,
                   int sides, const std::map<int, std::size_t>& expected_irregular, double expected_faces, const std::string& what)
@@ -258,6 +276,14 @@ void cube()
       Surface_mesh out;
       const auto st = SMDF::tessellate_flat_metric(mesh, dev, SMDF::SQUARE_GRID, h, out);
       check_remesh(mesh, mesh, out, st, 4, {{3, 8}}, 6 / (h * h), "cube n=" + std::to_string(n) + ", quads of " + std::to_string(h));
+      if(h == 0.25) {   // nothing inverted or folded: untangling leaves the remesh as it is
+        const Surface_mesh before = out;
+        const SMDF::Untangle_status us = SMDF::untangle_remesh(mesh, out);
+        bool same = true;
+        for(auto v : vertices(out)) same = same && out.point(v) == before.point(v);
+        SMDF_CHECK_MSG(us.success && us.inverted_before == 0 && us.folded_before == 0 && us.folded_after == 0 && us.moved_vertices == 0 && same,
+                       "cube n=" << n << ": untangling a remesh with no inverted or folded face moves nothing (" << us.moved_vertices << ")");
+      }
       const double ratio = polygon_area(out) / surface_area(mesh);
       SMDF_CHECK_MSG(std::abs(ratio - 1) < 1e-9, "cube n=" << n << ", quads of " << h << ": the remesh has the input's area (ratio " << ratio << ")");
     }
@@ -1162,6 +1188,12 @@ void untangling(const std::string& dir)
                         << " of 8 cones held, " << us.moved_vertices << " vertices moved, " << num_vertices(out) - unmoved << " found moved)");
     SMDF_CHECK_MSG(us.inverted_after == us.straddling_faces && us.success == (us.inverted_after == 0),
                    what << ": every face left inverted lies across a thin part (" << us.inverted_after << ", " << us.straddling_faces << "): " << us.message);
+    // then the quads folded at a corner: fewer, and the test's own count (against each quad's
+    // area vector) within the untangler's (which also counts corners against the input's normals)
+    const std::size_t nonconvex_after = nonconvex_quads(out);
+    SMDF_CHECK_MSG(!us.success || (us.folded_after * 4 < us.folded_before && nonconvex_after <= us.folded_after),
+                   what << ": quads folded at a corner " << us.folded_before << " -> " << us.folded_after << " (at most a quarter left), "
+                        << nonconvex_after << " by the test's count");
     outcome[quads] = us.inverted_after;
     std::cout << what << ": " << us.inverted_before << " inverted, " << us.inverted_after << " left (" << us.straddling_faces
               << " across a thin part), " << us.moved_vertices << " vertices moved by up to " << us.max_displacement << " edge lengths, "
@@ -1189,6 +1221,57 @@ void untangling(const std::string& dir)
   }
   SMDF_CHECK_MSG(outcome[8000] == 0 && outcome[2000] == 0, "bunny: untangled at 8000 quads (" << outcome[8000] << " left) and at 2000 ("
                                                                  << outcome[2000] << " left, across the ear)");
+}
+
+// Quads of a remesh folded at a corner (not convex, none inverted) on a flat input: a 6 x 6 grid
+// of quads on the square [0, 3]^2 (the input: 12 x 12 cells, two triangles each), three inner
+// vertices pushed into a neighbouring quad. untangle_remesh() counts the folded quads, unfolds
+// them along the plane and moves no border vertex; an independent count of corners with a
+// scaled Jacobian of at most 0 agrees before and finds none after.
+void folded_quads()
+{
+  Surface_mesh plane;
+  {
+    const int n = 12;
+    std::vector<Surface_mesh::Vertex_index> v;
+    for(int j = 0; j <= n; ++j)
+      for(int i = 0; i <= n; ++i) v.push_back(plane.add_vertex(K::Point_3(3. * i / n, 3. * j / n, 0)));
+    for(int j = 0; j < n; ++j)
+      for(int i = 0; i < n; ++i) {
+        const auto a = v[std::size_t(j * (n + 1) + i)], b = v[std::size_t(j * (n + 1) + i + 1)], c = v[std::size_t((j + 1) * (n + 1) + i + 1)],
+                   d = v[std::size_t((j + 1) * (n + 1) + i)];
+        plane.add_face(a, b, c);
+        plane.add_face(a, c, d);
+      }
+  }
+  Surface_mesh grid;
+  const int m = 6;
+  std::vector<Surface_mesh::Vertex_index> g;
+  for(int j = 0; j <= m; ++j)
+    for(int i = 0; i <= m; ++i) g.push_back(grid.add_vertex(K::Point_3(0.5 * i, 0.5 * j, 0)));
+  for(int j = 0; j < m; ++j)
+    for(int i = 0; i < m; ++i)
+      grid.add_face(g[std::size_t(j * (m + 1) + i)], g[std::size_t(j * (m + 1) + i + 1)], g[std::size_t((j + 1) * (m + 1) + i + 1)],
+                    g[std::size_t((j + 1) * (m + 1) + i)]);
+  // each pushed 0.35 along a diagonal, into the quad beyond it: that quad gets a reflex corner
+  for(const std::array<int, 2>& at : {std::array<int, 2>{{1, 1}}, std::array<int, 2>{{4, 2}}, std::array<int, 2>{{2, 4}}})
+    grid.point(g[std::size_t(at[1] * (m + 1) + at[0])]) = K::Point_3(0.5 * at[0] + 0.35, 0.5 * at[1] + 0.35, 0);
+  const std::size_t folded = nonconvex_quads(grid);
+  const Surface_mesh before = grid;
+  const SMDF::Untangle_status us = SMDF::untangle_remesh(plane, grid);
+  std::size_t border_moved = 0;
+  double off_plane = 0;
+  for(auto v : vertices(grid)) {
+    border_moved += CGAL::is_border(v, grid) && grid.point(v) != before.point(v);
+    off_plane = std::max(off_plane, std::abs(grid.point(v).z()));
+  }
+  SMDF_CHECK_MSG(folded >= 3 && us.inverted_before == 0 && us.folded_before == folded,
+                 "folded quads: the untangler counts the folded quads as the test does (" << us.folded_before << ", " << folded << "), none inverted");
+  SMDF_CHECK_MSG(us.success && us.folded_after == 0 && nonconvex_quads(grid) == 0 && us.moved_vertices > 0 && border_moved == 0 && off_plane == 0,
+                 "folded quads: all unfolded along the plane (" << us.folded_after << " left by its count, " << nonconvex_quads(grid) << " by the test's, "
+                                                             << us.moved_vertices << " moved, " << border_moved << " border vertices moved)");
+  std::cout << "folded quads on a plane: " << us.folded_before << " -> " << us.folded_after << ", " << us.moved_vertices << " vertices moved"
+            << std::endl;
 }
 
 // A polycube of three unit cubes in an L (Lai et al.: "some cone singularities ... are
@@ -1291,6 +1374,7 @@ int main()
   open_square();
   box_corner_order();
   l_shaped_polycube();
+  folded_quads();
   const std::string dir = smdf_test::shared_data_dir();
   if(!dir.empty()) { box_polycube(dir); ricci_flow_segments(dir); seam_relaxation(dir); flipped_flat_metric(dir); delaunay_refinement(dir); octahedron_polyhedron(dir); obelisk(dir); untangling(dir); }
   else std::cout << "../shared/data not found: box polycube on shared meshes skipped" << std::endl;
