@@ -467,8 +467,10 @@ def test_remesh(smdf, c, torus, tmp):
                   "smdf remesh spot --polycube box")
     if r:
         c.check(r.get("success") is True and r.get("valences", {}).get("3") == 8 and set(r["valences"]) == {"3", "4"}
-                and r.get("inverted_faces") == 0 and r["quality"]["min_scaled_jacobian"] > 0,
-                "remesh spot, box polycube: quads, 8 vertices of valence 3, none inverted (%r)" % r.get("quality"))
+                and r.get("inverted_faces") == 0 and r["quality"]["min_scaled_jacobian"] > 0
+                and r["quality"].get("nonconvex_quads") == 0 and "untangle" not in r,
+                "remesh spot, box polycube: quads, 8 vertices of valence 3, none inverted or folded, nothing to untangle (%r)"
+                % r.get("quality"))
         d = r.get("distance_over_edge_length", {})
         c.check(d.get("vertices_to_input", 1) < 1e-9 and 0 < d.get("remesh_to_input", 1) < 1 and 0 < d.get("input_to_remesh", 1) < 1,
                 "remesh spot, box polycube: vertices on the input, its faces and the input within one edge length of each other "
@@ -1500,9 +1502,12 @@ def test_shared_remesh_refinement(smdf, c, meshes, tmp):
     doc = json.loads(o.decode()) if o else {}
     u = doc.get("untangle", {})
     c.check(rc == 0 and doc.get("success") is True and u.get("inverted_before", 0) > 0 and u.get("inverted_after") == 0
-            and u.get("cones_moved") == 0 and doc.get("inverted_faces") == 0 and sorted(v["valence"] for v in doc.get("irregular_vertices", [])) == [3] * 8
+            and u.get("cones_moved") == 0 and doc.get("inverted_faces") == 0
+            and 4 * u.get("folded_after", 1) < u.get("folded_before", 0)
+            and doc.get("quality", {}).get("nonconvex_quads", 1 << 30) <= u.get("folded_after", -1) and sorted(v["valence"] for v in doc.get("irregular_vertices", [])) == [3] * 8
             and doc.get("distance_over_edge_length", {}).get("vertices_to_input", 1) < 1e-9,
-            "remesh bunny --polycube box: inverted quads untangled along the surface, cones kept (rc=%s, %r)" % (rc, u))
+            "remesh bunny --polycube box: inverted quads untangled along the surface, then most quads folded at a corner, "
+            "cones kept (rc=%s, %r)" % (rc, u))
     rc, o, err = smdf.run(["remesh", bunny, "--polycube", "box", "--faces", "8000", "--no-untangle", "--out", os.path.join(tmp, "b.off")])
     doc = json.loads(o.decode()) if o else {}
     c.check(rc == 3 and "untangle" not in doc and doc.get("inverted_faces", 0) > 0 and b"inverted" in err,
