@@ -75,22 +75,33 @@ Vec3 vertex_normal(const Arrays& m, int v, const Point3& point3)
   return normalized(sum);
 }
 
+// A polygon of `n` corners (`corner(k)`) and the input's unit normals under them (`normal(k)`):
+// its area vector and the sum of those normals, with their lengths.
+template <typename Corner, typename Normal>
+void area_and_normals(std::size_t n, const Corner& corner, const Normal& normal, Vec3& area, Vec3& under, double& la, double& lu)
+{
+  area = Vec3{{0, 0, 0}};
+  under = Vec3{{0, 0, 0}};
+  for(std::size_t k = 0; k < n; ++k) {
+    const Vec3 p = corner(k), q = corner((k + 1) % n), m = normal(k);
+    area[0] += p[1] * q[2] - p[2] * q[1];
+    area[1] += p[2] * q[0] - p[0] * q[2];
+    area[2] += p[0] * q[1] - p[1] * q[0];
+    for(std::size_t d = 0; d < 3; ++d) under[d] += m[d];
+  }
+  la = std::sqrt(area[0] * area[0] + area[1] * area[1] + area[2] * area[2]);
+  lu = std::sqrt(under[0] * under[0] + under[1] * under[1] + under[2] * under[2]);
+}
+
 // How a polygon of `n` corners faces the input, `corner(k)` its k-th corner and `normal(k)` the
 // input's unit normal under it: the cosine between its area vector and the sum of those normals
 // (-1 when either vanishes).
 template <typename Corner, typename Normal>
 double facing_input(std::size_t n, const Corner& corner, const Normal& normal)
 {
-  double area[3] = {0, 0, 0}, under[3] = {0, 0, 0};
-  for(std::size_t k = 0; k < n; ++k) {
-    const Vec3 p = corner(k), q = corner((k + 1) % n), m = normal(k);
-    area[0] += p[1] * q[2] - p[2] * q[1];
-    area[1] += p[2] * q[0] - p[0] * q[2];
-    area[2] += p[0] * q[1] - p[1] * q[0];
-    for(int d = 0; d < 3; ++d) under[d] += m[std::size_t(d)];
-  }
-  const double la = std::sqrt(area[0] * area[0] + area[1] * area[1] + area[2] * area[2]);
-  const double lu = std::sqrt(under[0] * under[0] + under[1] * under[1] + under[2] * under[2]);
+  Vec3 area, under;
+  double la, lu;
+  area_and_normals(n, corner, normal, area, under, la, lu);
   return la > 0 && lu > 0 ? (area[0] * under[0] + area[1] * under[1] + area[2] * under[2]) / (la * lu) : -1.;
 }
 
@@ -104,16 +115,9 @@ template <typename Corner, typename Normal>
 double worst_corner_turn(std::size_t n, const Corner& corner, const Normal& normal, std::size_t* at = nullptr)
 {
   if(at) *at = 0;
-  double area[3] = {0, 0, 0}, under[3] = {0, 0, 0};
-  for(std::size_t k = 0; k < n; ++k) {
-    const Vec3 p = corner(k), q = corner((k + 1) % n), m = normal(k);
-    area[0] += p[1] * q[2] - p[2] * q[1];
-    area[1] += p[2] * q[0] - p[0] * q[2];
-    area[2] += p[0] * q[1] - p[1] * q[0];
-    for(int d = 0; d < 3; ++d) under[d] += m[std::size_t(d)];
-  }
-  const double la = std::sqrt(area[0] * area[0] + area[1] * area[1] + area[2] * area[2]);
-  const double lu = std::sqrt(under[0] * under[0] + under[1] * under[1] + under[2] * under[2]);
+  Vec3 area, under;
+  double la, lu;
+  area_and_normals(n, corner, normal, area, under, la, lu);
   if(!(la > 0) || !(lu > 0)) return -1.;
   double worst = 1;
   for(std::size_t k = 0; k < n; ++k) {
