@@ -146,7 +146,6 @@ double surface_area(const Surface_mesh& m)
   return a;
 }
 
-// The read-back of a remesh, from the output mesh alone.
 typedef CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_face_graph_triangle_primitive<Surface_mesh>>> Input_tree;
 
 // The faces of `out` flipped against the input surface `in_sm` (`tree` over its faces): a face's
@@ -211,6 +210,7 @@ std::size_t nonconvex_quads(const Surface_mesh& q)
   return count;
 }
 
+// The read-back of a remesh, from the output mesh alone.
 template <typename InputMesh>
 void check_remesh(const InputMesh& input, const Surface_mesh& in_sm, const Surface_mesh& out, const SMDF::Grid_tessellation_status& st,
                   int sides, const std::map<int, std::size_t>& expected_irregular, double expected_faces, const std::string& what)
@@ -1272,6 +1272,18 @@ void folded_quads()
                                                              << us.moved_vertices << " moved, " << border_moved << " border vertices moved)");
   std::cout << "folded quads on a plane: " << us.folded_before << " -> " << us.folded_after << ", " << us.moved_vertices << " vertices moved"
             << std::endl;
+  // one vertex pushed 0.6 along the diagonal, past the far corner of its quad: that quad is
+  // inverted (and so also folded); untangled, nothing is left folded either
+  Surface_mesh inverted_grid = before;
+  inverted_grid.point(g[std::size_t(1 * (m + 1) + 1)]) = K::Point_3(0.5 + 0.6, 0.5 + 0.6, 0);
+  inverted_grid.point(g[std::size_t(2 * (m + 1) + 4)]) = K::Point_3(2.0, 1.0, 0);   // the other two back on the grid
+  inverted_grid.point(g[std::size_t(4 * (m + 1) + 2)]) = K::Point_3(1.0, 2.0, 0);
+  const SMDF::Untangle_status ui = SMDF::untangle_remesh(plane, inverted_grid);
+  SMDF_CHECK_MSG(ui.inverted_before >= 1 && ui.folded_before >= ui.inverted_before && ui.success && ui.folded_after == 0 &&
+                     nonconvex_quads(inverted_grid) == 0,
+                 "folded quads: an inverted quad untangled leaves nothing folded (" << ui.inverted_before << " inverted, folded "
+                                                                                 << ui.folded_before << " -> " << ui.folded_after << ", "
+                                                                                 << nonconvex_quads(inverted_grid) << " by the test's count)");
 }
 
 // A polycube of three unit cubes in an L (Lai et al.: "some cone singularities ... are

@@ -20,7 +20,8 @@ namespace {
 
 // Calls corner(angle_deg, scaled_jacobian, quad) for every corner of every face of `out` (the
 // scaled Jacobian against the face's own area vector; 0 where that vanishes), then face_done(quad)
-// after the corners of each face; corners with a zero-length edge are skipped.
+// after the corners of each face; a corner with a zero-length edge counts as angle 0, scaled
+// Jacobian -1 (a degenerate face).
 template <typename Corner, typename Face>
 void for_each_corner(const Mesh& out, const Corner& corner, const Face& face_done)
 {
@@ -33,7 +34,7 @@ void for_each_corner(const Mesh& out, const Corner& corner, const Face& face_don
     for(std::size_t i = 0; i < p.size(); ++i) {
       const K::Vector_3 a = p[(i + 1) % p.size()] - p[i], b = p[(i + p.size() - 1) % p.size()] - p[i];
       const double la = std::sqrt(a.squared_length()), lb = std::sqrt(b.squared_length());
-      if(!(la > 0) || !(lb > 0)) continue;
+      if(!(la > 0) || !(lb > 0)) { corner(0., -1., p.size() == 4); continue; }
       const double ang = std::atan2(std::sqrt(CGAL::cross_product(a, b).squared_length()), a * b) * 180 / CGAL_PI;
       corner(ang, nl > 0 ? (CGAL::cross_product(a, b) * n) / (la * lb * nl) : 0., p.size() == 4);
     }

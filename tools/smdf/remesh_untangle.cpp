@@ -35,7 +35,9 @@ Json untangle_inverted(const Mesh& input, Mesh& remesh, bool& ok, std::size_t& l
   remesh.remove_property_map(held);
   std::size_t cones_moved = 0;
   for(const auto& c : cones) cones_moved += remesh.point(c.first) != c.second;
-  ok = us.success;
+  // called for folded quads alone (the grid inverted nothing), a failure is the untangler's
+  // stricter normals finding what it cannot unfold: the grid stands, unmoved, and stays valid
+  ok = us.success || grid_inverted == 0;
   left = us.success ? 0 : grid_inverted;   // a failed untangling moves nothing
   message = us.message;
   Json u = Json::object();

@@ -18,8 +18,10 @@ namespace smdf_cli {
 // cone stay inverted (a cone on a sharp tip, which the metric shrinks to less than a face), a
 // second pass lets the cones slide along the surface too, keeping their valences. Once none is
 // inverted, quads folded at a corner are unfolded as far as moves along the surface can (best
-// effort: `ok` does not depend on it). `ok` says whether no inverted face is left, `left` how
-// many are (on entry: the tessellation's count), `message` why. Returns the JSON of what was done.
+// effort: `ok` does not depend on it). `ok` says whether no inverted face is left (true when
+// the grid had none: called for folded quads alone, a failure leaves the grid as it was), `left`
+// how many are (on entry: the tessellation's count), `message` why. Returns the JSON of what was
+// done.
 Json untangle_inverted(const Mesh& input, Mesh& remesh, bool& ok, std::size_t& left, std::string& message);
 
 } // namespace smdf_cli

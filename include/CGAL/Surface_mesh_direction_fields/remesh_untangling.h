@@ -77,8 +77,8 @@ struct Untangle_status
 /// Once none is inverted, faces of four or more corners folded at a corner (not convex: at one
 /// corner the turn goes against the face's own area vector, a negative scaled Jacobian there, or
 /// against the input's normals) get their corners moved by the same pattern search, plus steps towards the neighbours'
-/// mean, a move kept only if it folds fewer faces around the vertex, or as many with its worst
-/// corner turning less, and inverts none; best effort, reported as `folded_before` and
+/// mean, a move kept only if it folds fewer faces around the vertex, or as many with the worst
+/// corner around it closer to a right angle's turn (a larger scaled Jacobian), and inverts none; best effort, reported as `folded_before` and
 /// `folded_after`. A remesh with no inverted and no folded face is left as it is.
 /// The input's normal under a vertex is that of the input face it lies on, searched first among
 /// the faces near the one under a neighbour (a vertex off the input gets its closest face's); on
@@ -454,10 +454,13 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
   // Then, no face inverted, the corners of the folded faces (best effort, a round at a time
   // while a round unfolds some). Only the faces around a moved vertex can change, so each round
   // looks at those alone (armadillo 400k: untangling 2.5 -> 1.2 s, two passes over all faces a round).
-  st.folded_after = st.folded_before;
-  if(now == 0 && st.folded_before > 0) {
+  // (After the attempts, counted again: an inverted quad is also folded, and the attempts'
+  // moves may fold quads they do not invert.)
+  st.folded_after = st.folded_before;   // a failed untangling moves nothing
+  if(now == 0) {
     std::vector<std::size_t> fold;   // the folded faces
     for(std::size_t f = 0; f < fv.size(); ++f) if(folded(f)) fold.push_back(f);
+    st.folded_after = fold.size();
     std::vector<char> tried(vs.size(), 0), listed(fv.size(), 0);
     for(int round = 0; round < max_rounds && !fold.empty(); ++round) {
       std::vector<std::size_t> touched, next;
