@@ -76,10 +76,11 @@ struct Untangle_status
 /// was (the status says how many would have stayed, and how many of those lie across a thin part).
 /// Once none is inverted, faces of four or more corners folded at a corner (not convex: at one
 /// corner the turn goes against the face's own area vector, a negative scaled Jacobian there, or
-/// against the input's normals) get their corners moved by the same pattern search, plus steps towards the neighbours'
-/// mean, a move kept only if it folds fewer faces around the vertex, or as many with the worst
-/// corner around it closer to a right angle's turn (a larger scaled Jacobian), and inverts none; best effort, reported as `folded_before` and
-/// `folded_after`. A remesh with no inverted and no folded face is left as it is.
+/// against the input's normals) get their corners moved by the same pattern search, after steps
+/// towards the neighbours' mean, a move kept only if it folds fewer faces around the vertex, or
+/// as many with the worst corner around it at a larger scaled Jacobian, and inverts none; best
+/// effort, reported as `folded_before` and `folded_after`. A remesh with no inverted and no
+/// folded face is left as it is.
 /// The input's normal under a vertex is that of the input face it lies on, searched first among
 /// the faces near the one under a neighbour (a vertex off the input gets its closest face's); on
 /// an input edge or vertex, the normalised sum of the unit normals of the faces around it.
@@ -290,13 +291,9 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
     const auto c = fv[f];
     return internal::worst_corner_turn(c.size(), [&](std::size_t k) { return pos[c[k]]; }, [&](std::size_t k) { return normal[c[k]]; }, at);
   };
-  auto folded = [&](std::size_t f) { return fv[f].size() >= 4 && corner_turn(f) <= 0; };
-  auto count_folded = [&] {
-    std::size_t n = 0;
-    for(std::size_t f = 0; f < fv.size(); ++f) n += folded(f);
-    return n;
-  };
-  st.folded_before = count_folded();
+  auto folded_at = [&](std::size_t f, double turn) { return fv[f].size() >= 4 && turn <= 0; };
+  auto folded = [&](std::size_t f) { return folded_at(f, corner_turn(f)); };
+  for(std::size_t f = 0; f < fv.size(); ++f) st.folded_before += folded(f);
   // A point a short step from vertex v put back on the input: at its closest point in the face
   // a walk from the face under v reaches (the tree's answer where the walk fails), a local
   // projection that never jumps across a thin part (armadillo 400k: untangling 1.22 -> 0.98 s).
@@ -323,7 +320,7 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
         inverted_faces += c <= 0;
         if(unfold_corners) {
           const double t = corner_turn(f);
-          folded_faces += fv[f].size() >= 4 && t <= 0;
+          folded_faces += folded_at(f, t);
           worst = (std::min)(worst, t);
         } else {
           worst = (std::min)(worst, c);
@@ -348,30 +345,36 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
       V3 best_pos = here, best_normal = here_normal;
       int best_under = here_under;
       bool improved = false;
-      V3 mean{{0, 0, 0}};
-      for(std::size_t w : nb[v]) for(int d = 0; d < 3; ++d) mean[std::size_t(d)] += pos[w][std::size_t(d)] / double(nb[v].size());
-      // with unfold_corners (a polish: at most 4 steps) the steps towards the mean first, the
-      // first that helps taken, the pattern only if none does
-      for(int pass = unfold_corners ? 0 : 1; pass < 2 && !improved; ++pass)
+      // one candidate: `to` put back on the input, kept if it scores better than the best so far
+      auto try_point = [&](const V3& to) {
+        const auto q = unfold_corners ? project_near(to, v) : closest(Input_point(to[0], to[1], to[2]), v);
+        const V3 p = {{CGAL::to_double(q.first.x()), CGAL::to_double(q.first.y()), CGAL::to_double(q.first.z())}};
+        const V3 m = located.normal_at(p, q.second, tol * tol);
+        if(m[0] * here_normal[0] + m[1] * here_normal[1] + m[2] * here_normal[2] <= 0) return false;   // the other side of a thin part
+        pos[v] = p;
+        normal[v] = m;
+        std::size_t count;
+        double worst;
+        score(count, worst);
+        pos[v] = here;
+        normal[v] = here_normal;
+        if(!(count < best_count || (count == best_count && worst > best_worst))) return false;
+        best_count = count; best_worst = worst; best_pos = p; best_normal = m; best_under = q.second; improved = true;
+        return true;
+      };
+      // with unfold_corners (a polish: at most 4 steps) the whole, half and quarter step towards
+      // the neighbours' mean first, the first that helps taken, the pattern only if none does
+      if(unfold_corners) {
+        V3 mean{{0, 0, 0}};
+        for(std::size_t w : nb[v]) for(int d = 0; d < 3; ++d) mean[std::size_t(d)] += pos[w][std::size_t(d)] / double(nb[v].size());
+        for(double t : {1., 0.5, 0.25})
+          if(try_point(V3{{here[0] + t * (mean[0] - here[0]), here[1] + t * (mean[1] - here[1]), here[2] + t * (mean[2] - here[2])}})) break;
+      }
+      if(!improved)
         for(double r : {0.25, 0.125, 0.0625})
-          for(int k = pass == 0 ? -1 : 0; k < (pass == 0 ? 0 : 8) && !(pass == 0 && improved); ++k) {   // k = -1: towards the mean, 4 r of the way
+          for(int k = 0; k < 8; ++k) {
             const double a = k * CGAL_PI / 4, x = r * reach * std::cos(a), y = r * reach * std::sin(a);
-            const V3 to = k < 0 ? V3{{here[0] + 4 * r * (mean[0] - here[0]), here[1] + 4 * r * (mean[1] - here[1]), here[2] + 4 * r * (mean[2] - here[2])}}
-                                : V3{{here[0] + x * t1[0] + y * t2[0], here[1] + x * t1[1] + y * t2[1], here[2] + x * t1[2] + y * t2[2]}};
-            const auto q = unfold_corners ? project_near(to, v) : closest(Input_point(to[0], to[1], to[2]), v);
-            const V3 p = {{CGAL::to_double(q.first.x()), CGAL::to_double(q.first.y()), CGAL::to_double(q.first.z())}};
-            const V3 m = located.normal_at(p, q.second, tol * tol);
-            if(m[0] * here_normal[0] + m[1] * here_normal[1] + m[2] * here_normal[2] <= 0) continue;   // the other side of a thin part
-            pos[v] = p;
-            normal[v] = m;
-            std::size_t count;
-            double worst;
-            score(count, worst);
-            if(count < best_count || (count == best_count && worst > best_worst)) {
-              best_count = count; best_worst = worst; best_pos = p; best_normal = m; best_under = q.second; improved = true;
-            }
-            pos[v] = here;
-            normal[v] = here_normal;
+            try_point(V3{{here[0] + x * t1[0] + y * t2[0], here[1] + x * t1[1] + y * t2[1], here[2] + x * t1[2] + y * t2[2]}});
           }
       if(!improved) break;
       pos[v] = best_pos;
