@@ -69,6 +69,9 @@ struct Cone_metric_status
   std::size_t edge_flips = 0;      ///< number of intrinsic edge flips performed
   /// the triangulation carrying the metric when `triangulation_changed`, empty otherwise
   Intrinsic_triangulation intrinsic_triangulation;
+  /// empty, or why `intrinsic_triangulation` has no common subdivision with the input although
+  /// edges were flipped (its own consistency checks failed; the metric is sound)
+  std::string correspondence_message;
   /// interior vertices with a target curvature \f$\ge 2\pi\f$ (cones of index \f$\ge 1\f$) at which a
   /// hole was punched, in vertex order
   std::vector<std::size_t> punched_vertices;
@@ -312,13 +315,15 @@ Cone_metric_status compute_cone_metric(const TriangleMesh& tm,
   // --- 5. output: lengths of the input edges, or the intrinsic triangulation and its
   // correspondence to the input; conformal factors; status
   Cone_metric_status st;
-  st.triangulation_changed = flow.triangulation_changed();
+  double replay_error = 0;
+  st.triangulation_changed = flow.triangulation_changed() &&
+      internal::output_intrinsic_triangulation(m, u, target, len, output_lengths, st.intrinsic_triangulation, replay_error,
+                                               st.correspondence_message);
   if(!st.triangulation_changed)
     internal::put_input_edge_lengths(m, len, output_lengths);
-  else
-    st.intrinsic_triangulation = internal::output_intrinsic_triangulation(m, flow, len, output_lengths);
   internal::put_conformal_factors(m, np, [&u](std::size_t v) { return u[v]; });
   internal::put_flow_outcome(r, st);
+  st.max_curvature_error = (std::max)(st.max_curvature_error, replay_error);
   st.seconds = internal::seconds_since(t0);
   return st;
 }

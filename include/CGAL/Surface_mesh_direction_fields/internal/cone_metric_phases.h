@@ -15,6 +15,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh_arrays.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/topology.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/ricci_flow.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/common_subdivision.h>
 
 #include <algorithm>
 #include <chrono>
@@ -177,41 +178,59 @@ void put_input_edge_lengths(const Mesh_arrays<TM>& m, const std::vector<double>&
   for(std::size_t e = 0; e < m.number_of_edges(); ++e) put(output_lengths, m.edges[e], len[e]);
 }
 
-// The flow flipped edges: the intrinsic triangulation carrying the lengths len, with its
-// correspondence to the input edges; output_lengths receives the lengths of the input edges
-// that are still edges and a quiet NaN for the others.
-template <typename TM, typename Flow, typename EdgeLengthMap>
-Intrinsic_triangulation output_intrinsic_triangulation(const Mesh_arrays<TM>& m, const Flow& flow,
-                                                       const std::vector<double>& len,
-                                                       EdgeLengthMap output_lengths)
+// The flow flipped edges. The intrinsic Delaunay triangulation of the final factors u is made
+// again from the input by flips that carry the crossings of the input edges (the flow's own
+// flips are undone by its line searches and are not worth tracking: replaying from the input
+// costs one pass of flips), with its common subdivision. Returns false if no flip is needed at
+// u after all (len then holds the lengths of the input edges). Otherwise `it` receives the
+// triangulation, output_lengths the lengths of the input edges that are still edges and a
+// quiet NaN for the others, and max_error the largest curvature error on it; if the
+// correspondence fails its own checks, `it` has no common subdivision and correspondence_message
+// says why.
+template <typename TM, typename EdgeLengthMap>
+bool output_intrinsic_triangulation(const Mesh_arrays<TM>& m, const std::vector<double>& u,
+                                    const std::vector<double>& target, std::vector<double>& len,
+                                    EdgeLengthMap output_lengths, Intrinsic_triangulation& it,
+                                    double& max_error, std::string& correspondence_message)
 {
-  const Flippable_triangulation& tri = flow.triangulation();
-  const std::size_t nv = m.number_of_vertices();
-  // Correspondence: an edge is an input edge if it joins the same vertices with the same
-  // Penner coordinate (a flipped-back edge has exactly its old one: Ptolemy is an involution).
-  // (input edges sorted by their end points: a hash map of vectors cost 0.4 s at 433k faces)
-  auto key = [nv](int a, int b) { return (long long)(std::min)(a, b) * (long long)nv + (std::max)(a, b); };
-  std::vector<std::pair<long long, int>> by_ends(m.number_of_edges());
-  for(std::size_t e = 0; e < m.number_of_edges(); ++e)
-    by_ends[e] = std::make_pair(key(m.target[2 * e], m.target[2 * e + 1]), int(e));
-  std::sort(by_ends.begin(), by_ends.end());
-  std::vector<long> input_edge(m.number_of_edges(), -1);
-  std::vector<double> out(m.number_of_edges(), std::numeric_limits<double>::quiet_NaN());
-  for(std::size_t e = 0; e < m.number_of_edges(); ++e) {
-    const long long k = key(tri.target[2 * e], tri.target[2 * e + 1]);
-    for(auto it = std::lower_bound(by_ends.begin(), by_ends.end(), std::make_pair(k, -1));
-        it != by_ends.end() && it->first == k; ++it) {
-      const int i = it->second;
-      if(std::abs(flow.base_lengths()[e] - m.length[i]) <= 1e-12 * m.length[i]) {
-        input_edge[e] = i;
-        out[i] = len[e];
-        break;
-      }
-    }
+  Tracked_delaunay_flips<TM> tf(m);
+  try {
+    len = tf.make_delaunay(u);
+  } catch(const std::runtime_error& e) {
+    // the flips without their crossings: the metric is sound, only the correspondence is lost
+    correspondence_message = e.what();
+    tf = Tracked_delaunay_flips<TM>(m);
+    len = tf.make_delaunay(u, false);
   }
+  if(tf.flips == 0) return false;
+  std::vector<double> out(m.number_of_edges(), std::numeric_limits<double>::quiet_NaN());
+  for(std::size_t e = 0; e < m.number_of_edges(); ++e)
+    if(tf.coincident[e] >= 0) out[std::size_t(tf.coincident[e])] = len[e];
   for(std::size_t e = 0; e < m.number_of_edges(); ++e) put(output_lengths, m.edges[e], out[e]);
-  return Intrinsic_triangulation(nv, tri.next, tri.target, tri.face, tri.face_halfedge,
-                                 len, std::move(input_edge));
+  // the curvature read back on this triangulation
+  std::vector<double> angle_sum(m.number_of_vertices(), 0.);
+  for(std::size_t f = 0; f < m.number_of_faces(); ++f) {
+    const int h0 = tf.tri.face_halfedge[f], h1 = tf.tri.next[std::size_t(h0)], h2 = tf.tri.next[std::size_t(h1)];
+    const double a = len[std::size_t(h0 >> 1)], b = len[std::size_t(h1 >> 1)], c = len[std::size_t(h2 >> 1)];
+    angle_sum[std::size_t(tf.tri.target[std::size_t(h2)])] += corner_angle(b, a, c);
+    angle_sum[std::size_t(tf.tri.target[std::size_t(h0)])] += corner_angle(c, a, b);
+    angle_sum[std::size_t(tf.tri.target[std::size_t(h1)])] += corner_angle(a, b, c);
+  }
+  max_error = 0;
+  for(std::size_t v = 0; v < m.number_of_vertices(); ++v) {
+    if(m.is_isolated(int(v))) continue;
+    const double k = (m.is_boundary_vertex(int(v)) ? CGAL_PI : 2 * CGAL_PI) - angle_sum[v];
+    max_error = (std::max)(max_error, std::abs(k - target[v]));
+  }
+  std::vector<long> input_edge(tf.coincident.begin(), tf.coincident.end());
+  it = Intrinsic_triangulation(m.number_of_vertices(), tf.tri.next, tf.tri.target, tf.tri.face,
+                               tf.tri.face_halfedge, len, std::move(input_edge));
+  if(correspondence_message.empty()) try {
+    build_common_subdivision(m, tf, u, len, it);
+  } catch(const std::runtime_error& e) {
+    correspondence_message = e.what();
+  }
+  return true;
 }
 
 // Writes conformal_factor(v) of every vertex v to the conformal_factor_map of np, if given.

@@ -1,0 +1,231 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+// The correspondence between an intrinsic triangulation (a cone metric that needed flips) and
+// the input mesh: the common subdivision built by compute_cone_metric(). Invariants on every
+// closed shared mesh with random cone sets (adjacent cones included), and on the shipped Spot:
+// - the pieces tile every input face and every intrinsic face (areas sum up, relative 1e-10),
+//   every piece has a positive area under both metrics;
+// - every piece's projective map, fixed by three corners, sends its other corners where the
+//   crossings tracked through the flips put them (the builder's residual, 1e-9);
+// - points mapped there and back return (1e-10), both ways;
+// - an input vertex's corner maps to that vertex's corner of an intrinsic face.
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
+#include <CGAL/Surface_mesh_direction_fields/topology.h>
+#include <CGAL/Surface_mesh_direction_fields/IO/read_triangle_mesh.h>
+
+#include <algorithm>
+#include <chrono>
+#include <map>
+#include <set>
+
+#include "test_util.h"
+
+namespace SMDF = CGAL::Surface_mesh_direction_fields;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Surface_mesh;
+typedef CGAL::Polyhedron_3<K> Polyhedron;
+
+namespace {
+
+std::size_t total_flips = 0, total_crossings = 0, total_pieces = 0, runs = 0;
+
+// Random cones summing to 2 pi chi on a closed mesh: |4 chi| cones of sign chi and pi / 2
+// anywhere, then `dipoles` pairs of opposite cones of pi / 2 or pi on adjacent vertices, which
+// the input triangulation rarely carries (flips).
+template <typename Mesh>
+std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, double>
+random_cones(const Mesh& mesh, int chi, int dipoles, std::mt19937& rng)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  std::vector<vertex_descriptor> vs(vertices(mesh).begin(), vertices(mesh).end());
+  std::map<vertex_descriptor, double> cones;
+  std::uniform_int_distribution<std::size_t> pick(0, vs.size() - 1);
+  std::uniform_int_distribution<int> half_turns(1, 2);
+  for(int n = std::abs(4 * chi); n > 0;) {
+    const vertex_descriptor v = vs[pick(rng)];
+    if(!cones.count(v)) { cones[v] = chi > 0 ? CGAL_PI / 2 : -CGAL_PI / 2; --n; }
+  }
+  for(int n = dipoles; n > 0;) {
+    const vertex_descriptor a = vs[pick(rng)];
+    const vertex_descriptor b = target(halfedge(a, mesh), mesh) == a ? source(halfedge(a, mesh), mesh)
+                                                                       : target(halfedge(a, mesh), mesh);
+    if(cones.count(a) || cones.count(b)) continue;
+    const double k = half_turns(rng) * CGAL_PI / 2;
+    cones[a] = k;
+    cones[b] = -k;
+    --n;
+  }
+  return cones;
+}
+
+// Checks the common subdivision of a metric with flips (see the file's comment).
+template <typename Mesh>
+void check_correspondence(const Mesh& mesh, const SMDF::Intrinsic_triangulation& it, const std::string& name,
+                          std::mt19937& rng)
+{
+  typedef boost::graph_traits<Mesh> GT;
+  SMDF_CHECK_MSG(it.has_common_subdivision(), name);
+  if(!it.has_common_subdivision()) return;
+  const auto& pieces = it.common_subdivision();
+  total_crossings += it.number_of_crossings();
+  total_pieces += pieces.size();
+  SMDF_CHECK_MSG(it.correspondence_residual() <= 1e-9, name << ": residual " << it.correspondence_residual());
+
+  // input face areas (Euclidean, the input metric) and intrinsic face areas
+  std::vector<typename GT::face_descriptor> fs(faces(mesh).begin(), faces(mesh).end());
+  std::vector<std::array<int, 3>> corners(fs.size());
+  std::map<typename GT::vertex_descriptor, int> vindex;
+  for(auto v : vertices(mesh)) { const int i = int(vindex.size()); vindex[v] = i; }
+  std::vector<double> input_area(fs.size()), sum_input(fs.size(), 0.), sum_intrinsic(it.number_of_faces(), 0.);
+  for(std::size_t f = 0; f < fs.size(); ++f) {
+    auto h = halfedge(fs[f], mesh);
+    const K::Point_3 p = get(CGAL::vertex_point, mesh, source(h, mesh)), q = get(CGAL::vertex_point, mesh, target(h, mesh)),
+                     r = get(CGAL::vertex_point, mesh, target(next(h, mesh), mesh));
+    input_area[f] = std::sqrt(CGAL::squared_area(p, q, r));
+    corners[f] = {{vindex[source(h, mesh)], vindex[target(h, mesh)], vindex[target(next(h, mesh), mesh)]}};
+  }
+  double min_input = 1e300, min_intrinsic = 1e300;
+  for(const auto& p : pieces) {
+    sum_input[std::size_t(p.input_face)] += p.input_area;
+    sum_intrinsic[std::size_t(p.intrinsic_face)] += p.intrinsic_area;
+    min_input = (std::min)(min_input, p.input_area / input_area[std::size_t(p.input_face)]);
+    const int h = it.halfedge(p.intrinsic_face);
+    const double a = SMDF::triangle_area(it.length(h >> 1), it.length(it.next(h) >> 1), it.length(it.next(it.next(h)) >> 1));
+    min_intrinsic = (std::min)(min_intrinsic, p.intrinsic_area / a);
+  }
+  double worst_input = 0, worst_intrinsic = 0;
+  for(std::size_t f = 0; f < fs.size(); ++f)
+    worst_input = (std::max)(worst_input, std::abs(sum_input[f] - input_area[f]) / input_area[f]);
+  for(std::size_t g = 0; g < it.number_of_faces(); ++g) {
+    const int h = it.halfedge(int(g));
+    const double a = SMDF::triangle_area(it.length(h >> 1), it.length(it.next(h) >> 1), it.length(it.next(it.next(h)) >> 1));
+    worst_intrinsic = (std::max)(worst_intrinsic, std::abs(sum_intrinsic[g] - a) / a);
+  }
+  SMDF_CHECK_MSG(worst_input <= 1e-10, name << ": pieces tile the input faces to " << worst_input);
+  SMDF_CHECK_MSG(worst_intrinsic <= 1e-10, name << ": pieces tile the intrinsic faces to " << worst_intrinsic);
+  SMDF_CHECK_MSG(min_input > 0 && min_intrinsic > 0,
+                 name << ": smallest piece (relative to its face) " << min_input << " / " << min_intrinsic);
+
+  // round trips from random points, both ways
+  std::uniform_real_distribution<double> unit(0, 1);
+  auto random_point = [&](int face) {
+    double a = unit(rng), b = unit(rng);
+    if(a + b > 1) { a = 1 - a; b = 1 - b; }
+    SMDF::Surface_point p;
+    p.face = face;
+    p.barycentric = {{1 - a - b, a, b}};
+    return p;
+  };
+  auto distance = [](const SMDF::Surface_point& p, const SMDF::Surface_point& q) {
+    if(p.face != q.face) return 1e300;
+    double d = 0;
+    for(int i = 0; i < 3; ++i) d = (std::max)(d, std::abs(p.barycentric[std::size_t(i)] - q.barycentric[std::size_t(i)]));
+    return d;
+  };
+  double worst_trip = 0;
+  std::uniform_int_distribution<int> pick_g(0, int(it.number_of_faces()) - 1), pick_f(0, int(fs.size()) - 1);
+  for(int i = 0; i < 2000; ++i) {
+    const SMDF::Surface_point p = random_point(pick_g(rng));
+    worst_trip = (std::max)(worst_trip, distance(p, it.locate_on_intrinsic(it.locate_on_input(p))));
+    const SMDF::Surface_point q = random_point(pick_f(rng));
+    worst_trip = (std::max)(worst_trip, distance(q, it.locate_on_input(it.locate_on_intrinsic(q))));
+  }
+  SMDF_CHECK_MSG(worst_trip <= 1e-10, name << ": round trip error " << worst_trip);
+
+  // an input corner lands on the same vertex of the intrinsic triangulation
+  int wrong_corner = 0;
+  for(std::size_t f = 0; f < fs.size(); f += 7) {
+    for(int j = 0; j < 3; ++j) {
+      SMDF::Surface_point p;
+      p.face = int(f);
+      p.barycentric = {{0, 0, 0}};
+      p.barycentric[std::size_t(j)] = 1;
+      const SMDF::Surface_point q = it.locate_on_intrinsic(p);
+      const auto vs = it.face_vertices(q.face);
+      const auto k = std::max_element(q.barycentric.begin(), q.barycentric.end()) - q.barycentric.begin();
+      if(vs[std::size_t(k)] != corners[f][std::size_t(j)] || q.barycentric[std::size_t(k)] < 1 - 1e-9) ++wrong_corner;
+    }
+  }
+  SMDF_CHECK_MSG(wrong_corner == 0, name << ": " << wrong_corner << " input corners land elsewhere");
+}
+
+// One random cone set on `mesh`; with `require_flips`, drawn again (up to 20 times) until the
+// metric needs flips.
+template <typename Mesh>
+void run_mesh(const Mesh& mesh, const std::string& name, int extra, std::mt19937& rng, bool require_flips)
+{
+  typedef boost::graph_traits<Mesh> GT;
+  const int chi = int(SMDF::mesh_topology(mesh).euler_characteristic());
+  auto cones = random_cones(mesh, chi, extra, rng);
+  for(int attempt = 0; require_flips && attempt < 20; ++attempt) {
+    auto t = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+    for(auto v : vertices(mesh)) put(t, v, 0.);
+    for(const auto& c : cones) put(t, c.first, c.second);
+    auto l = get(CGAL::dynamic_edge_property_t<double>(), mesh);
+    if(SMDF::compute_cone_metric(mesh, t, l).triangulation_changed) break;
+    cones = random_cones(mesh, chi, extra, rng);
+  }
+  auto target = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+  for(auto v : vertices(mesh)) put(target, v, 0.);
+  for(const auto& c : cones) put(target, c.first, c.second);
+  auto len = get(CGAL::dynamic_edge_property_t<double>(), mesh);
+  const auto t0 = std::chrono::steady_clock::now();
+  const SMDF::Cone_metric_status st = SMDF::compute_cone_metric(mesh, target, len);
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const std::string what = name + " (" + std::to_string(cones.size()) + " cones)";
+  SMDF_CHECK_MSG(st.converged, what << ": " << st.message);
+  SMDF_CHECK_MSG(st.correspondence_message.empty(), what << ": " << st.correspondence_message);
+  if(!st.converged) return;
+  std::cout << what << ": " << st.edge_flips << " flips in the flow, changed " << st.triangulation_changed
+            << ", crossings " << st.intrinsic_triangulation.number_of_crossings() << ", pieces "
+            << st.intrinsic_triangulation.common_subdivision().size() << ", " << s << " s" << std::endl;
+  if(require_flips) SMDF_CHECK_MSG(st.triangulation_changed, what);
+  if(!st.triangulation_changed) return;
+  ++runs;
+  total_flips += st.intrinsic_triangulation.number_of_new_edges();
+  check_correspondence(mesh, st.intrinsic_triangulation, what, rng);
+  (void)sizeof(typename GT::face_descriptor);
+}
+
+} // namespace
+
+int main()
+{
+  std::mt19937 rng(2026);
+  {
+    Surface_mesh spot;
+    SMDF::read_triangle_mesh(std::string(SMDF_SOURCE_DIR) + "/data/spot.off", spot);
+    run_mesh(spot, "spot.off", 6, rng, true);
+    Polyhedron poly;
+    SMDF::read_triangle_mesh(std::string(SMDF_SOURCE_DIR) + "/data/spot.off", poly);
+    run_mesh(poly, "spot.off (Polyhedron_3)", 6, rng, true);
+  }
+  const std::string dir = smdf_test::shared_data_dir();
+  if(!dir.empty()) {
+    for(const auto& e : smdf_test::read_manifest(dir)) {
+      if(e.manifold != "yes" || e.pure_tri != "yes" || e.orientable != "yes" || e.components != 1 ||
+         e.boundary_loops != 0 || e.degenerate_faces > 0 || e.F > 120000)
+        continue;
+      Surface_mesh mesh;
+      try {
+        SMDF::read_triangle_mesh(dir + "/meshes/" + e.file, mesh);
+      } catch(const std::exception& x) {
+        std::cout << e.file << ": not read (" << x.what() << ")" << std::endl;
+        continue;
+      }
+      const int genus = std::stoi(e.genus);
+      if(genus > 10) continue;
+      run_mesh(mesh, e.file, 1, rng, false);
+      run_mesh(mesh, e.file, 6, rng, false);
+    }
+  }
+  std::cout << runs << " metrics with flips, " << total_flips << " edges not in the input, " << total_crossings
+            << " crossings, " << total_pieces << " pieces" << std::endl;
+  SMDF_CHECK(runs >= 2);
+  return smdf_test::finish();
+}
