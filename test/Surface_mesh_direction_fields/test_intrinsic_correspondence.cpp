@@ -9,12 +9,18 @@
 // - every piece's projective map, fixed by three corners, sends its other corners where the
 //   crossings tracked through the flips put them (the builder's residual, 1e-9);
 // - points mapped there and back return (1e-10), both ways;
-// - an input vertex's corner maps to that vertex's corner of an intrinsic face.
+// - an input vertex's corner maps to that vertex's corner of an intrinsic face;
+// - a cross field of the metric (the trivial connection with the cones as singularities on the
+//   intrinsic triangulation) carried to the input faces with transfer_face_field_to_input()
+//   reads back, with its transferred matching on the input mesh, exactly the cones.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
+#include <CGAL/Surface_mesh_direction_fields/field_singularities.h>
+#include <CGAL/Surface_mesh_direction_fields/field_transfer.h>
+#include <CGAL/Surface_mesh_direction_fields/Trivial_connection.h>
 #include <CGAL/Surface_mesh_direction_fields/topology.h>
 #include <CGAL/Surface_mesh_direction_fields/IO/read_triangle_mesh.h>
 
@@ -33,6 +39,7 @@ typedef CGAL::Polyhedron_3<K> Polyhedron;
 namespace {
 
 std::size_t total_flips = 0, total_crossings = 0, total_pieces = 0, runs = 0;
+double max_distortion = 0;
 
 // Random cones summing to 2 pi chi on a closed mesh: |4 chi| cones of sign chi and pi / 2
 // anywhere, then `dipoles` pairs of opposite cones of pi / 2 or pi on adjacent vertices, which
@@ -156,6 +163,50 @@ void check_correspondence(const Mesh& mesh, const SMDF::Intrinsic_triangulation&
 
 // One random cone set on `mesh`; with `require_flips`, drawn again (up to 20 times) until the
 // metric needs flips.
+// The cross field of the metric carried to the input and read back there.
+template <typename Mesh, typename Cones>
+void check_field_transfer(const Mesh& mesh, const SMDF::Intrinsic_triangulation& it, const Cones& cones,
+                          const std::string& name)
+{
+  Surface_mesh flat;
+  auto flat_len = flat.add_property_map<Surface_mesh::Edge_index, double>("e:len", 0.).first;
+  SMDF::copy_intrinsic_triangulation(it, mesh, flat, flat_len);
+  const int N = 4;
+  SMDF::Trivial_connection<Surface_mesh> tc(flat, SMDF::parameters::symmetry_order(N).edge_length_map(flat_len));
+  std::map<std::size_t, double> want;
+  std::size_t i = 0;
+  std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, std::size_t> vindex;
+  for(auto v : vertices(mesh)) vindex[v] = i++;
+  for(const auto& c : cones) {
+    const double k = c.second / (2 * CGAL_PI);
+    tc.set_singularity(Surface_mesh::Vertex_index(std::uint32_t(vindex[c.first])), k);
+    want[vindex[c.first]] = k;
+  }
+  const SMDF::Trivial_connection_status ts = tc.solve();
+  SMDF_CHECK_MSG(ts.success, name << ": " << ts.message);
+  if(!ts.success) return;
+  auto fa = flat.add_property_map<Surface_mesh::Face_index, double>("f:a", 0.).first;
+  auto fm = flat.add_property_map<Surface_mesh::Edge_index, int>("e:m", 0).first;
+  tc.field_angles(fa);
+  tc.field_matching(fa, fm);
+  std::vector<double> angles(it.number_of_faces());
+  std::vector<int> matching(it.number_of_edges());
+  for(auto f : faces(flat)) angles[std::size_t(f.idx())] = fa[f];
+  for(auto e : edges(flat)) matching[std::size_t(e.idx())] = fm[e];
+  auto in_angles = get(CGAL::dynamic_face_property_t<double>(), mesh);
+  auto in_matching = get(CGAL::dynamic_edge_property_t<int>(), mesh);
+  const SMDF::Field_transfer_status fs = SMDF::transfer_face_field_to_input(mesh, it, N, angles, matching, in_angles, in_matching);
+  SMDF_CHECK_MSG(fs.success, name << ": " << fs.message);
+  if(!fs.success) return;
+  const auto found = SMDF::field_singularities(mesh, in_angles, SMDF::parameters::symmetry_order(N).matching(in_matching));
+  std::map<std::size_t, double> got;
+  for(const auto& s : found.singularities) got[vindex[s.first]] = s.second;
+  SMDF_CHECK_MSG(got == want, name << ": the transferred field reads back " << got.size() << " singularities for "
+                                   << want.size() << " cones (distortion " << fs.max_distortion << ")");
+  SMDF_CHECK_MSG(found.max_rounding_error < 0.05, name << ": rounding " << found.max_rounding_error);
+  max_distortion = (std::max)(max_distortion, fs.max_distortion);
+}
+
 template <typename Mesh>
 void run_mesh(const Mesh& mesh, const std::string& name, int extra, std::mt19937& rng, bool require_flips)
 {
@@ -189,6 +240,7 @@ void run_mesh(const Mesh& mesh, const std::string& name, int extra, std::mt19937
   ++runs;
   total_flips += st.intrinsic_triangulation.number_of_new_edges();
   check_correspondence(mesh, st.intrinsic_triangulation, what, rng);
+  check_field_transfer(mesh, st.intrinsic_triangulation, cones, what);
   (void)sizeof(typename GT::face_descriptor);
 }
 
@@ -225,7 +277,8 @@ int main()
     }
   }
   std::cout << runs << " metrics with flips, " << total_flips << " edges not in the input, " << total_crossings
-            << " crossings, " << total_pieces << " pieces" << std::endl;
+            << " crossings, " << total_pieces << " pieces; largest distortion of a transferred cross field "
+            << max_distortion << " rad" << std::endl;
   SMDF_CHECK(runs >= 2);
   return smdf_test::finish();
 }

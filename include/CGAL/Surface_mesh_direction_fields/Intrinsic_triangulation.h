@@ -44,6 +44,14 @@ struct Common_subdivision_piece
   double intrinsic_area = 0; ///< area under the intrinsic metric
   std::vector<std::array<double, 3>> input_corners;     ///< barycentric coordinates in `input_face`
   std::vector<std::array<double, 3>> intrinsic_corners; ///< barycentric coordinates in `intrinsic_face`
+  /// per corner: a vertex (its index), or the number of vertices plus the index of a crossing of
+  /// an input edge with an intrinsic edge (a point shared by the pieces around it)
+  std::vector<long> corner_ids;
+  /// per side (from corner i to corner i + 1): the halfedge of `intrinsic_face` it lies on, or -1
+  std::vector<int> intrinsic_sides;
+  /// per side: the halfedge of `input_face` it lies on (\f$2e\f$ for `halfedge(e)` of the input
+  /// edge \f$e\f$, \f$2e + 1\f$ for its opposite), or -1
+  std::vector<int> input_sides;
 };
 
 /// \ingroup PkgSurfaceMeshDirectionFieldsConeMetrics

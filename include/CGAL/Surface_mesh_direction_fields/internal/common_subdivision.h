@@ -373,12 +373,14 @@ void build_common_subdivision(const Mesh_arrays<TM>& m, const Tracked_delaunay_f
   std::vector<Common_subdivision_piece> pieces;
   std::vector<std::array<double, 9>> maps;
   std::size_t crossings = 0;
-  for(const auto& c : tf.cross) crossings += c.size();
+  std::vector<std::size_t> first_crossing(tf.cross.size());
+  for(std::size_t e = 0; e < tf.cross.size(); ++e) { first_crossing[e] = crossings; crossings += tf.cross[e].size(); }
+  const long nv = long(m.number_of_vertices());
   double residual = 0;
   std::vector<std::pair<Arc_end, Arc_end>> arcs;
   std::vector<std::vector<int>> chords;
   std::vector<char> visited;
-  std::vector<int> pts;
+  std::vector<int> pts, moves;   // the piece's points, and the chord taken from each (-1: boundary)
   for(std::size_t g = 0; g < tri.face_halfedge.size(); ++g) {
     const std::string error = tf.face_error(int(g));
     if(!error.empty()) throw internal_correspondence_error(error);
@@ -411,6 +413,7 @@ void build_common_subdivision(const Mesh_arrays<TM>& m, const Tracked_delaunay_f
     for(int s0 = 0; s0 < M; ++s0) {
       if(visited[std::size_t(s0)]) continue;
       pts.clear();
+      moves.clear();
       int q = s0, from = -2;   // from: -2 start, -1 arrived along the boundary, else the chord's other end
       int chord_q = -1, chord_r = -1;   // a chord side of the piece, traversed q -> r
       while(true) {
@@ -423,6 +426,7 @@ void build_common_subdivision(const Mesh_arrays<TM>& m, const Tracked_delaunay_f
         }
         if(r < 0 && q == s0 && from != -2) break;
         pts.push_back(q);
+        moves.push_back(r);
         if(r < 0) { visited[std::size_t(q)] = 1; q = (q + 1) % M; from = -1; }
         else { if(chord_q < 0) { chord_q = q; chord_r = r; } from = q; q = r; }
         if(pts.size() > std::size_t(4 * M + 8)) throw internal_correspondence_error("a piece does not close");
@@ -473,10 +477,36 @@ void build_common_subdivision(const Mesh_arrays<TM>& m, const Tracked_delaunay_f
           b[std::size_t((j + 1) % 3)] = same ? x.t : 1 - x.t;
           rf = std::sqrt(x.t * (1 - x.t)) * m.length[std::size_t(E)];
         }
+        if(is_corner(q2)) piece.corner_ids.push_back(corner_vertex(q2));
+        else {
+          const int i = side_of(q2), pos = q2 - start[std::size_t(i)] - 1;
+          const int e = gh[std::size_t(i)] >> 1;
+          piece.corner_ids.push_back(nv + long(first_crossing[std::size_t(e)]) +
+                                     long((gh[std::size_t(i)] & 1) ? n[std::size_t(i)] - 1 - pos : pos));
+        }
         penner.push_back(c);
         rho_g.push_back(rg);
         rho_f.push_back(rf);
         piece.input_corners.push_back(b);
+      }
+      // the sides: along an intrinsic halfedge of g (boundary moves), along an input edge (chords),
+      // or both (an intrinsic edge that is an input edge)
+      auto input_halfedge = [&](long E) {
+        if(m.face[std::size_t(2 * E)] == f) return int(2 * E);
+        if(m.face[std::size_t(2 * E + 1)] == f) return int(2 * E + 1);
+        throw internal_correspondence_error("a piece's side is on an input edge of another face");
+      };
+      for(std::size_t i = 0; i < pts.size(); ++i) {
+        const int q2 = pts[i];
+        if(moves[i] < 0) {
+          const int hg = gh[std::size_t(is_corner(q2) ? (q2 == start[0] ? 0 : q2 == start[1] ? 1 : 2) : side_of(q2))];
+          piece.intrinsic_sides.push_back(hg);
+          const long E = tf.coincident[std::size_t(hg >> 1)];
+          piece.input_sides.push_back(E >= 0 ? input_halfedge(E) : -1);
+        } else {
+          piece.intrinsic_sides.push_back(-1);
+          piece.input_sides.push_back(input_halfedge(crossing_at(is_corner(q2) ? moves[i] : q2).input_edge));
+        }
       }
       // intrinsic coordinates in the metric of u: c_i e^{-u_i}, normalised
       std::array<double, 3> eu;

@@ -1,0 +1,285 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_FIELD_TRANSFER_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_FIELD_TRANSFER_H
+
+#include <CGAL/Surface_mesh_direction_fields/Intrinsic_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/Intrinsic_triangulation.h>
+#include <CGAL/Surface_mesh_direction_fields/errors.h>
+#include <CGAL/Surface_mesh_direction_fields/intrinsic_triangle.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/development.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsConeMetrics
+/// Outcome of transfer_face_field_to_input().
+struct Field_transfer_status
+{
+  bool success = false;          ///< every input face and interior edge received the field
+  std::string message;           ///< why not, when `success` is `false`
+  /// largest angle (radians) by which the \f$N\f$ directions carried to an input face's
+  /// representative point depart from evenly spaced ones (the map between the two metrics is
+  /// projective, not conformal, inside each piece); the matching stays exact below \f$\pi/N\f$
+  double max_distortion = 0;
+};
+
+namespace internal {
+
+// A piece's map and the layouts of its two triangles: directions of the intrinsic field at a
+// point of the input face, as angles in the input face's frame.
+struct Piece_directions
+{
+  std::array<double, 9> to_input, from_input;
+  std::array<Point_2, 3> intrinsic_layout, input_layout;
+
+  // intrinsic barycentric coordinates of a point given in input ones
+  std::array<double, 3> intrinsic_point(const std::array<double, 3>& b) const
+  {
+    std::array<double, 3> c;
+    double s = 0;
+    for(int i = 0; i < 3; ++i) {
+      c[std::size_t(i)] = from_input[std::size_t(3 * i)] * b[0] + from_input[std::size_t(3 * i + 1)] * b[1] + from_input[std::size_t(3 * i + 2)] * b[2];
+      s += c[std::size_t(i)];
+    }
+    for(double& x : c) x /= s;
+    return c;
+  }
+
+  // The angle, in the input face's frame, of the image of the intrinsic direction `angle` (in
+  // the intrinsic face's frame) at the point with input coordinates b: the differential of the
+  // projective map b = A c / 1^T A c applied to the direction's barycentric form.
+  double input_angle(const std::array<double, 3>& b, double angle) const
+  {
+    const std::array<double, 3> c = intrinsic_point(b);
+    const auto& V = intrinsic_layout;
+    const double ux = std::cos(angle), uy = std::sin(angle);
+    const double e1x = V[1].x() - V[0].x(), e1y = V[1].y() - V[0].y(), e2x = V[2].x() - V[0].x(), e2y = V[2].y() - V[0].y();
+    const double det = e1x * e2y - e1y * e2x;
+    const double d1 = (ux * e2y - uy * e2x) / det, d2 = (e1x * uy - e1y * ux) / det;
+    const std::array<double, 3> dc = {{-d1 - d2, d1, d2}};
+    std::array<double, 3> Ac, Adc;
+    double sAc = 0, sAdc = 0;
+    for(int i = 0; i < 3; ++i) {
+      Ac[std::size_t(i)] = to_input[std::size_t(3 * i)] * c[0] + to_input[std::size_t(3 * i + 1)] * c[1] + to_input[std::size_t(3 * i + 2)] * c[2];
+      Adc[std::size_t(i)] = to_input[std::size_t(3 * i)] * dc[0] + to_input[std::size_t(3 * i + 1)] * dc[1] + to_input[std::size_t(3 * i + 2)] * dc[2];
+      sAc += Ac[std::size_t(i)];
+      sAdc += Adc[std::size_t(i)];
+    }
+    std::array<double, 3> db;
+    for(int i = 0; i < 3; ++i) db[std::size_t(i)] = (Adc[std::size_t(i)] - Ac[std::size_t(i)] / sAc * sAdc) / sAc;
+    const auto& W = input_layout;
+    const double x = db[1] * (W[1].x() - W[0].x()) + db[2] * (W[2].x() - W[0].x());
+    const double y = db[1] * (W[1].y() - W[0].y()) + db[2] * (W[2].y() - W[0].y());
+    return std::atan2(y, x);
+  }
+};
+
+} // namespace internal
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsConeMetrics
+/// Carries a face-based N-RoSy field of an intrinsic triangulation (the field of a cone metric
+/// that needed flips) to the input mesh, through the common subdivision of the two
+/// (`Intrinsic_triangulation::has_common_subdivision()`).
+///
+/// The direction of an input face is the field at the face's centroid, mapped by the
+/// differential of the piece's projective map. The matching of an input edge follows the field
+/// from one face's centroid to the other's through the pieces of the two faces: the branch of
+/// the \f$N\f$ directions changes by the intrinsic matching wherever the path crosses an
+/// intrinsic edge, and the rotation is summed piece by piece (every step turns by less than
+/// \f$\pi\f$). So field_singularities() of the result, with its matching, reads the indices of
+/// the intrinsic field at the vertices (they are shared) as long as `max_distortion` stays below
+/// \f$\pi/N\f$ (the status says it).
+///
+/// \param tm the input mesh (the one the cone metric was computed for)
+/// \param it the intrinsic triangulation, with its common subdivision
+/// \param N the symmetry order
+/// \param intrinsic_angles per face of `it`: the field's angle, counterclockwise from
+///   `it.halfedge(f)`, in the intrinsic metric
+/// \param intrinsic_matching per edge of `it`: the period jump for halfedge \f$2e\f$, in the
+///   convention of the `matching` parameter of field_singularities() (0 on border edges)
+/// \param input_angles receives, per face of `tm`, the field's angle counterclockwise from
+///   `halfedge(f)`, in the input metric
+/// \param input_matching receives the period jump of every edge of `tm`, for `halfedge(e)` (0
+///   on border edges)
+/// \param np the input metric: `edge_length_map` or `vertex_point_map` (and the index maps) as
+///   given to compute_cone_metric()
+///
+/// Throws `Input_error` if `it` has no common subdivision, or the sizes do not match.
+template <typename TriangleMesh, typename FaceAngleMap, typename EdgeMatchingMap,
+          typename NamedParameters = parameters::Default_named_parameters>
+Field_transfer_status transfer_face_field_to_input(const TriangleMesh& tm, const Intrinsic_triangulation& it, int N,
+                                                   const std::vector<double>& intrinsic_angles,
+                                                   const std::vector<int>& intrinsic_matching,
+                                                   FaceAngleMap input_angles, EdgeMatchingMap input_matching,
+                                                   const NamedParameters& np = parameters::default_values())
+{
+  if(!it.has_common_subdivision())
+    throw Input_error(Input_error::INVALID_ARGUMENT, "transfer_face_field_to_input(): the triangulation has no common subdivision with the input");
+  if(N < 1) throw Input_error(Input_error::INVALID_ARGUMENT, "transfer_face_field_to_input(): N must be at least 1");
+  if(intrinsic_angles.size() != it.number_of_faces() || intrinsic_matching.size() != it.number_of_edges())
+    throw Input_error(Input_error::INVALID_ARGUMENT, "transfer_face_field_to_input(): one angle per intrinsic face and one period jump per intrinsic edge are needed");
+  const Intrinsic_mesh<TriangleMesh> im = internal::get_intrinsic_mesh(tm, np);
+  const internal::Mesh_arrays<TriangleMesh>& m = im.arrays();
+  if(m.number_of_faces() != it.number_of_faces() || m.number_of_vertices() != it.number_of_vertices())
+    throw Input_error(Input_error::INVALID_ARGUMENT, "transfer_face_field_to_input(): the mesh is not the one of the triangulation");
+  const auto& pieces = it.common_subdivision();
+  const double period = 2 * CGAL_PI / N;
+  Field_transfer_status st;
+
+  auto directions = [&](std::size_t i) {
+    internal::Piece_directions d;
+    d.to_input = it.piece_map(i, true);
+    d.from_input = it.piece_map(i, false);
+    const int g0 = it.halfedge(pieces[i].intrinsic_face), g1 = it.next(g0), g2 = it.next(g1);
+    d.intrinsic_layout = lay_out_triangle(it.length(g0 >> 1), it.length(g1 >> 1), it.length(g2 >> 1));
+    d.input_layout = internal::canonical_layout(m, pieces[i].input_face);
+    return d;
+  };
+  // the branch J of the intrinsic field in piece i, at input point b
+  auto angle_at = [&](std::size_t i, const internal::Piece_directions& d, const std::array<double, 3>& b, int J) {
+    return d.input_angle(b, intrinsic_angles[std::size_t(pieces[i].intrinsic_face)] + J * period);
+  };
+  const std::array<double, 3> centroid = {{1. / 3, 1. / 3, 1. / 3}};
+
+  // 1. the representative of every input face, at its centroid; the distortion of its N directions
+  std::vector<double> beta(m.number_of_faces());
+  std::vector<std::size_t> home(m.number_of_faces());
+  for(std::size_t f = 0; f < m.number_of_faces(); ++f) {
+    std::size_t best = 0;
+    double best_depth = -1e300;
+    for(std::size_t i : it.pieces_of_input_face(int(f))) {   // the piece containing the centroid: the deepest
+      const auto& cs = pieces[i].input_corners;
+      double depth = 1e300;
+      for(std::size_t k = 0; k < cs.size(); ++k) {
+        const auto& a = cs[k];
+        const auto& b = cs[(k + 1) % cs.size()];
+        const double ex = b[1] - a[1], ey = b[2] - a[2], n = std::sqrt(ex * ex + ey * ey);
+        if(n > 0) depth = (std::min)(depth, (ex * (centroid[2] - a[2]) - ey * (centroid[1] - a[1])) / n);
+      }
+      if(depth > best_depth) { best_depth = depth; best = i; }
+    }
+    home[f] = best;
+    const internal::Piece_directions d = directions(best);
+    beta[f] = angle_at(best, d, centroid, 0);
+    for(int J = 1; J < N; ++J)
+      st.max_distortion = (std::max)(st.max_distortion, std::abs(internal::wrap_angle(angle_at(best, d, centroid, J) - beta[f] - J * period)));
+    put(input_angles, m.faces[f], beta[f]);
+  }
+
+  // 2. the matching of every interior input edge: a path of pieces from one centroid to the other
+  struct Side { long a, b; std::size_t piece; int index; };
+  std::vector<Side> sides;
+  std::vector<std::size_t> local;
+  for(std::size_t e = 0; e < m.number_of_edges(); ++e) {
+    const int h = int(2 * e);
+    const int fl = m.face[std::size_t(h)], fr = m.face[std::size_t(h ^ 1)];
+    if(fl < 0 || fr < 0) { put(input_matching, m.edges[e], 0); continue; }
+    local = it.pieces_of_input_face(fr);
+    const std::size_t nr = local.size();
+    for(std::size_t i : it.pieces_of_input_face(fl)) local.push_back(i);
+    sides.clear();
+    for(std::size_t k = 0; k < local.size(); ++k) {
+      const auto& ids = pieces[local[k]].corner_ids;
+      for(std::size_t s = 0; s < ids.size(); ++s) {
+        const long a = ids[s], b = ids[(s + 1) % ids.size()];
+        sides.push_back({(std::min)(a, b), (std::max)(a, b), k, int(s)});
+      }
+    }
+    std::sort(sides.begin(), sides.end(), [](const Side& x, const Side& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
+    // breadth-first search from the home piece of fr to that of fl
+    std::vector<int> parent(local.size(), -1), parent_side(local.size(), -1);
+    std::size_t start = 0, goal = 0;
+    for(std::size_t k = 0; k < local.size(); ++k) {
+      if(k < nr && local[k] == home[std::size_t(fr)]) start = k;
+      if(k >= nr && local[k] == home[std::size_t(fl)]) goal = k;
+    }
+    std::vector<std::size_t> queue(1, start);
+    parent[start] = int(start);
+    for(std::size_t qi = 0; qi < queue.size() && parent[goal] < 0; ++qi) {
+      const std::size_t k = queue[qi];
+      const auto& ids = pieces[local[k]].corner_ids;
+      for(std::size_t s = 0; s < ids.size(); ++s) {
+        const long a = (std::min)(ids[s], ids[(s + 1) % ids.size()]), b = (std::max)(ids[s], ids[(s + 1) % ids.size()]);
+        auto it2 = std::lower_bound(sides.begin(), sides.end(), Side{a, b, 0, 0},
+                                    [](const Side& x, const Side& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
+        for(; it2 != sides.end() && it2->a == a && it2->b == b; ++it2) {
+          if(it2->piece == k || parent[it2->piece] >= 0) continue;
+          parent[it2->piece] = int(k);
+          parent_side[it2->piece] = int(s);
+          queue.push_back(it2->piece);
+        }
+      }
+    }
+    if(parent[goal] < 0) {
+      st.message = "no path of pieces across input edge " + std::to_string(e);
+      return st;
+    }
+    std::vector<std::size_t> path(1, goal);
+    while(path.back() != start) path.push_back(std::size_t(parent[path.back()]));
+    std::reverse(path.begin(), path.end());
+    // follow the field along the path: a, the accumulated angle (fr's frame, then fl's)
+    const double inc = internal::transport_increment(m, h);   // fr's frame -> fl's frame
+    int J = 0;
+    std::array<double, 3> x = centroid;
+    double a = beta[std::size_t(fr)];
+    for(std::size_t step = 0; step + 1 < path.size(); ++step) {
+      const std::size_t A = local[path[step]], B = local[path[step + 1]];
+      const int s = parent_side[path[step + 1]];
+      const auto& P = pieces[A];
+      const std::size_t ns = P.corner_ids.size();
+      // the middle of the shared side, in A's input face, then in B's
+      std::array<double, 3> y;
+      for(int i = 0; i < 3; ++i)
+        y[std::size_t(i)] = 0.5 * (P.input_corners[std::size_t(s)][std::size_t(i)] + P.input_corners[(std::size_t(s) + 1) % ns][std::size_t(i)]);
+      const internal::Piece_directions dA = directions(A), dB = directions(B);
+      const double at_y = angle_at(A, dA, y, J);
+      a += internal::wrap_angle(at_y - angle_at(A, dA, x, J));
+      // across an intrinsic edge: the branch changes by its matching
+      const int hg = P.intrinsic_sides[std::size_t(s)];
+      if(hg >= 0) {
+        const int k = intrinsic_matching[std::size_t(hg >> 1)];
+        J += (hg & 1) ? k : -k;   // k is for halfedge 2e, from face(2e + 1) into face(2e)
+      }
+      // across the input edge: the point in fl's coordinates, the frame changes
+      std::array<double, 3> y2 = y;
+      double shift = 0;
+      if(pieces[B].input_face != P.input_face) {
+        const int kA = P.input_sides[std::size_t(s)];
+        const int hA = m.face_halfedge[std::size_t(P.input_face)];
+        const int jA = kA == hA ? 0 : kA == m.next[std::size_t(hA)] ? 1 : 2;
+        const int hB = m.face_halfedge[std::size_t(pieces[B].input_face)];
+        const int kB = kA ^ 1;
+        const int jB = kB == hB ? 0 : kB == m.next[std::size_t(hB)] ? 1 : 2;
+        y2 = {{0, 0, 0}};
+        y2[std::size_t(jB)] = y[std::size_t((jA + 1) % 3)];
+        y2[std::size_t((jB + 1) % 3)] = y[std::size_t(jA)];
+        shift = inc;
+      }
+      x = y2;
+      a += shift + internal::wrap_angle(angle_at(B, dB, y2, J) - (at_y + shift));
+    }
+    const std::size_t last = local[path.back()];
+    const internal::Piece_directions dL = directions(last);
+    a += internal::wrap_angle(angle_at(last, dL, centroid, J) - angle_at(last, dL, x, J));
+    // a: the branch J at fl's centroid; the evenly spaced field there has beta_l + J period
+    const double corr = internal::wrap_angle(angle_at(last, dL, centroid, J) - beta[std::size_t(fl)] - J * period);
+    const double rotation = a - corr - beta[std::size_t(fr)] - inc;
+    const double principal = internal::wrap_angle(beta[std::size_t(fl)] - beta[std::size_t(fr)] - inc);
+    put(input_matching, m.edges[e], int(std::lround((rotation - principal) / period)));
+  }
+  st.success = true;
+  return st;
+}
+
+} // namespace Surface_mesh_direction_fields
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_FIELD_TRANSFER_H
