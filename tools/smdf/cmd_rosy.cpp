@@ -15,6 +15,7 @@
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/field_editing.h>
 #include <CGAL/Surface_mesh_direction_fields/field_singularities.h>
+#include <CGAL/Surface_mesh_direction_fields/field_transfer.h>
 #include <CGAL/Surface_mesh_direction_fields/holonomy_group.h>
 #include <CGAL/Surface_mesh_direction_fields/homotopy_basis.h>
 #include <CGAL/Surface_mesh_direction_fields/parallel_rosy_field.h>
@@ -212,13 +213,23 @@ Json run_rosy(const Args& args)
     carrier = &flat_mesh;
   }
   const bool on_input = carrier == &mesh;
-  auto need_input_faces = [&](std::initializer_list<const char*> options) {
-    for(const char* o : options)
-      if(args.has(o) && !on_input)
-        throw Failed_result{out, file + ": the metric lives on an intrinsic triangulation (edge flips): --" + o +
-                                     " needs it on the input faces (try other cones, or a finer mesh)", 3};
-  };
-  need_input_faces({"edit", "length"});
+  // with flips, everything reaches the input through the common subdivision
+  if(!on_input && !cm.intrinsic_triangulation.has_common_subdivision()) {
+    out["success"] = false;
+    throw Failed_result{out, file + ": the metric lives on an intrinsic triangulation without its correspondence to the input: " +
+                                 cm.correspondence_message, 3};
+  }
+  if(!on_input) {
+    Json c = Json::object();
+    c["intrinsic_edges"] = cm.intrinsic_triangulation.number_of_new_edges();
+    c["crossings"] = cm.intrinsic_triangulation.number_of_crossings();
+    c["pieces"] = cm.intrinsic_triangulation.common_subdivision().size();
+    out["correspondence"] = std::move(c);
+  }
+  // vertex angles: the intrinsic frames' rotation from the input's
+  const std::vector<double> frame_delta =
+      on_input ? std::vector<double>() : SMDF::input_vertex_frame_angles(mesh, cm.intrinsic_triangulation);
+  auto carrier_vertex = [&](vertex_descriptor v) { return vertex_descriptor(std::uint32_t(v.idx())); };   // same indices
   std::vector<vertex_descriptor> cone_vertices;
   for(const auto& c : cones) if(!is_border(c.first, mesh)) cone_vertices.push_back(c.first);
 
@@ -352,23 +363,27 @@ Json run_rosy(const Args& args)
 
   // 6. editing (Lai et al. 4.2): direction and length constraints at vertices
   if(failure.empty() && editing) {
-    SMDF::Rosy_vertex_field_editor<Mesh> editor(mesh, N, vertex_angles, SMDF::parameters::edge_length_map(flat));
+    SMDF::Rosy_vertex_field_editor<Mesh> editor(*carrier, N, vertex_angles, SMDF::parameters::edge_length_map(flat));
     Json e = Json::object();
     if(args.has("edit")) {
       const Constraint_lines c = read_constraint_file(args.value("edit"), mesh, false);
       auto vectors = mesh.add_property_map<vertex_descriptor, K::Vector_3>("v:smdf_rosy_edit", K::Vector_3(0, 0, 0)).first;
       for(const auto& d : c.directions) vectors[d.first] = d.second;
       auto constraint_angles = mesh.add_property_map<vertex_descriptor, double>("v:smdf_rosy_edit_angle", 0.).first;
-      SMDF::vertex_vectors_to_angles(mesh, vectors, constraint_angles, SMDF::parameters::edge_length_map(flat));
+      if(on_input) SMDF::vertex_vectors_to_angles(mesh, vectors, constraint_angles, SMDF::parameters::edge_length_map(flat));
+      else SMDF::vertex_vectors_to_angles(mesh, vectors, constraint_angles);
       std::vector<std::pair<vertex_descriptor, double>> pairs;
-      for(const auto& d : c.directions) pairs.emplace_back(d.first, constraint_angles[d.first]);
+      for(const auto& d : c.directions)
+        pairs.emplace_back(carrier_vertex(d.first), constraint_angles[d.first] + (on_input ? 0. : frame_delta[d.first.idx()]));
       on_file(args.value("edit"), [&] { editor.set_direction_constraints(pairs, c.weights); return 0; });
       e["directions"] = pairs.size();
       e["hard_directions"] = c.hard();
     }
     if(args.has("length")) {
       const Constraint_lines c = read_constraint_file(args.value("length"), mesh, true);
-      on_file(args.value("length"), [&] { editor.set_length_constraints(c.lengths, c.weights); return 0; });
+      std::vector<std::pair<vertex_descriptor, double>> lengths;
+      for(const auto& l : c.lengths) lengths.emplace_back(carrier_vertex(l.first), l.second);
+      on_file(args.value("length"), [&] { editor.set_length_constraints(lengths, c.weights); return 0; });
       e["lengths"] = c.lengths.size();
       e["hard_lengths"] = c.hard();
     }
@@ -381,7 +396,7 @@ Json run_rosy(const Args& args)
     e["max_direction_error"] = es.max_direction_error;
     e["max_length_error"] = es.max_length_error;
     double lo = 1e300, hi = -1e300;
-    for(vertex_descriptor v : vertices(mesh)) { lo = (std::min)(lo, vertex_lengths[v]); hi = (std::max)(hi, vertex_lengths[v]); }
+    for(vertex_descriptor v : vertices(*carrier)) { lo = (std::min)(lo, vertex_lengths[v]); hi = (std::max)(hi, vertex_lengths[v]); }
     e["length_range"] = Json::pair(lo, hi);
     out["edit"] = std::move(e);
     if(!es.success) failure = "editing failed: " + es.message;
@@ -425,22 +440,53 @@ Json run_rosy(const Args& args)
     else if(!prescribed_turning.empty() && found.generator_turning_numbers != prescribed_turning)
       failure = "the field read back with its matching has other generator turning numbers than the prescribed ones";
   }
+  // 7'. with flips: the face field and its matching carried to the input faces, read back there
+  Edge_matching_property input_matching = matching;
+  if(failure.empty() && !on_input) {
+    input_matching = mesh.add_property_map<edge_descriptor, int>("e:smdf_rosy_input_matching", 0).first;
+    std::vector<double> a(num_faces(*carrier));
+    std::vector<int> k(num_edges(*carrier));
+    for(face_descriptor f : faces(*carrier)) a[f.idx()] = angles[f];
+    for(edge_descriptor e : edges(*carrier)) k[e.idx()] = matching[e];
+    const SMDF::Field_transfer_status ts = SMDF::transfer_face_field_to_input(mesh, cm.intrinsic_triangulation, N, a, k,
+                                                                              input_angles, input_matching);
+    const SMDF::Field_topology<Mesh> on_mesh =
+        ts.success ? SMDF::field_singularities(mesh, input_angles, SMDF::parameters::symmetry_order(N).matching(input_matching))
+                   : SMDF::Field_topology<Mesh>();
+    Json t = Json::object();
+    t["found"] = found_list(on_mesh);
+    t["max_distortion"] = ts.max_distortion;
+    t["mean_distortion"] = ts.mean_distortion;
+    out["input_read_back"] = std::move(t);
+    std::map<vertex_descriptor, double> got(on_mesh.singularities.begin(), on_mesh.singularities.end()), want;
+    for(const auto& c : cones) {
+      const double k2 = std::round(c.second / (2 * CGAL_PI) * N) / N;
+      if(!is_border(c.first, mesh) && k2 != 0) want[c.first] = k2;
+    }
+    if(!ts.success) failure = "the field could not be carried to the input faces: " + ts.message;
+    else if(got != want) failure = "the field carried to the input faces reads back, with its matching, other singularities than the cones";
+  }
   out["success"] = failure.empty();
   out["timings"] = std::move(timings);
   if(!failure.empty()) throw Failed_result{out, file + ": " + failure, 3};
 
-  // 8. the files: vertex and face fields in 3D, the matching, the pictures
-  need_input_faces({"field-out", "face-field-out", "matching-out", "svg", "hatching-svg"});
+  // 8. the files, on the input mesh: vertex and face fields in 3D, the matching, the pictures
   if(args.has("field-out")) {
     auto vv = mesh.add_property_map<vertex_descriptor, K::Vector_3>("v:smdf_rosy_vector").first;
-    SMDF::vertex_field_to_vectors(mesh, vertex_angles, vv, SMDF::parameters::edge_length_map(flat));
+    if(on_input) SMDF::vertex_field_to_vectors(mesh, vertex_angles, vv, SMDF::parameters::edge_length_map(flat));
+    else {
+      auto in_angles = mesh.add_property_map<vertex_descriptor, double>("v:smdf_rosy_input_angle", 0.).first;
+      for(vertex_descriptor x : vertices(mesh)) in_angles[x] = vertex_angles[carrier_vertex(x)] - frame_delta[x.idx()];
+      SMDF::vertex_field_to_vectors(mesh, in_angles, vv);
+    }
     std::vector<K::Vector_3> v;
-    for(vertex_descriptor x : vertices(mesh)) v.push_back(vv[x] * vertex_lengths[x]);
+    for(vertex_descriptor x : vertices(mesh)) v.push_back(vv[x] * vertex_lengths[carrier_vertex(x)]);
     write_vectors(args.value("field-out"), v);
   }
   if(args.has("face-field-out") || args.has("svg") || args.has("hatching-svg")) {
     const Face_vector_property vectors = mesh.add_property_map<face_descriptor, K::Vector_3>("f:smdf_rosy_vector").first;
-    SMDF::field_angles_to_vectors(mesh, angles, vectors, SMDF::parameters::edge_length_map(flat));
+    if(on_input) SMDF::field_angles_to_vectors(mesh, angles, vectors, SMDF::parameters::edge_length_map(flat));
+    else SMDF::field_angles_to_vectors(mesh, input_angles, vectors);
     if(args.has("face-field-out")) {
       std::vector<K::Vector_3> v;
       for(face_descriptor f : faces(mesh)) v.push_back(vectors[f]);
@@ -465,7 +511,7 @@ Json run_rosy(const Args& args)
       out["hatching"] = std::move(hj);
     }
   }
-  if(args.has("matching-out")) write_matching(args.value("matching-out"), mesh, matching);
+  if(args.has("matching-out")) write_matching(args.value("matching-out"), mesh, input_matching);
   return out;
 }
 

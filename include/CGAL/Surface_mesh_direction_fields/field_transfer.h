@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,7 @@ struct Field_transfer_status
   /// representative point depart from evenly spaced ones (the map between the two metrics is
   /// projective, not conformal, inside each piece); the matching stays exact below \f$\pi/N\f$
   double max_distortion = 0;
+  double mean_distortion = 0;    ///< the mean of that angle over the input faces
 };
 
 namespace internal {
@@ -169,8 +171,11 @@ Field_transfer_status transfer_face_field_to_input(const TriangleMesh& tm, const
     home[f] = best;
     const internal::Piece_directions d = directions(best);
     beta[f] = angle_at(best, d, centroid, 0);
+    double distortion = 0;
     for(int J = 1; J < N; ++J)
-      st.max_distortion = (std::max)(st.max_distortion, std::abs(internal::wrap_angle(angle_at(best, d, centroid, J) - beta[f] - J * period)));
+      distortion = (std::max)(distortion, std::abs(internal::wrap_angle(angle_at(best, d, centroid, J) - beta[f] - J * period)));
+    st.max_distortion = (std::max)(st.max_distortion, distortion);
+    st.mean_distortion += distortion / double(m.number_of_faces());
     put(input_angles, m.faces[f], beta[f]);
   }
 
@@ -277,6 +282,86 @@ Field_transfer_status transfer_face_field_to_input(const TriangleMesh& tm, const
   }
   st.success = true;
   return st;
+}
+
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsConeMetrics
+/// The rotation between the vertex frames of an intrinsic triangulation and those of the input
+/// mesh: per vertex, the angle (in the intrinsic metric, counterclockwise) from the reference
+/// halfedge of the vertex frames of rotation_compensated_field() on the mesh built by
+/// copy_intrinsic_triangulation() to the input mesh's reference halfedge, found through the
+/// common subdivision. A vertex field of angle \f$a\f$ in the intrinsic frames has angle
+/// \f$a - \delta_v\f$ in the input's (the convention of vertex_field_to_vectors(): angles of
+/// the metric measured from the reference halfedge), and a direction given on the input (e.g.
+/// by vertex_vectors_to_angles()) has \f$a + \delta_v\f$ in the intrinsic frames. 0 at
+/// isolated vertices.
+///
+/// Named parameters: the input metric and index maps, as given to compute_cone_metric().
+/// Throws `Input_error` if `it` has no common subdivision.
+template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
+std::vector<double> input_vertex_frame_angles(const TriangleMesh& tm, const Intrinsic_triangulation& it,
+                                              const NamedParameters& np = parameters::default_values())
+{
+  if(!it.has_common_subdivision())
+    throw Input_error(Input_error::INVALID_ARGUMENT, "input_vertex_frame_angles(): the triangulation has no common subdivision with the input");
+  const Intrinsic_mesh<TriangleMesh> im = internal::get_intrinsic_mesh(tm, np);
+  const internal::Mesh_arrays<TriangleMesh>& m = im.arrays();
+  const std::size_t nv = it.number_of_vertices(), nh = 2 * it.number_of_edges();
+  // the intrinsic reference halfedges, chosen as Mesh_arrays chooses them: the first outgoing
+  // halfedge, or the one whose opposite is a border halfedge
+  std::vector<int> ref(nv, -1);
+  for(std::size_t h = 0; h < nh; ++h) {
+    const int v = it.source(int(h));
+    if(ref[std::size_t(v)] < 0) ref[std::size_t(v)] = int(h);
+    if(it.face(int(h ^ 1)) < 0) ref[std::size_t(v)] = int(h);
+  }
+  auto corner = [&](int h) {   // angle of face(h) at source(h)
+    const int h1 = it.next(h), h2 = it.next(h1);
+    return corner_angle(it.length(h1 >> 1), it.length(h >> 1), it.length(h2 >> 1));
+  };
+  // from the reference halfedge counterclockwise to halfedge `to` (leaving the same vertex)
+  auto angle_to = [&](int from, int to) {
+    double a = 0;
+    for(int h = from, steps = 0; h != to; h = it.next(it.next(h)) ^ 1) {
+      if(it.face(h) < 0 || ++steps > int(nh)) return std::numeric_limits<double>::quiet_NaN();
+      a += corner(h);
+    }
+    return a;
+  };
+  const auto& pieces = it.common_subdivision();
+  std::vector<double> delta(nv, 0.);
+  for(std::size_t v = 0; v < nv; ++v) {
+    const int k = m.vertex_out[v];
+    if(k < 0 || ref[v] < 0) continue;
+    double a = std::numeric_limits<double>::quiet_NaN();
+    // the input halfedge is an intrinsic one
+    for(int h = ref[v], steps = 0; steps <= int(nh); h = it.next(it.next(h)) ^ 1, ++steps) {
+      if(it.input_edge(h >> 1) == long(k >> 1) && it.source(h) == int(v)) { a = angle_to(ref[v], h); break; }
+      if(it.face(h) < 0 || (steps > 0 && h == ref[v])) break;
+    }
+    if(std::isnan(a)) {
+      // else its first segment, a side of a piece of face(k) from the corner at v
+      for(std::size_t i : it.pieces_of_input_face(m.face[std::size_t(k)])) {
+        const auto& P = pieces[i];
+        for(std::size_t s = 0; s < P.corner_ids.size(); ++s) {
+          if(P.input_sides[s] != k || P.corner_ids[s] != long(v)) continue;
+          const auto& c0 = P.intrinsic_corners[s];
+          const auto& c1 = P.intrinsic_corners[(s + 1) % P.corner_ids.size()];
+          const int j = c0[0] > 0.5 ? 0 : c0[1] > 0.5 ? 1 : 2;
+          const int g0 = it.halfedge(P.intrinsic_face);
+          const int gj = j == 0 ? g0 : j == 1 ? it.next(g0) : it.next(it.next(g0));
+          const auto V = lay_out_triangle(it.length(g0 >> 1), it.length(it.next(g0) >> 1), it.length(it.next(it.next(g0)) >> 1));
+          const double px = c1[0] * V[0].x() + c1[1] * V[1].x() + c1[2] * V[2].x(), py = c1[0] * V[0].y() + c1[1] * V[1].y() + c1[2] * V[2].y();
+          const auto& A = V[std::size_t(j)];
+          const auto& B = V[std::size_t((j + 1) % 3)];
+          const double ex = B.x() - A.x(), ey = B.y() - A.y(), dx = px - A.x(), dy = py - A.y();
+          a = angle_to(ref[v], gj) + std::atan2(ex * dy - ey * dx, ex * dx + ey * dy);
+        }
+      }
+    }
+    delta[v] = std::isnan(a) ? 0. : a;
+  }
+  return delta;
 }
 
 } // namespace Surface_mesh_direction_fields
