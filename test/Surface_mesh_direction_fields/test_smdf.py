@@ -856,6 +856,77 @@ def test_shared_rosy(smdf, c, meshes, tmp):
                     "rosy genus 2 (%s): one singularity of index -2, read back (%r)" % (method, r and r.get("found")))
 
 
+def test_shared_rosy_flips(smdf, c, meshes, tmp):
+    """smdf rosy where the metric needs intrinsic flips (random cones of +-pi/2, an adjacent pair
+    among them, on closed shared meshes of genus 0 to 9): every output on the input mesh, the
+    face field with its matching read back by `smdf singularities` exactly as the cones, the
+    vertex field one unit vector per vertex in its tangent plane and along the face field of the
+    faces around it (mod 2 pi / 4: Lai et al.'s vertex field maps metric angles to tangent-plane
+    angles as they are, so the two differ by some 0.1 rad even without flips; an error in the
+    vertex frames would put the median near pi / 8)."""
+    rng = random.Random(36)
+    cases = [("cheburashka_igltut.off", 0), ("homer_cgal.off", 0), ("rotor_cgal.off", 1), ("genus3_vhacd.off", 3),
+             ("casting_vhacd.off", 9)]
+    flipped = 0
+    for name, genus in cases:
+        path = os.path.join(meshes, name)
+        if not os.path.isfile(path) or too_large(meshes, name):
+            continue
+        verts, faces = read_off(path)
+        adjacent = {}
+        for f in faces:
+            for k in range(3):
+                adjacent.setdefault(f[k], set()).add(f[(k + 1) % 3])
+        for attempt in range(3):
+            chi = 2 - 2 * genus
+            cones = {}
+            for _ in range(abs(4 * chi)):
+                v = rng.randrange(len(verts))
+                while v in cones:
+                    v = rng.randrange(len(verts))
+                cones[v] = 1 if chi > 0 else -1
+            a = rng.randrange(len(verts))
+            while a in cones or any(b in cones for b in adjacent[a]):
+                a = rng.randrange(len(verts))
+            b = sorted(adjacent[a])[0]
+            cones[a], cones[b] = 1, -1
+            spec = ",".join("%d:%spi/2" % (v, "" if k > 0 else "-") for v, k in sorted(cones.items()))
+            files = {k: os.path.join(tmp, "flips_%s_%s.txt" % (name, k)) for k in ("face", "matching", "vertex")}
+            args = ["rosy", path, "--cones", spec, "--face-field-out", files["face"], "--matching-out", files["matching"],
+                    "--field-out", files["vertex"], "--svg", os.path.join(tmp, "flips.svg"),
+                    "--hatching-svg", os.path.join(tmp, "flips_hatching.svg")]
+            r = smdf.json(args, "rosy %s with %d cones (flips)" % (name, len(cones)))
+            if not r:
+                continue
+            want = [{"vertex": v, "index": k / 4} for v, k in sorted(cones.items())]
+            c.check(r.get("success") is True and r.get("found") == want and r["input_read_back"]["found"] == want if
+                    r.get("metric", {}).get("triangulation_changed") else r.get("found") == want,
+                    "rosy %s: found on the metric and on the input faces == the cones (%r)" % (name, r.get("input_read_back")))
+            if not r.get("metric", {}).get("triangulation_changed"):
+                continue
+            flipped += 1
+            back = smdf.json(["singularities", path, "--field", files["face"], "--N", "4", "--matching", files["matching"]],
+                             "singularities of the field carried to %s" % name)
+            c.check(back is not None and back.get("singularities") == want,
+                    "rosy %s (%d pieces): smdf singularities reads the input face field with its matching as the cones"
+                    % (name, r["correspondence"]["pieces"]))
+            vv, fv = read_vectors(files["vertex"]), read_vectors(files["face"])
+            normals = vertex_normals(verts, faces)
+            c.check(len(vv) == len(verts) and all(abs(vnorm(v) - 1) < 1e-9 and abs(vdot(v, n)) < 1e-9 * vnorm(n) for v, n in zip(vv, normals)),
+                    "rosy %s --field-out: one unit vector per vertex in its tangent plane" % name)
+            errs = []
+            for fi, f in enumerate(faces):
+                for v in f:
+                    if v not in cones:
+                        errs.append(line_angle_error(vv[v], fv[fi], 4))
+            errs.sort()
+            c.check(errs and errs[len(errs) // 2] < 0.25 and errs[int(len(errs) * 0.95)] < 0.8,
+                    "rosy %s: the vertex field follows the face field (median %.3g, 95%% %.3g rad mod pi/2)"
+                    % (name, errs[len(errs) // 2], errs[int(len(errs) * 0.95)]))
+            break
+    c.check(flipped >= 3, "rosy with flips: %d meshes whose metric needed flips" % flipped)
+
+
 # ---- connection / singularities ---------------------------------------------------------------
 
 def vsub(a, b):
@@ -1473,6 +1544,7 @@ def test_shared(smdf, c, shared):
         test_shared_remesh_refinement(smdf, c, meshes, tmp)
     with tempfile.TemporaryDirectory(prefix="smdf_rosy_") as tmp:
         test_shared_rosy(smdf, c, meshes, tmp)
+        test_shared_rosy_flips(smdf, c, meshes, tmp)
 
 
 def test_shared_remesh_refinement(smdf, c, meshes, tmp):
