@@ -130,6 +130,91 @@ bool cut_jump_form(const Mesh_arrays<TM>& m, const std::vector<double>& w, std::
   return true;
 }
 
+
+// k primal loops of the surface minus the cone vertices whose homology classes are independent
+// (their periods against the k closed forms omega, a basis of the harmonic ones, are linearly
+// independent): the fundamental cycles of a spanning tree of the vertices that are no cones,
+// chosen greedily by the part of their period vector that the chosen ones do not span (a cycle
+// around cones only, or bounding, has periods 0). False if the cones cut the surface apart.
+template <typename TM>
+bool loops_avoiding_cones(const Mesh_arrays<TM>& m, const std::vector<char>& cone,
+                          const std::vector<std::vector<double>>& omega, std::vector<std::vector<int>>& primal,
+                          std::string& message)
+{
+  const std::size_t nv = m.number_of_vertices(), ne = m.number_of_edges(), k = omega.size();
+  auto form_at = [&](std::size_t j, int h) { return (h & 1) ? -omega[j][std::size_t(h >> 1)] : omega[j][std::size_t(h >> 1)]; };
+  std::vector<int> parent(nv, -2);   // halfedge from the parent, -1 at the root
+  std::vector<double> phi(nv * k, 0.);
+  std::size_t root = 0;
+  while(root < nv && (cone[root] || m.is_isolated(int(root)))) ++root;
+  if(root == nv) { message = "every vertex is a cone"; return false; }
+  parent[root] = -1;
+  std::vector<int> queue(1, int(root));
+  for(std::size_t qi = 0; qi < queue.size(); ++qi) {
+    const int v = queue[qi];
+    const int h0 = m.vertex_out[std::size_t(v)];
+    int h = h0;
+    do {
+      const int w = m.target[std::size_t(h)];
+      if(!cone[std::size_t(w)] && parent[std::size_t(w)] == -2) {
+        parent[std::size_t(w)] = h;
+        for(std::size_t j = 0; j < k; ++j) phi[std::size_t(w) * k + j] = phi[std::size_t(v) * k + j] + form_at(j, h);
+        queue.push_back(w);
+      }
+      h = m.ccw_out(h);
+    } while(h != h0);
+  }
+  for(std::size_t v = 0; v < nv; ++v)
+    if(!cone[v] && !m.is_isolated(int(v)) && parent[v] == -2) {
+      message = "the cones cut the surface apart (vertex " + std::to_string(v) + " cannot be reached around them)";
+      return false;
+    }
+  // one pass over the fundamental cycles: a cycle is kept if a tenth of its period vector lies
+  // outside the span of those kept (bounding cycles and cycles around cones have periods 0)
+  std::vector<std::vector<double>> basis;   // orthonormal
+  std::vector<int> chosen;
+  std::vector<double> p(k);
+  double scale = 0;
+  for(std::size_t e = 0; e < ne; ++e)
+    for(std::size_t j = 0; j < k; ++j) scale = (std::max)(scale, std::abs(omega[j][e]));
+  for(std::size_t e = 0; e < ne && chosen.size() < k; ++e) {
+    const int h = int(2 * e), a = m.source(h), b = m.target[std::size_t(h)];
+    if(cone[std::size_t(a)] || cone[std::size_t(b)] || m.is_border_edge(int(e)) || parent[std::size_t(b)] == h ||
+       parent[std::size_t(a)] == (h ^ 1))
+      continue;
+    double norm0 = 0;
+    for(std::size_t j = 0; j < k; ++j) {
+      p[j] = phi[std::size_t(a) * k + j] + form_at(j, h) - phi[std::size_t(b) * k + j];
+      norm0 += p[j] * p[j];
+    }
+    norm0 = std::sqrt(norm0);
+    if(!(norm0 > 1e-6 * scale)) continue;
+    for(const auto& q : basis) {
+      double d = 0;
+      for(std::size_t j = 0; j < k; ++j) d += q[j] * p[j];
+      for(std::size_t j = 0; j < k; ++j) p[j] -= d * q[j];
+    }
+    double norm = 0;
+    for(double x : p) norm += x * x;
+    norm = std::sqrt(norm);
+    if(!(norm > 0.1 * norm0)) continue;
+    for(double& x : p) x /= norm;
+    basis.push_back(p);
+    chosen.push_back(h);
+  }
+  if(chosen.size() < k) { message = "no loops around the cones span the handles"; return false; }
+  for(std::size_t j = 0; j < k; ++j) {
+    const int h = chosen[j];
+    std::vector<int> down;   // root -> source(h)
+    for(int v = m.source(h); parent[std::size_t(v)] >= 0; v = m.source(parent[std::size_t(v)])) down.push_back(parent[std::size_t(v)]);
+    primal[j].assign(down.rbegin(), down.rend());
+    primal[j].push_back(h);
+    for(int v = m.target[std::size_t(h)]; parent[std::size_t(v)] >= 0; v = m.source(parent[std::size_t(v)]))
+      primal[j].push_back(parent[std::size_t(v)] ^ 1);
+  }
+  return true;
+}
+
 } // namespace internal
 
 /// \ingroup PkgSurfaceMeshDirectionFieldsFieldDesign
@@ -214,29 +299,36 @@ Rotation_compensation_status rotation_compensated_field(const TriangleMesh& tm, 
   std::vector<char> cone(nv, 0);
   for(std::size_t v = 0; v < nv; ++v) cone[v] = std::abs(K[v]) > 1e-6;
   // each handle loop as a primal loop of the punctured surface: the tree loop, with every pass
-  // through a cone replaced by the path around the cone's left side (through its link)
+  // through a cone replaced by the path around the cone's left side (through its link); where
+  // that meets another cone, loops of the surface minus the cones chosen afresh (below)
   std::vector<std::vector<int>> primal(k);
-  for(std::size_t j = 0; j < k; ++j) {
+  bool reroute = false;
+  for(std::size_t j = 0; j < k && !reroute; ++j) {
     const std::vector<int>& p = loops[j]->primal;   // prev --in--> u --out--> next
     bool drop_last = false;
-    for(std::size_t i = 0; i < p.size(); ++i) {
+    for(std::size_t i = 0; i < p.size() && !reroute; ++i) {
       const int out = p[i], in = p[(i + p.size() - 1) % p.size()];
       if(!cone[std::size_t(m.source(out))]) { primal[j].push_back(out); continue; }
-      if(cone[std::size_t(m.source(in))]) {
-        st.message = "a handle loop passes through two adjacent cones; rotation compensation needs them apart";
-        return st;
-      }
+      if(cone[std::size_t(m.source(in))]) { reroute = true; break; }   // two adjacent cones on the loop
       if(i > 0) primal[j].pop_back(); else drop_last = true;   // `in` goes
       std::vector<int> link;   // next -> ... -> prev, counterclockwise around the cone
       for(int h = out; h != (in ^ 1); h = m.ccw_out(h)) link.push_back(m.next[std::size_t(h)]);
       for(auto it = link.rbegin(); it != link.rend(); ++it) primal[j].push_back(*it ^ 1);   // prev -> ... -> next
     }
+    if(reroute) break;
     if(drop_last) primal[j].pop_back();
     for(int h : primal[j])
-      if(cone[std::size_t(m.source(h))]) {
-        st.message = "a handle loop passes next to adjacent cones; rotation compensation needs them apart";
-        return st;
-      }
+      if(cone[std::size_t(m.source(h))]) { reroute = true; break; }   // the detour meets an adjacent cone
+  }
+  if(reroute && construction == CUT_AND_DIRICHLET) {
+    st.message = "a handle loop passes next to adjacent cones; the cut-and-Dirichlet construction needs them apart "
+                 "(the default harmonic projection routes the loops around them)";
+    return st;
+  }
+  if(reroute && !turning.empty()) {
+    st.message = "a handle loop of the tree-cotree basis passes next to adjacent cones: its turning number cannot be "
+                 "prescribed (without --turning the loops are routed around the cones)";
+    return st;
   }
   for(std::size_t j = 0; j < k; ++j) {
     std::vector<double> tau(ne, 0.);
@@ -259,6 +351,7 @@ Rotation_compensation_status rotation_compensated_field(const TriangleMesh& tm, 
     omega[j].resize(ne);
     for(std::size_t e = 0; e < ne; ++e) omega[j][e] = tau[e] + hv(m.target[2 * e]) - hv(m.target[2 * e + 1]);
   }
+  if(reroute && !internal::loops_avoiding_cones(m, cone, omega, primal, st.message)) return st;
   // the period matrix and the targets
   Eigen::MatrixXd P = Eigen::MatrixXd::Zero(Eigen::Index(k), Eigen::Index(k));
   Eigen::VectorXd target = Eigen::VectorXd::Zero(Eigen::Index(k));
