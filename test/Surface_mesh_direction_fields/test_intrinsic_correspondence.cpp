@@ -12,12 +12,17 @@
 // - an input vertex's corner maps to that vertex's corner of an intrinsic face;
 // - a cross field of the metric (the trivial connection with the cones as singularities on the
 //   intrinsic triangulation) carried to the input faces with transfer_face_field_to_input()
-//   reads back, with its transferred matching on the input mesh, exactly the cones.
+//   reads back, with its transferred matching on the input mesh, exactly the cones;
+// - automatic singularities (a smooth curvature-aligned field): on a torus of revolution the
+//   field follows the parallels and meridians and has no singularity; on a round sphere the
+//   smoothest cross field has the 8 singularities of index 1/4; on every closed shared mesh the
+//   indices are multiples of 1/N summing to chi.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
+#include <CGAL/Surface_mesh_direction_fields/curvature_aligned_field.h>
 #include <CGAL/Surface_mesh_direction_fields/field_singularities.h>
 #include <CGAL/Surface_mesh_direction_fields/field_transfer.h>
 #include <CGAL/Surface_mesh_direction_fields/Trivial_connection.h>
@@ -30,6 +35,7 @@
 #include <set>
 
 #include "test_util.h"
+#include "mesh_generators.h"
 
 namespace SMDF = CGAL::Surface_mesh_direction_fields;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -244,6 +250,118 @@ void run_mesh(const Mesh& mesh, const std::string& name, int extra, std::mt19937
   (void)sizeof(typename GT::face_descriptor);
 }
 
+
+// An icosphere: the icosahedron subdivided `levels` times, projected on the unit sphere.
+smdf_test::Soup icosphere(int levels)
+{
+  smdf_test::Soup s;
+  const double t = (1 + std::sqrt(5.)) / 2;
+  const double v[12][3] = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+                           {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+  for(const auto& p : v) {
+    const double n = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+    s.points.push_back({p[0] / n, p[1] / n, p[2] / n});
+  }
+  s.faces = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+             {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8}, {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
+  for(int l = 0; l < levels; ++l) {
+    std::map<std::pair<std::size_t, std::size_t>, std::size_t> mid;
+    auto middle = [&](std::size_t a, std::size_t b) {
+      const auto key = std::make_pair((std::min)(a, b), (std::max)(a, b));
+      auto it = mid.find(key);
+      if(it != mid.end()) return it->second;
+      std::array<double, 3> p;
+      for(int i = 0; i < 3; ++i) p[std::size_t(i)] = (s.points[a][std::size_t(i)] + s.points[b][std::size_t(i)]) / 2;
+      const double n = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+      for(double& x : p) x /= n;
+      s.points.push_back(p);
+      return mid[key] = s.points.size() - 1;
+    };
+    std::vector<std::vector<std::size_t>> faces;
+    for(const auto& f : s.faces) {
+      const std::size_t ab = middle(f[0], f[1]), bc = middle(f[1], f[2]), ca = middle(f[2], f[0]);
+      faces.push_back({f[0], ab, ca});
+      faces.push_back({f[1], bc, ab});
+      faces.push_back({f[2], ca, bc});
+      faces.push_back({ab, bc, ca});
+    }
+    s.faces = faces;
+  }
+  return s;
+}
+
+void automatic_singularities_tests(const std::string& dir)
+{
+  // a torus of revolution (R = 3, r = 1): parallels and meridians are the principal directions
+  {
+    smdf_test::Soup soup;
+    const std::size_t n = 60, m = 24;
+    for(std::size_t i = 0; i < n; ++i)
+      for(std::size_t j = 0; j < m; ++j) {
+        const double u = 2 * M_PI * i / n, v = 2 * M_PI * j / m;
+        soup.points.push_back({(3 + std::cos(v)) * std::cos(u), (3 + std::cos(v)) * std::sin(u), std::sin(v)});
+      }
+    auto id = [&](std::size_t i, std::size_t j) { return (i % n) * m + (j % m); };
+    for(std::size_t i = 0; i < n; ++i)
+      for(std::size_t j = 0; j < m; ++j) {
+        soup.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+        soup.faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+      }
+    Surface_mesh torus;
+    smdf_test::soup_to_mesh(soup, torus);
+    auto angles = torus.add_property_map<Surface_mesh::Face_index, double>("f:a", 0.).first;
+    // (alignment favoured: the smoothest cross field of a torus need not follow its parallels)
+    const auto st = SMDF::curvature_aligned_rosy_field(torus, 4, angles, SMDF::parameters::alignment_weight(1.).smoothing_steps(0));
+    SMDF_CHECK_MSG(st.success && st.singularities.empty(), "torus: curvature-aligned cross field without singularity ("
+                                                            << st.singularities.size() << ")");
+    std::vector<double> err;
+    for(auto f : faces(torus)) {
+      const auto h = halfedge(f, torus);
+      const K::Point_3 a = torus.point(source(h, torus)), b = torus.point(target(h, torus)), c = torus.point(target(next(h, torus), torus));
+      const K::Vector_3 e1 = (b - a) / std::sqrt((b - a).squared_length());
+      const K::Vector_3 nrm = CGAL::cross_product(b - a, c - a);
+      const K::Vector_3 e2 = CGAL::cross_product(nrm / std::sqrt(nrm.squared_length()), e1);
+      const K::Point_3 g = CGAL::centroid(a, b, c);
+      const K::Vector_3 parallel(-g.y(), g.x(), 0);   // the direction of the parallel through g
+      const double ap = std::atan2(parallel * e2, parallel * e1);
+      const double d = std::remainder(angles[f] - ap, M_PI / 2);
+      err.push_back(std::abs(d));
+    }
+    std::sort(err.begin(), err.end());
+    SMDF_CHECK_MSG(err[err.size() / 2] < 0.05 && err[err.size() * 95 / 100] < 0.15,
+                   "torus: the field follows parallels and meridians (median " << err[err.size() / 2] << ", 95% "
+                                                                               << err[err.size() * 95 / 100] << " rad)");
+  }
+  // a round sphere: the smoothest cross field has 8 singularities of index 1/4
+  {
+    Surface_mesh sphere;
+    smdf_test::soup_to_mesh(icosphere(4), sphere);
+    const auto st = SMDF::automatic_singularities(sphere, 4, SMDF::parameters::smoothing_steps(30));
+    bool quarter = st.singularities.size() == 8;
+    for(const auto& x : st.singularities) quarter = quarter && x.second == 0.25;
+    SMDF_CHECK_MSG(st.success && quarter, "sphere: the smoothest cross field has 8 singularities of 1/4 (" << st.singularities.size() << ")");
+  }
+  // shared closed meshes: a valid prescription (multiples of 1/N summing to chi)
+  if(dir.empty()) return;
+  for(const std::string name : {"spot_c3d.obj", "homer_cgal.off", "double-torus_jnd.off", "genus3_vhacd.off"}) {
+    Surface_mesh mesh;
+    try { SMDF::read_triangle_mesh(dir + "/meshes/" + name, mesh); } catch(const std::exception&) { continue; }
+    const int chi = int(SMDF::mesh_topology(mesh).euler_characteristic());
+    for(int N : {2, 4, 6}) {
+      const auto st = SMDF::automatic_singularities(mesh, N);
+      double sum = 0;
+      bool multiples = true;
+      for(const auto& x : st.singularities) {
+        sum += x.second;
+        multiples = multiples && std::abs(x.second * N - std::round(x.second * N)) < 1e-12 && x.second != 0;
+      }
+      SMDF_CHECK_MSG(st.success && multiples && std::abs(sum - chi) < 1e-9,
+                     name << " N = " << N << ": " << st.singularities.size() << " singularities summing to " << sum << " (chi " << chi << ")");
+      std::cout << name << " N = " << N << ": " << st.singularities.size() << " automatic singularities" << std::endl;
+    }
+  }
+}
+
 } // namespace
 
 int main()
@@ -280,5 +398,6 @@ int main()
             << " crossings, " << total_pieces << " pieces; largest distortion of a transferred cross field "
             << max_distortion << " rad" << std::endl;
   SMDF_CHECK(runs >= 2);
+  automatic_singularities_tests(dir);
   return smdf_test::finish();
 }

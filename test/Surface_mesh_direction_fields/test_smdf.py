@@ -810,6 +810,25 @@ def test_rosy(smdf, c, torus, tmp):
     smdf.error(["rosy", torus, "--boundary", "free"], "rosy --boundary on a closed mesh", 2, "no boundary")
     smdf.error(["rosy", torus, "--cones", tcones, "--turning", "5:1/4"], "rosy --turning: no such loop", 1, "does not exist")
     smdf.error(["rosy", torus, "--cones", tcones, "--turning", "0:1/3"], "rosy --turning: not a multiple of 1/N", 1, "multiple of 1/4")
+    # --cones auto: the singularities of a smooth curvature-aligned field, prescribed and read back
+    a = smdf.json(["rosy", spot, "--cones", "auto"], "rosy spot --cones auto")
+    if a:
+        idx = [p["index"] for p in a.get("prescribed", [])]
+        c.check(a.get("success") is True and a.get("found") == a.get("prescribed") and a["N"] == 4
+                and a["automatic_cones"]["singularities"] == len(idx) > 0 and abs(sum(idx) - 2) < 1e-9
+                and all(abs(k * 4 - round(k * 4)) < 1e-12 for k in idx),
+                "rosy --cones auto: %d singularities of a curvature-aligned field (indices summing to 2), read back as prescribed"
+                % len(idx))
+    # aligned, unsmoothed: clusters of adjacent cones, faces whose corners are all cones
+    a2 = smdf.json(["rosy", spot, "--cones", "auto", "--alignment-weight", "1", "--smoothing-steps", "0"],
+                   "rosy spot --cones auto, aligned")
+    if a and a2:
+        c.check(a2.get("success") is True and a2["automatic_cones"]["smoothing_steps"] == 0
+                and a2.get("found") == a2.get("prescribed") and len(a2["prescribed"]) > len(a["prescribed"]),
+                "rosy --cones auto --alignment-weight 1 --smoothing-steps 0: %d cones (more than smoothed), read back"
+                % len(a2.get("prescribed", [])))
+    smdf.error(["rosy", spot, "--cones", "auto", "--smoothing-steps", "-1"], "rosy --smoothing-steps -1", 2, "--smoothing-steps")
+    smdf.error(["rosy", spot, "--alignment-weight", "0.5"], "rosy --alignment-weight without auto", 2, "--cones auto")
     smdf.error(["rosy", spot, "--cones", "99999:pi/2"], "rosy: cone out of range", 1, "does not exist")
     smdf.error(["rosy", spot, "--cones", "0:2pi,1:0"], "rosy: cone of index 1", 1, "index 1 or more")
     smdf.error(["rosy", spot, "--cones", "0:pi/2"], "rosy: Gauss-Bonnet", 1, "[inconsistent_indices]")
@@ -925,6 +944,22 @@ def test_shared_rosy_flips(smdf, c, meshes, tmp):
                     % (name, errs[len(errs) // 2], errs[int(len(errs) * 0.95)]))
             break
     c.check(flipped >= 3, "rosy with flips: %d meshes whose metric needed flips" % flipped)
+    # automatic cones on meshes whose metric then needs flips, closed and open
+    for name, extra in (("cheburashka_igltut.off", []), ("camelhead_igltut.off", ["--method", "trivial-connection"])):
+        path = os.path.join(meshes, name)
+        if not os.path.isfile(path) or too_large(meshes, name):
+            continue
+        ff, mm = os.path.join(tmp, "auto_face.txt"), os.path.join(tmp, "auto_matching.txt")
+        r = smdf.json(["rosy", path, "--cones", "auto", "--face-field-out", ff, "--matching-out", mm] + extra, "rosy %s --cones auto" % name)
+        if not r:
+            continue
+        c.check(r.get("success") is True and r.get("found") == r.get("prescribed") and len(r["prescribed"]) == r["automatic_cones"]["singularities"]
+                and (not r["metric"]["triangulation_changed"] or r["input_read_back"]["found"] == r["prescribed"]),
+                "rosy %s --cones auto: %d automatic singularities read back (flips: %r)"
+                % (name, len(r.get("prescribed", [])), r["metric"]["triangulation_changed"]))
+        back = smdf.json(["singularities", path, "--field", ff, "--N", "4", "--matching", mm], "singularities of %s --cones auto" % name)
+        c.check(back is not None and back.get("singularities") == r.get("prescribed"),
+                "rosy %s --cones auto: smdf singularities reads the written field as the prescribed cones" % name)
 
 
 # ---- connection / singularities ---------------------------------------------------------------

@@ -13,6 +13,7 @@
 #include <CGAL/Surface_mesh_direction_fields/Trivial_connection.h>
 #include <CGAL/Surface_mesh_direction_fields/boundary_aligned_field.h>
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
+#include <CGAL/Surface_mesh_direction_fields/curvature_aligned_field.h>
 #include <CGAL/Surface_mesh_direction_fields/field_editing.h>
 #include <CGAL/Surface_mesh_direction_fields/field_singularities.h>
 #include <CGAL/Surface_mesh_direction_fields/field_transfer.h>
@@ -119,7 +120,50 @@ Json run_rosy(const Args& args)
   const SMDF::Svg_options svg = svg_options(args);
   Mesh mesh;
   load_mesh(file, mesh);
-  const std::vector<std::pair<vertex_descriptor, double>> cones = cone_option(args, mesh);
+  // --cones auto: the singularities of a smooth curvature-aligned field (N given, else 4)
+  const bool automatic = args.has("cones") && args.value("cones") == "auto";
+  if(automatic && args.has("cone-indices")) throw Usage_error("--cones auto takes no --cone-indices");
+  if((args.has("alignment-weight") || args.has("smoothing-steps")) && !automatic)
+    throw Usage_error("--alignment-weight and --smoothing-steps need --cones auto");
+  Json automatic_json;
+  const std::vector<std::pair<vertex_descriptor, double>> cones = [&] {
+    if(!automatic) return cone_option(args, mesh);
+    const int n = opt.N ? int(opt.N) : 4;
+    double weight = 0.01;
+    if(args.has("alignment-weight")) {
+      char* end = nullptr;
+      const std::string w = args.value("alignment-weight");
+      weight = std::strtod(w.c_str(), &end);
+      if(*end != '\0' || !(weight > 0) || !std::isfinite(weight))
+        throw Usage_error("option --alignment-weight expects a positive number, got '" + shorten(w) + "'");
+    }
+    long steps = 4;
+    if(args.has("smoothing-steps")) {
+      char* end = nullptr;
+      const std::string w = args.value("smoothing-steps");
+      steps = std::strtol(w.c_str(), &end, 10);
+      if(*end != '\0' || w.empty() || steps < 0 || steps > 1000)
+        throw Usage_error("option --smoothing-steps expects an integer from 0 to 1000, got '" + shorten(w) + "'");
+    }
+    const auto st = on_file(file, [&] {
+      return SMDF::automatic_singularities(mesh, n, SMDF::parameters::alignment_weight(weight).smoothing_steps(int(steps)));
+    });
+    if(!st.success) throw Error(file + ": the curvature-aligned field failed: " + st.message);
+    automatic_json = Json::object();
+    automatic_json["N"] = n;
+    automatic_json["alignment_weight"] = weight;
+    automatic_json["smoothing_steps"] = steps;
+    automatic_json["singularities"] = st.singularities.size();
+    automatic_json["max_rotation_over_pi_over_N"] = st.max_rotation_over_pi_over_N;
+    std::vector<std::pair<vertex_descriptor, double>> c;
+    for(const auto& x : st.singularities) {
+      if(!(x.second < 1))
+        throw Error(file + ": the curvature-aligned field has a singularity of index " + format_real(x.second) + " at vertex " +
+                    std::to_string(index(x.first)) + " (1 or more: punched holes are not supported); try another --alignment-weight");
+      c.emplace_back(x.first, 2 * CGAL_PI * x.second);
+    }
+    return c;
+  }();
   const bool open = !SMDF::mesh_topology(mesh).is_closed();
   if(opt.boundary_given && !open) throw Usage_error("--boundary: " + file + " has no boundary");
   const bool editing = args.has("edit") || args.has("length");
@@ -137,8 +181,10 @@ Json run_rosy(const Args& args)
     }
     if(N == 0) throw Error("no N <= 24 makes every cone curvature a multiple of 2 pi / N; give --N");
   }
+  if(automatic && !opt.N) N = 4;
   out["N"] = N;
-  out["N_from"] = opt.N ? "option" : "cones";
+  out["N_from"] = opt.N ? "option" : automatic ? "automatic cones" : "cones";
+  if(automatic) out["automatic_cones"] = std::move(automatic_json);
 
   // 1. the method
   Rosy_method method = opt.method;
@@ -518,7 +564,10 @@ Json run_rosy(const Args& args)
 Command rosy_command()
 {
   return {"rosy", {"MESH"},
-          {{"cones", "LIST", "cone curvatures 'v:K,...', K in radians (pi/2, -pi, 2*pi/3, ...); at boundary vertices the boundary's turning angle"},
+          {{"cones", "LIST", "cone curvatures 'v:K,...', K in radians (pi/2, -pi, 2*pi/3, ...); at boundary vertices the boundary's turning angle; "
+                             "or 'auto': the singularities of a smooth curvature-aligned N-RoSy field"},
+           {"alignment-weight", "W", "--cones auto: weight of the alignment with the curvature against smoothness (default 0.01; larger: more singularities)"},
+           {"smoothing-steps", "S", "--cones auto: further diffusion steps of the field towards the smoothest one (default 4)"},
            {"cone-indices", "LIST", "the same as indices 'v:k,...', K = 2 pi k (k below 1)"},
            {"N", "n", "symmetry order (default: the smallest N for which every cone curvature is a multiple of 2 pi / N)"},
            {"method", "M", "rotation-compensation (default on closed meshes), parallel (default on open ones) or trivial-connection"},
@@ -573,8 +622,12 @@ Command rosy_command()
           "than pi / N per edge relative to the metric's transport. Exit code 3 (JSON printed)\n"
           "when the metric does not converge, the cones are no multiples of 2 pi / N, no parallel\n"
           "field exists, an edit fails, or the read-back differs from the cones. Face vectors are\n"
-          "mapped to 3D by the linear map from each metric triangle to the embedded one; the files\n"
-          "and pictures need the metric on the input triangulation (no edge flips).\n",
+          "mapped to 3D by the linear map from each metric triangle to the embedded one. When the\n"
+          "metric needed edge flips, the field lives on its intrinsic triangulation and reaches the\n"
+          "input faces through their common subdivision: correspondence: {intrinsic_edges,\n"
+          "crossings, pieces}, input_read_back: {found, max_distortion, mean_distortion} (the face\n"
+          "field carried to the input faces, read back there with its carried matching; the\n"
+          "files, pictures and edits are on the input mesh).\n",
           run_rosy};
 }
 

@@ -86,7 +86,15 @@ void open_mesh_targets(const Mesh& mesh, const Boundary_geometry& b, int N, Boun
     }
   } else {
     double sum = 0;
-    for(vertex_descriptor v : free_vertices) { targets[v] = step * std::round(b.kappa[index(v)] / step); sum += targets[v]; }
+    // the nearest multiple of the step inside (-pi, pi): a turning that rounds to +-pi takes the
+    // multiple on its side of it, and Gauss-Bonnet is then restored by the moves below
+    for(vertex_descriptor v : free_vertices) {
+      double t = step * std::round(b.kappa[index(v)] / step);
+      while(t > CGAL_PI - 1e-9) t -= step;
+      while(t < -CGAL_PI + 1e-9) t += step;
+      targets[v] = t;
+      sum += t;
+    }
     long moves = std::lround((required - sum) / step);
     while(moves != 0) {
       const double dir = moves > 0 ? 1. : -1.;
@@ -99,7 +107,15 @@ void open_mesh_targets(const Mesh& mesh, const Boundary_geometry& b, int N, Boun
         if(cut > best_cut) { best_cut = cut; best = v; }
       }
       if(best_cut == -1e300)
-        throw Error("no boundary turning angles that are multiples of " + format_real(step) + " below pi satisfy Gauss-Bonnet; give the corners with --cones");
+      {
+        double largest = 0;   // the largest multiple of the step strictly below pi
+        while(largest + step < CGAL_PI - 1e-9) largest += step;
+        throw Error("no boundary turning angles that are multiples of " + format_real(step) + " strictly between -pi and pi satisfy "
+                    "Gauss-Bonnet: the " + std::to_string(free_vertices.size()) + " free boundary vertices must turn by " +
+                    format_real(required) + " in all (2 pi chi = " + format_real(2 * CGAL_PI * chi) + " minus the cones' " +
+                    format_real(fixed_total) + "), at most " + format_real(largest * double(free_vertices.size())) +
+                    " in absolute value; give the corners with --cones");
+      }
       targets[best] += dir * step;
       moves -= long(dir);
     }

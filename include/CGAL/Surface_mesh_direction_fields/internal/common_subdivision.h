@@ -127,14 +127,12 @@ public:
       queue.pop_back();
       in_queue[e] = 0;
       if(!tri.is_flippable(e)) continue;
+      if(!tri.needs_delaunay_flip(e, len)) continue;
+      if(++flips > budget) throw internal_correspondence_error("Delaunay flips do not terminate");
       const int h = 2 * e, o = h + 1;
       const int h1 = tri.next[h], h2 = tri.next[h1], o1 = tri.next[o], o2 = tri.next[o1];
-      const double le = len[e], a1 = len[h1 >> 1], a2 = len[h2 >> 1], b1 = len[o1 >> 1], b2 = len[o2 >> 1];
-      const double cos_sum = (a1 * a1 + a2 * a2 - le * le) / (2 * a1 * a2) + (b1 * b1 + b2 * b2 - le * le) / (2 * b1 * b2);
-      if(!(cos_sum < -1e-12)) continue;
-      if(++flips > budget) throw internal_correspondence_error("Delaunay flips do not terminate");
       if(track) flip(e);
-      else { l0[e] = (l0[h1 >> 1] * l0[o1 >> 1] + l0[h2 >> 1] * l0[o2 >> 1]) / l0[e]; tri.flip(e); coincident[e] = -1; }
+      else { l0[e] = tri.ptolemy(e, l0); tri.flip(e); coincident[e] = -1; }
       len[e] = l0[e] * half_exp[tri.target[h]] * half_exp[tri.target[o]];
       for(int g : {h1, h2, o1, o2})
         if(!in_queue[g >> 1]) { in_queue[g >> 1] = 1; queue.push_back(g >> 1); }
@@ -209,7 +207,7 @@ private:
     // slots: a = source(h), b = target(h), c = target(h1), d = target(o1)
     const int va = tri.target[o], vb = tri.target[h], vc = tri.target[h1], vd = tri.target[o1];
     const double ab = l0[e], bc = l0[h1 >> 1], ca = l0[h2 >> 1], ad = l0[o1 >> 1], db = l0[o2 >> 1];
-    const double cd = (bc * ad + ca * db) / ab;
+    const double cd = tri.ptolemy(e, l0);
     if(!std::isfinite(cd) || !(cd > 0)) throw internal_correspondence_error("Ptolemy flip out of range");
     // frame: p_d from <p_d, p_x> = -l_xd^2 / 2 (x = a, b, c), Cramer on the Gram matrix of a, b, c
     const double AB = ab * ab, BC = bc * bc, CA = ca * ca;

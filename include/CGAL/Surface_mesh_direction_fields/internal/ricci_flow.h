@@ -49,6 +49,25 @@ struct Flippable_triangulation
     return face[2 * e] >= 0 && face[2 * e + 1] >= 0 && face[2 * e] != face[2 * e + 1];
   }
 
+  // Whether interior edge e is not Delaunay for the lengths len: the cosines of the two corners
+  // opposite e, by the law of cosines, sum below 0 (defined, and the right test, Gillespie et
+  // al. 2021, even when a triangle violates the triangle inequality).
+  bool needs_delaunay_flip(int e, const std::vector<double>& len) const
+  {
+    const int h = 2 * e, o = h + 1;
+    const int h1 = next[h], h2 = next[h1], o1 = next[o], o2 = next[o1];
+    const double le = len[e], a1 = len[h1 >> 1], a2 = len[h2 >> 1], b1 = len[o1 >> 1], b2 = len[o2 >> 1];
+    const double cos_sum = (a1 * a1 + a2 * a2 - le * le) / (2 * a1 * a2) + (b1 * b1 + b2 * b2 - le * le) / (2 * b1 * b2);
+    return cos_sum < -1e-12;
+  }
+  // The Penner coordinate of the diagonal that a flip of e creates (Ptolemy).
+  double ptolemy(int e, const std::vector<double>& l0) const
+  {
+    const int h = 2 * e, o = h + 1;
+    const int h1 = next[h], h2 = next[h1], o1 = next[o], o2 = next[o1];
+    return (l0[h1 >> 1] * l0[o1 >> 1] + l0[h2 >> 1] * l0[o2 >> 1]) / l0[e];
+  }
+
   // Edge ab between faces abc (halfedge h = a->b) and bad becomes cd, between dca and cdb.
   void flip(int e)
   {
@@ -248,17 +267,12 @@ public:
       if(!tri_.is_flippable(e)) continue;
       const int h = 2 * e, o = h + 1;
       const int h1 = tri_.next[h], h2 = tri_.next[h1], o1 = tri_.next[o], o2 = tri_.next[o1];
-      const double le = len[e], a1 = len[h1 >> 1], a2 = len[h2 >> 1], b1 = len[o1 >> 1], b2 = len[o2 >> 1];
-      // cos of the two corners opposite e, by the law of cosines, defined (and the right test,
-      // Gillespie et al. 2021) even when a triangle violates the triangle inequality
-      const double cos_sum = (a1 * a1 + a2 * a2 - le * le) / (2 * a1 * a2) +
-                             (b1 * b1 + b2 * b2 - le * le) / (2 * b1 * b2);
-      if(!(cos_sum < -1e-12)) continue;
+      if(!tri_.needs_delaunay_flip(e, len)) continue;
       if(++flips > budget) return false;
       // Ptolemy on the Penner coordinates themselves (it commutes with vertex scaling), not
       // through the current lengths and exp(-(u_c + u_d) / 2), which moved the coordinates by
       // the rounding of exp at every flip.
-      const double p_new = (l0_[h1 >> 1] * l0_[o1 >> 1] + l0_[h2 >> 1] * l0_[o2 >> 1]) / l0_[e];
+      const double p_new = tri_.ptolemy(e, l0_);
       if(!std::isfinite(p_new) || !(p_new > 0)) return false;
       tri_.flip(e);
       l0_[e] = p_new;
