@@ -861,6 +861,36 @@ def test_shared_rosy(smdf, c, meshes, tmp):
                 worst = max(line_angle_error(fv[f], vsub(verts[e[1]], verts[e[0]]), 4) for e, f in border)
                 c.check(worst < 1e-6, "rosy mushroom --boundary %s: on each of the %d boundary faces one direction is %s to the edge (%.3g)"
                         % (mode, len(border), mode, worst))
+    # several boundary loops, every N: the field follows every boundary edge of every loop
+    for name, modes in (("holes_cgal.off", ((3, "parallel"), (4, "orthogonal"), (6, "parallel"))),
+                        ("alex_ghm.off", ((4, "parallel"), (3, "orthogonal")))):
+        path = os.path.join(meshes, name)
+        if not os.path.isfile(path) or too_large(meshes, name):
+            continue
+        verts, faces = read_off(path)
+        edge_faces = {}
+        for fi, f in enumerate(faces):
+            for k in range(3):
+                a, b = f[k], f[(k + 1) % 3]
+                edge_faces.setdefault((min(a, b), max(a, b)), []).append(fi)
+        border = [(e, fs[0]) for e, fs in edge_faces.items() if len(fs) == 1]
+        for N, mode in modes:
+            ff = os.path.join(tmp, "loops_%s_%d.txt" % (mode, N))
+            r = smdf.json(["rosy", path, "--N", str(N), "--boundary", mode, "--face-field-out", ff], "rosy %s --N %d --boundary %s" % (name, N, mode))
+            if not r:
+                continue
+            fv = read_vectors(ff)
+            orth = mode == "orthogonal"
+            worst = 0
+            for e, f in border:
+                d = vsub(verts[e[1]], verts[e[0]])
+                if orth:
+                    a, b, cc = (verts[i] for i in faces[f])
+                    d = vcross(vcross(vsub(b, a), vsub(cc, a)), d)
+                worst = max(worst, line_angle_error(fv[f], d, N if N % 2 == 0 else 2 * N))
+            c.check(r.get("success") is True and r.get("found") == [] and worst < 1e-6,
+                    "rosy %s (%d loops) --N %d --boundary %s: every boundary face %s to its edge (%.3g), no singularity"
+                    % (name, len(r.get("boundary_turning_over_pi", [])), N, mode, mode, worst))
     annulus = os.path.join(meshes, "annulus_igltest.obj")
     if os.path.isfile(annulus):
         r = smdf.json(["rosy", annulus, "--N", "4"], "rosy annulus, free boundary")

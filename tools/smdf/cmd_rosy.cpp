@@ -109,6 +109,12 @@ Rosy_options rosy_options(const Args& args)
   return o;
 }
 
+bool has_handles(const Mesh& mesh)
+{
+  for(const auto& c : SMDF::mesh_topology(mesh).components) if(c.genus > 0) return true;
+  return false;
+}
+
 bool multiple_of(double K, int N) { const double k = K / (2 * CGAL_PI) * N; return std::abs(k - std::round(k)) < 1e-6; }
 
 } // namespace
@@ -189,7 +195,9 @@ Json run_rosy(const Args& args)
   // 1. the method
   Rosy_method method = opt.method;
   if(open && opt.boundary != FREE_BOUNDARY) method = BOUNDARY_ALIGNED;
-  else if(method == AUTOMATIC) method = open ? PARALLEL : ROTATION_COMPENSATION;
+  // (open meshes with handles: no parallel field in general, and rotation compensation is for
+  // closed meshes: the trivial connection of the metric)
+  else if(method == AUTOMATIC) method = !open ? ROTATION_COMPENSATION : has_handles(mesh) ? TRIVIAL_CONNECTION : PARALLEL;
   if(method == ROTATION_COMPENSATION && open)
     throw Usage_error("--method rotation-compensation needs a closed mesh; on " + file +
                       " use --method parallel or trivial-connection (free boundary) or --boundary parallel|orthogonal");

@@ -114,10 +114,42 @@ void open_mesh_targets(const Mesh& mesh, const Boundary_geometry& b, int N, Boun
                     "Gauss-Bonnet: the " + std::to_string(free_vertices.size()) + " free boundary vertices must turn by " +
                     format_real(required) + " in all (2 pi chi = " + format_real(2 * CGAL_PI * chi) + " minus the cones' " +
                     format_real(fixed_total) + "), at most " + format_real(largest * double(free_vertices.size())) +
-                    " in absolute value; give the corners with --cones");
+                    " in absolute value; give the corners with --cones, or interior cones whose indices sum to chi minus the "
+                    "boundary's turning over 2 pi");
       }
       targets[best] += dir * step;
       moves -= long(dir);
+    }
+    // odd N (steps of pi / N): a loop that turns by an odd multiple of pi / N would carry the
+    // field to its opposite, no N-RoSy field; such loops come in pairs (the total is a multiple
+    // of 2 pi / N) and each pair trades one step, where the rounding cut least
+    if(N % 2 == 1) {
+      std::vector<std::size_t> odd;
+      for(std::size_t l = 0; l < b.loops.size(); ++l) {
+        double total = 0;
+        for(vertex_descriptor v : b.loops[l]) total += targets[v];
+        if(std::lround(total / step) % 2 != 0) odd.push_back(l);
+      }
+      for(std::size_t i = 0; i + 1 < odd.size(); i += 2) {
+        for(int k = 0; k < 2; ++k) {
+          const double dir = k == 0 ? 1. : -1.;
+          vertex_descriptor best = vertex_descriptor();
+          double best_cut = -1e300;
+          for(vertex_descriptor v : b.loops[odd[i + std::size_t(k)]]) {
+            if(fixed[index(v)]) continue;
+            const double next = targets[v] + dir * step;
+            if(!(next < CGAL_PI - 1e-9 && next > -CGAL_PI + 1e-9)) continue;
+            const double cut = dir * (b.kappa[index(v)] - targets[v]);
+            if(cut > best_cut) { best_cut = cut; best = v; }
+          }
+          if(best_cut == -1e300)
+            throw Error("boundary loop " + std::to_string(odd[i + std::size_t(k)]) + " turns by an odd multiple of pi / " + std::to_string(N) +
+                        " and none of its vertices can turn by one step more: give its corners with --cones");
+          targets[best] += dir * step;
+        }
+      }
+      if(odd.size() % 2)
+        throw Error("one boundary loop turns by an odd multiple of pi / " + std::to_string(N) + ": give the corners with --cones");
     }
   }
   for(vertex_descriptor v : free_vertices)

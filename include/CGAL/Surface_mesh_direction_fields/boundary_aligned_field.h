@@ -11,6 +11,8 @@
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/errors.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/development.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/cotan_weights.h>
+#include <CGAL/Surface_mesh_direction_fields/Cholmod_cholesky.h>
 #include <CGAL/Surface_mesh_direction_fields/parallel_rosy_field.h>
 #include <CGAL/Surface_mesh_direction_fields/rotation_compensation.h>
 
@@ -21,6 +23,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -177,6 +180,17 @@ Boundary_aligned_field_status boundary_aligned_rosy_field(const TriangleMesh& tm
     beta[f] = cover_angle[typename Cover::Face_index(Cover::size_type(f))] - internal::halfedge_direction(mc, hc) +
               internal::halfedge_direction(mf, hi);
   }
+  // The cover has handles (several boundary loops, or handles of the mesh): its compensated
+  // field need not be symmetric under the mirror and may turn along the boundary. Where the mesh
+  // itself carries a parallel field of the restricted metric (no handles, and boundary loops
+  // that turn by multiples of 2 pi / N), that one is taken: it runs along every boundary loop
+  // at a constant angle, which the harmonic rotation below removes.
+  if(st.rotation_compensation) {
+    auto tmp = get(CGAL::dynamic_face_property_t<double>(), tm);
+    const Parallel_rosy_status own_ps = parallel_rosy_field(tm, N, tmp, parameters::edge_length_map(output_lengths));
+    if(own_ps.success)
+      for(std::size_t f = 0; f < nf; ++f) beta[f] = get(tmp, m.faces[f]);
+  }
   // turn the whole field so that it follows the first boundary edge
   const int hb = topo.loops[0][0] ^ 1;   // the interior halfedge of a boundary edge
   const int fb = mf.face[std::size_t(hb)];
@@ -191,6 +205,62 @@ Boundary_aligned_field_status boundary_aligned_rosy_field(const TriangleMesh& tm
   // parallel to an edge = one of the N directions on its line, in either orientation: modulo
   // 2 pi / N for even N, pi / N for odd N (the directions and their opposites)
   const double line_period = N % 2 == 0 ? period : CGAL_PI / N;
+  // Several boundary loops: the field follows the first one; along each other loop (a geodesic
+  // with corners that turn by multiples of the period) it makes a constant angle d_j with the
+  // boundary. A harmonic rotation theta (cotan Laplace of the flat metric) equal to -d_j on loop
+  // j turns it onto every loop without new singularity: an exact 1-form, the double cover's
+  // compensation that is odd under the mirror (the even one would turn the field along the
+  // boundary loops themselves). Faces on a boundary edge take the loop's value, so the
+  // alignment there is exact.
+  if(topo.loops.size() > 1) {
+    std::vector<double> fixed(nv, std::numeric_limits<double>::quiet_NaN());
+    for(const auto& loop : topo.loops) {
+      const int h = loop[0] ^ 1;
+      const double d = std::remainder(beta[std::size_t(mf.face[std::size_t(h)])] - internal::halfedge_direction(mf, h) -
+                                      (st.orthogonal ? CGAL_PI / 2 : 0.), line_period);
+      for(int b : loop) fixed[std::size_t(mf.source(b))] = -d;
+    }
+    std::vector<int> col(nv, -1);
+    int n = 0;
+    for(std::size_t v = 0; v < nv; ++v) if(std::isnan(fixed[v]) && !m.is_isolated(int(v))) col[v] = n++;
+    std::vector<double> theta(nv, 0.);
+    for(std::size_t v = 0; v < nv; ++v) if(!std::isnan(fixed[v])) theta[v] = fixed[v];
+    if(n > 0) {
+      const std::vector<double> w = internal::floored_cotan_edge_weights(mf);
+      std::vector<Eigen::Triplet<double>> t;
+      Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n);
+      for(std::size_t e = 0; e < ne; ++e) {
+        const int a = mf.source(int(2 * e)), b = mf.target[2 * e];
+        const int ca = col[std::size_t(a)], cb = col[std::size_t(b)];
+        if(ca >= 0) t.emplace_back(ca, ca, w[e]);
+        if(cb >= 0) t.emplace_back(cb, cb, w[e]);
+        if(ca >= 0 && cb >= 0) t.emplace_back((std::max)(ca, cb), (std::min)(ca, cb), -w[e]);
+        else if(ca >= 0) rhs[ca] += w[e] * theta[std::size_t(b)];
+        else if(cb >= 0) rhs[cb] += w[e] * theta[std::size_t(a)];
+      }
+      Cholmod_cholesky::Matrix L(n, n);
+      L.setFromTriplets(t.begin(), t.end());
+      L.makeCompressed();
+      Cholmod_cholesky chol;
+      if(!chol.factor(L, st.message)) return st;
+      const Eigen::VectorXd x = chol.solve(rhs);
+      for(std::size_t v = 0; v < nv; ++v) if(col[v] >= 0) theta[v] = x[col[v]];
+    }
+    for(std::size_t f = 0; f < nf; ++f) {
+      const int h0 = mf.face_halfedge[f];
+      double r = 0;
+      int on_boundary = -1;
+      for(int h = h0, i = 0; i < 3; h = mf.next[std::size_t(h)], ++i) {
+        r += theta[std::size_t(mf.source(h))] / 3;
+        if(mf.face[std::size_t(h ^ 1)] < 0) on_boundary = h;
+      }
+      if(on_boundary >= 0) r = theta[std::size_t(mf.source(on_boundary))];
+      double a = beta[f] + r;
+      a -= 2 * CGAL_PI * std::floor(a / (2 * CGAL_PI));
+      beta[f] = a;
+      put(face_angles, m.faces[f], a);
+    }
+  }
   for(const auto& loop : topo.loops)
     for(int b : loop) {
       const int h = b ^ 1;
