@@ -347,7 +347,7 @@ void BM_remesh_pipeline(benchmark::State& state)
       auto box = work.add_property_map<Mesh::Edge_index, double>("e:bench_box", 0.).first;
       for(Vertex v : cones) put(target, v, CGAL_PI / 2);
       auto t0 = std::chrono::steady_clock::now();
-      const SMDF::Cone_metric_status cm = SMDF::compute_cone_metric(work, target, flat, SMDF::parameters::conformal_factor_map(u).curvature_tolerance(1e-6));
+      const SMDF::Cone_metric_status cm = SMDF::compute_cone_metric(work, target, flat, SMDF::parameters::conformal_factor_map(u).curvature_tolerance(1e-6).common_subdivision(false));
       metric_s += since(t0);
       if(!cm.converged) { ok = false; message = "flat cone metric: " + cm.message; }
       flips = cm.edge_flips;

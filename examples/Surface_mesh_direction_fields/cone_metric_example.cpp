@@ -97,7 +97,17 @@ int main(int argc, char* argv[])
       Mesh flat;
       Mesh::Property_map<Edge, double> flat_lengths = flat.add_property_map<Edge, double>("e:length", 0.).first;
       SMDF::copy_intrinsic_triangulation(it, tm, flat, flat_lengths);
+      // The correspondence with the input: the centroid of intrinsic face 0 on the input mesh
+      // (an input face and barycentric coordinates), and back.
+      SMDF::Surface_point p;
+      p.face = 0;
+      p.barycentric = {{1. / 3, 1. / 3, 1. / 3}};
+      const SMDF::Surface_point q = it.locate_on_input(p);
+      const SMDF::Surface_point back = it.locate_on_intrinsic(q);
+      std::cout << "  common subdivision: " << it.common_subdivision().size() << " pieces; the centroid of intrinsic face 0 "
+                << "lies in input face " << q.face << ", and maps back to face " << back.face << "\n";
       //! [intrinsic_flips]
+      ok = ok && it.has_common_subdivision() && back.face == 0 && std::abs(back.barycentric[0] - 1. / 3) < 1e-10;
       for(Vertex v : vertices(tm)) expected[v.idx()] = target[v];
       const double err = curvature_error(flat, flat_lengths, expected);
       std::cout << "  recomputed curvature error on the intrinsic triangulation " << err << "\n";

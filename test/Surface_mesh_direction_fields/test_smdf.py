@@ -974,6 +974,32 @@ def test_shared_rosy_flips(smdf, c, meshes, tmp):
                     % (name, errs[len(errs) // 2], errs[int(len(errs) * 0.95)]))
             break
     c.check(flipped >= 3, "rosy with flips: %d meshes whose metric needed flips" % flipped)
+    # connection --factors: the trivial connection of a cone metric that needed flips (saved by
+    # cone-metric --factors-out), its field carried to the input and read back there
+    path = os.path.join(meshes, "cheburashka_igltut.off")
+    if os.path.isfile(path) and not too_large(meshes, "cheburashka_igltut.off"):
+        corners = [100, 900, 1700, 2500, 3300, 4100, 4900, 5700]
+        u = os.path.join(tmp, "factors.txt")
+        m = smdf.json(["cone-metric", path, "--cones", ",".join("%d:pi/2" % v for v in corners), "--factors-out", u],
+                      "cone-metric cheburashka --factors-out")
+        sing = ",".join("%d:1/4" % v for v in corners)
+        ff, mm = os.path.join(tmp, "factors_field.txt"), os.path.join(tmp, "factors_matching.txt")
+        r = smdf.json(["connection", path, "--N", "4", "--singularities", sing, "--factors", u, "--field-out", ff, "--matching-out", mm],
+                      "connection cheburashka --factors (flips)")
+        want = [{"vertex": v, "index": 0.25} for v in corners]
+        if m and r:
+            c.check(m.get("triangulation_changed") is True and r.get("metric") == "factors" and r.get("found") == want
+                    and r["input_read_back"]["found"] == want and r.get("max_rotation", 1) < 1e-6,
+                    "connection --factors: the flat metric's connection is parallel (max_rotation %r), read back on the input (%d pieces)"
+                    % (r.get("max_rotation"), r.get("correspondence", {}).get("pieces", 0)))
+            back = smdf.json(["singularities", path, "--field", ff, "--N", "4", "--matching", mm], "singularities of connection --factors")
+            c.check(back is not None and back.get("singularities") == want,
+                    "connection --factors: smdf singularities reads the written field and matching as prescribed")
+        smdf.error(["connection", path, "--factors", u, "--lengths", u], "connection --factors with --lengths", 2, "not both")
+        with open(os.path.join(tmp, "bad_factors.txt"), "w") as f:
+            f.write("0.1\n0.2\n")
+        smdf.error(["connection", path, "--factors", os.path.join(tmp, "bad_factors.txt")], "connection --factors: too few", 1,
+                   "have no conformal factor")
     # automatic cones on meshes whose metric then needs flips, closed and open
     for name, extra in (("cheburashka_igltut.off", []), ("camelhead_igltut.off", ["--method", "trivial-connection"])):
         path = os.path.join(meshes, name)

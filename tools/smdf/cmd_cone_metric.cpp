@@ -379,6 +379,14 @@ Json run_cone_metric(const Args& args)
   // go to --lengths-out, its faces to --triangulation-out.
   if(args.has("lengths-out")) write_lengths(args.value("lengths-out"), mesh, lengths, st);
   if(args.has("triangulation-out")) write_triangulation(args.value("triangulation-out"), mesh, st);
+  if(args.has("factors-out")) {
+    if(!st.punched_vertices.empty())
+      throw Failed_result{status_json(args, mesh, targets, st),
+                          file + ": --factors-out: the metric has punched holes, which no factors of the input's vertices describe", 3};
+    std::ostringstream os = number_stream();
+    for(vertex_descriptor v : vertices(mesh)) os << get(ufac, v) << '\n';
+    write_lines_file(args.value("factors-out"), os.str());
+  }
 
   Json out = status_json(args, mesh, targets, st);
   if(args.has("refine")) out["delaunay_refinement"] = refinement;
@@ -402,6 +410,7 @@ Command cone_metric_command()
            {"boundary-curvature", "LIST", "target geodesic curvatures 'v:kappa,...' of boundary vertices"},
            {"lengths-out", "FILE", "write the metric: one line 'i j length' per edge (intrinsic edges after flips)"},
            {"triangulation-out", "FILE", "write the triangulation carrying the metric as OFF (input faces if no flips)"},
+           {"factors-out", "FILE", "write the conformal factor u of every vertex, one per line (connection --factors)"},
            {"uv-out", "FILE", "disks only: write the flat layout, one line 'u v' per vertex"},
            {"svg", "FILE", "disks only: draw the flat layout, faces coloured by the conformal factor"},
            {"iterations", "n", "maximum number of Newton iterations (default 200)"},

@@ -6,6 +6,10 @@
 #include "commands.h"
 #include "common.h"
 
+#include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
+#include <CGAL/Surface_mesh_direction_fields/field_transfer.h>
+#include <CGAL/Surface_mesh_direction_fields/parallel_rosy_field.h>
+
 #include <CGAL/Surface_mesh_direction_fields/field_singularities.h>
 #include <CGAL/Surface_mesh_direction_fields/parameters.h>
 #include <CGAL/Surface_mesh_direction_fields/Trivial_connection.h>
@@ -82,6 +86,31 @@ bool direction_angle(const Mesh& mesh, face_descriptor f, const double v[3], dou
   angle = std::atan2(y, x);
   if(angle < 0) angle += 2 * CGAL_PI;
   return true;
+}
+
+// --factors FILE: one conformal factor per vertex (a line 'u', or 'v u'), as cone-metric
+// --factors-out writes them.
+std::vector<double> read_factors(const std::string& file, const Mesh& mesh)
+{
+  const std::size_t nv = num_vertices(mesh);
+  std::vector<double> u(nv, 0.);
+  std::vector<std::size_t> given(nv, 0);
+  std::size_t next = 0;
+  for_each_data_line(file, [&](std::size_t line_no, const std::vector<std::string>& tok) {
+    if(tok.size() != 1 && tok.size() != 2)
+      throw line_error(file, line_no, "expected 'u' or 'vertex u', got " + std::to_string(tok.size()) + " fields");
+    std::size_t v = next;
+    if(tok.size() == 2) v = vertex_field(file, line_no, tok[0], nv);
+    else if(v >= nv) throw line_error(file, line_no, "more factors than the mesh's " + std::to_string(nv) + " vertices");
+    if(given[v]) throw line_error(file, line_no, "vertex " + std::to_string(v) + " was already given on line " + std::to_string(given[v]));
+    given[v] = line_no;
+    u[v] = finite_field(file, line_no, tok.back());
+    next = v + 1;
+  });
+  const std::size_t missing = std::size_t(std::count(given.begin(), given.end(), std::size_t(0)));
+  if(missing > 0)
+    throw file_error(file, std::to_string(missing) + " of " + std::to_string(nv) + " vertices have no conformal factor", "file_error");
+  return u;
 }
 
 // --constraints FILE: lines 'face angle' (radians in the face frame) or 'face x y z' (a 3D
@@ -242,15 +271,43 @@ Json run_connection(const Args& args)
 
   Stopwatch clock;
   // --lengths: the connection of another metric (e.g. a flat cone metric from cone-metric
-  // --lengths-out); the field is drawn on the embedding through each face's linear map
-  const bool own_metric = args.has("lengths");
-  const std::string metric_file = own_metric ? args.value("lengths") : file;
+  // --lengths-out); the field is drawn on the embedding through each face's linear map.
+  // --factors: the discrete conformal metric of these factors (cone-metric --factors-out), on its
+  // intrinsic Delaunay triangulation when it needs flips: the connection is solved there and the
+  // field carried to the input faces through the common subdivision.
+  if(args.has("lengths") && args.has("factors")) throw Usage_error("give --lengths or --factors, not both");
+  const bool own_metric = args.has("lengths") || args.has("factors");
+  const std::string metric_file = args.has("lengths") ? args.value("lengths") : args.has("factors") ? args.value("factors") : file;
+  SMDF::Intrinsic_triangulation itri;
+  Mesh flat_mesh;
+  Mesh* carrier = &mesh;
+  Edge_length_property metric_lengths;
+  if(args.has("factors")) {
+    const std::vector<double> u = read_factors(metric_file, mesh);
+    auto factors = mesh.add_property_map<vertex_descriptor, double>("v:smdf_factor", 0.).first;
+    for(vertex_descriptor v : vertices(mesh)) factors[v] = u[v.idx()];
+    itri = on_file(metric_file, [&] { return SMDF::conformal_intrinsic_triangulation(mesh, factors); });
+    if(itri.number_of_new_edges() > 0) {
+      if(!constraints.empty() || opt.edits > 0 || args.has("connection-out"))
+        throw Usage_error("--constraints, --edit-benchmark and --connection-out need the metric on the input's edges; "
+                          "these factors need edge flips");
+      metric_lengths = flat_mesh.add_property_map<edge_descriptor, double>("e:smdf_length", 0.).first;
+      SMDF::copy_intrinsic_triangulation(itri, mesh, flat_mesh, metric_lengths);
+      carrier = &flat_mesh;
+    } else {
+      metric_lengths = mesh.add_property_map<edge_descriptor, double>("e:smdf_length", 0.).first;
+      for(std::size_t e = 0; e < itri.number_of_edges(); ++e)
+        metric_lengths[edge_descriptor(Mesh::size_type(itri.input_edge(int(e))))] = itri.length(int(e));
+    }
+  } else if(args.has("lengths")) {
+    metric_lengths = read_edge_lengths(metric_file, mesh);
+  }
+  const bool on_input = carrier == &mesh;
   const auto np = SMDF::parameters::symmetry_order(int(N)).connection_weights(opt.weights).rotation_limit(opt.rotation_limit);
   auto connect = [&](const auto& params) {
-    return on_file(metric_file, [&] { return SMDF::Trivial_connection<Mesh>(mesh, params); });
+    return on_file(metric_file, [&] { return SMDF::Trivial_connection<Mesh>(*carrier, params); });
   };
-  SMDF::Trivial_connection<Mesh> tc = own_metric ? connect(np.edge_length_map(read_edge_lengths(metric_file, mesh)))
-                                                 : connect(np);
+  SMDF::Trivial_connection<Mesh> tc = own_metric ? connect(np.edge_length_map(metric_lengths)) : connect(np);
   const double construct_s = clock.lap();
   for(const auto& s : sing) tc.set_singularity(vertex_descriptor(Mesh::size_type(s.first)), s.second);
   for(const auto& t : opt.turning) tc.set_generator_turning_number(t.first, t.second);
@@ -261,9 +318,9 @@ Json run_connection(const Args& args)
   const SMDF::Trivial_connection_status st = tc.solve();
   clock.lap();
 
-  Face_angle_property angles = mesh.add_property_map<face_descriptor, double>("f:smdf_angle", 0.).first;
+  Face_angle_property angles = carrier->add_property_map<face_descriptor, double>("f:smdf_angle", 0.).first;
   tc.field_angles(angles);
-  Edge_matching_property matching = mesh.add_property_map<edge_descriptor, int>("e:smdf_matching", 0).first;
+  Edge_matching_property matching = carrier->add_property_map<edge_descriptor, int>("e:smdf_matching", 0).first;
   const double off_lattice = tc.field_matching(angles, matching);
   const double field_s = clock.lap();
   // read back with the field's own matching (the result) and with principal matching (what a
@@ -271,20 +328,37 @@ Json run_connection(const Args& args)
   const auto read = [&](bool with_matching) {
     return on_file(file, [&] {
       const auto np = SMDF::parameters::symmetry_order(int(N)).intrinsic_mesh(tc.intrinsic_mesh());
-      return with_matching ? SMDF::field_singularities(mesh, angles, np.matching(matching))
-                           : SMDF::field_singularities(mesh, angles, np);
+      return with_matching ? SMDF::field_singularities(*carrier, angles, np.matching(matching))
+                           : SMDF::field_singularities(*carrier, angles, np);
     });
   };
   const SMDF::Field_topology<Mesh> topo = read(true);
   const SMDF::Field_topology<Mesh> principal = read(false);
+  // with flips: the field and its matching carried to the input faces, read back there
+  Face_angle_property out_angles = angles;
+  Edge_matching_property out_matching = matching;
+  SMDF::Field_topology<Mesh> input_topo;
+  SMDF::Field_transfer_status transfer;
+  if(!on_input) {
+    out_angles = mesh.add_property_map<face_descriptor, double>("f:smdf_input_angle", 0.).first;
+    out_matching = mesh.add_property_map<edge_descriptor, int>("e:smdf_input_matching", 0).first;
+    std::vector<double> a(num_faces(*carrier));
+    std::vector<int> k(num_edges(*carrier));
+    for(face_descriptor f : faces(*carrier)) a[f.idx()] = angles[f];
+    for(edge_descriptor e : edges(*carrier)) k[e.idx()] = matching[e];
+    transfer = SMDF::transfer_face_field_to_input(mesh, itri, int(N), a, k, out_angles, out_matching);
+    if(transfer.success)
+      input_topo = SMDF::field_singularities(mesh, out_angles, SMDF::parameters::symmetry_order(int(N)).matching(out_matching));
+  }
   if(args.has("field-out") || args.has("svg")) {
     Face_vector_property vectors =
       mesh.add_property_map<face_descriptor, K::Vector_3>("f:smdf_vector", K::Vector_3(0, 0, 0)).first;
-    tc.angles_to_vectors(angles, vectors);
-    write_field_files(args, mesh, vectors, N, topo, opt.svg);
+    if(on_input) tc.angles_to_vectors(angles, vectors);
+    else SMDF::field_angles_to_vectors(mesh, out_angles, vectors);
+    write_field_files(args, mesh, vectors, N, on_input ? topo : input_topo, opt.svg);
   }
   if(args.has("connection-out")) write_connection(args.value("connection-out"), mesh, tc);
-  if(args.has("matching-out")) write_matching(args.value("matching-out"), mesh, matching);
+  if(args.has("matching-out")) write_matching(args.value("matching-out"), mesh, out_matching);
 
   const Json edit_median = st.success && opt.edits > 0 && !sing.empty()
                                ? edit_benchmark(file, mesh, tc, sing, opt.edits, angles) : Json();
@@ -298,11 +372,23 @@ Json run_connection(const Args& args)
   Json out = Json::object();
   out["N"] = N;
   out["weights"] = opt.weights_name;
-  out["metric"] = own_metric ? "lengths" : "embedding";
+  out["metric"] = args.has("factors") ? "factors" : own_metric ? "lengths" : "embedding";
+  if(!on_input) {
+    Json c = Json::object();
+    c["intrinsic_edges"] = itri.number_of_new_edges();
+    c["crossings"] = itri.number_of_crossings();
+    c["pieces"] = itri.common_subdivision().size();
+    out["correspondence"] = std::move(c);
+    Json t = Json::object();
+    t["found"] = found_list(input_topo);
+    t["max_distortion"] = transfer.max_distortion;
+    t["mean_distortion"] = transfer.mean_distortion;
+    out["input_read_back"] = std::move(t);
+  }
   out["prescribed"] = prescribed_list(sing, N);   // as set before the edits
   out["found"] = found_list(topo);
   out["generator_turning_numbers"] = turning_numbers(topo);
-  out["principal_matching"] = principal_matching_report(mesh, tc, principal, sing, N);
+  out["principal_matching"] = principal_matching_report(*carrier, tc, principal, sing, N);
   if(opt.smoothest) out["smoothest_generator_turning"] = std::move(smoothest);
   out["energy"] = st.energy;
   out["residual"] = st.residual;
@@ -329,6 +415,10 @@ Json run_connection(const Args& args)
   for(std::size_t g = 0; g < tc.generators().size(); ++g) prescribed_turning.push_back(tc.generator_turning_number(g));
   if(failure.empty() && topo.generator_turning_numbers != prescribed_turning)
     failure = "the field read back with its matching has other generator turning numbers than the prescribed ones";
+  if(failure.empty() && !on_input && !transfer.success)
+    failure = "the field could not be carried to the input faces: " + transfer.message;
+  if(failure.empty() && !on_input && !same_singularities(input_topo, sing, N))
+    failure = "the field carried to the input faces reads back, with its matching, other singularities than the prescribed ones";
   out["success"] = failure.empty();
   out["timings"] = std::move(timings);
   if(!failure.empty()) throw Failed_result{out, file + ": " + failure, 3};
@@ -349,6 +439,7 @@ Command connection_command()
            {"connection-out", "FILE", "write 'i j angle' per interior edge (adjustment angle)"},
            {"matching-out", "FILE", "write 'i j k' per interior edge (period jump of the field)"},
            {"lengths", "FILE", "intrinsic metric: one line 'i j length' per edge (as holonomy --lengths)"},
+           {"factors", "FILE", "the discrete conformal metric of these factors, one 'u' per vertex (cone-metric --factors-out); with edge flips the field is carried to the input faces"},
            {"edit-benchmark", "K", "time K random singularity moves (re-solve + field)"},
            {"svg", "FILE", "write an SVG picture of the field and its found singularities"},
            {"view", "A,E[,UP]", "view of --svg: azimuth,elevation in degrees, up axis x|y|z (default 30,20 and an up axis chosen from the bounding box, named in the picture)"},
@@ -384,7 +475,12 @@ Command connection_command()
           "face gives the left face's direction rotated by 2 pi k / N.\n"
           "--lengths runs on another metric than the embedding's (e.g. cone-metric --lengths-out\n"
           "without flips); --field-out and --svg then map each face's directions to 3D by the\n"
-          "linear map from the metric's triangle to the embedded one.\n"
+          "linear map from the metric's triangle to the embedded one. --factors FILE (one 'u' per\n"
+          "vertex, cone-metric --factors-out) runs on the discrete conformal metric of those\n"
+          "factors, for every metric: when it needs edge flips the connection is solved on its\n"
+          "intrinsic Delaunay triangulation and the field and its matching are carried to the\n"
+          "input faces (correspondence: {intrinsic_edges, crossings, pieces}, input_read_back:\n"
+          "{found, max_distortion, mean_distortion}, which must equal the prescribed ones).\n"
           "--edit-benchmark K moves a random singularity K times (pseudo-random, fixed seed) and\n"
           "reports the median time of solve + field (null without singularities).\n"
           "--svg draws the mesh (orthographic view, back faces culled), the field (one\n"

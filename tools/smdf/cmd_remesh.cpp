@@ -198,7 +198,7 @@ Json run_remesh(const Args& args)
     const Edge_length_property flat = mesh.add_property_map<edge_descriptor, double>("e:smdf_remesh_flat", 0.).first;
     const SMDF::Cone_metric_status cm = on_file(file, [&] {
       // edge paths need no more: 1e-10 costs one or two more Newton steps (0.5-1 s at 433k)
-      return SMDF::compute_cone_metric(mesh, targets, flat, SMDF::parameters::conformal_factor_map(u).curvature_tolerance(1e-6));
+      return SMDF::compute_cone_metric(mesh, targets, flat, SMDF::parameters::conformal_factor_map(u).curvature_tolerance(1e-6).common_subdivision(false));
     });
     metric["flat_cone_metric_converged"] = cm.converged;
     metric["flat_cone_metric_edge_flips"] = cm.edge_flips;

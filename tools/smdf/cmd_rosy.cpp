@@ -133,7 +133,7 @@ Json run_rosy(const Args& args)
     throw Usage_error("--alignment-weight and --smoothing-steps need --cones auto");
   Json automatic_json;
   const std::vector<std::pair<vertex_descriptor, double>> cones = [&] {
-    if(!automatic) return cone_option(args, mesh);
+    if(!automatic) return cone_option(args, mesh, true);
     const int n = opt.N ? int(opt.N) : 4;
     double weight = 0.01;
     if(args.has("alignment-weight")) {
@@ -220,6 +220,16 @@ Json run_rosy(const Args& args)
     } catch(const Error& e) {
       throw Error(file + ": " + e.what());   // the same "<file>: " prefix as every other input error
     }
+  }
+  // cones of index 1 or more: punched holes (Lai et al. 4.1.1), with the parallel field
+  bool punch = false;
+  for(const auto& c : cones) punch = punch || (!is_border(c.first, mesh) && !(c.second < 2 * CGAL_PI));
+  if(punch) {
+    if(opt.method != AUTOMATIC && opt.method != PARALLEL)
+      throw Usage_error(std::string("cones of index 1 or more take the parallel field of the punched surface, not --method ") + method_name(opt.method));
+    for(const char* o : {"edit", "length", "field-out", "hatching-svg", "turning", "holonomy"})
+      if(args.has(o)) throw Usage_error(std::string("--") + o + " is not available with cones of index 1 or more (punched holes)");
+    return run_rosy_punched(args, file, mesh, N, cones, targets, opt.boundary, svg);
   }
   const Edge_length_property lengths = mesh.add_property_map<edge_descriptor, double>("e:smdf_rosy_length", 0.).first;
   const Face_angle_property input_angles = mesh.add_property_map<face_descriptor, double>("f:smdf_rosy_angle", 0.).first;

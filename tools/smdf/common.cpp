@@ -339,7 +339,7 @@ void write_field_files(const Args& args, const Mesh& mesh, Face_vector_property 
 
 // The cones of the options: vertices with K < 2 pi (index below 1) inside, K < pi on the
 // boundary (the boundary's turning angle there), each once.
-std::vector<std::pair<vertex_descriptor, double>> cone_option(const Args& args, const Mesh& mesh)
+std::vector<std::pair<vertex_descriptor, double>> cone_option(const Args& args, const Mesh& mesh, bool punched_holes)
 {
   const Indexed_values cones = pairs_option(args, "cones", parse_angle, "'v:K,v:K,...' (K radians: decimal, p/q, pi/2, -4pi, ...)");
   const Indexed_values indices = pairs_option(args, "cone-indices", parse_number, "'v:k,...' (index k, K = 2 pi k)");
@@ -356,8 +356,10 @@ std::vector<std::pair<vertex_descriptor, double>> cone_option(const Args& args, 
     if(CGAL::is_border(vd, mesh)) {
       if(!(K < CGAL_PI && K > -CGAL_PI))
         throw Error(where + " is on the boundary, where K is the boundary's turning angle and must lie in (-pi, pi), got " + format_real(K));
-    } else if(!(K < 2 * CGAL_PI)) {
-      throw Error(where + ": cones of index 1 or more (punched holes) are not supported");
+    } else if(!(K < 2 * CGAL_PI) && !punched_holes) {
+      throw Error(where + ": cones of index 1 or more (punched holes) are not supported here");
+    } else if(!std::isfinite(K)) {
+      throw Error(where + ": the cone curvature must be finite");
     }
     out.emplace_back(vd, K);
   };

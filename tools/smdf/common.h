@@ -154,7 +154,7 @@ Json turning_numbers(const SMDF::Field_topology<Mesh>& topo);
 // --cones 'v:K,...' and --cone-indices 'v:k,...' (K = 2 pi k): vertices with K < 2 pi inside,
 // K in (-pi, pi) on the boundary (the boundary's turning angle there), each once; Errors name
 // the option and the vertex.
-std::vector<std::pair<vertex_descriptor, double>> cone_option(const Args& args, const Mesh& mesh);
+std::vector<std::pair<vertex_descriptor, double>> cone_option(const Args& args, const Mesh& mesh, bool punched_holes = false);
 
 // The axis drawn pointing up in a picture when --view does not say (0 x, 1 y, 2 z).
 int default_up_axis(const Mesh& mesh);

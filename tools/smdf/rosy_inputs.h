@@ -54,6 +54,15 @@ struct Constraint_lines
 // Reads --edit (lengths = false) or --length; Errors name the file and the line.
 Constraint_lines read_constraint_file(const std::string& file, const Mesh& mesh, bool lengths);
 
+// smdf rosy with interior cones of index 1 or more (rosy_punched.cpp): holes punched there
+// (Lai et al. 4.1.1), the parallel field of the holed surface's flat metric carried to the input,
+// each hole filled by unfolding its ring's faces inward, the spokes' matching chosen so that the
+// ring vertices keep their indices; read back on the input. `targets` are those of the input
+// (cones and boundary turnings); returns the JSON, throws Failed_result on a failed read-back.
+Json run_rosy_punched(const Args& args, const std::string& file, Mesh& mesh, int N,
+                      const std::vector<std::pair<vertex_descriptor, double>>& cones, Vertex_double_property targets,
+                      Boundary_mode mode, const SMDF::Svg_options& svg);
+
 } // namespace smdf_cli
 
 #endif // SMDF_CLI_ROSY_INPUTS_H

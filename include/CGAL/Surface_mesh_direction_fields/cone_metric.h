@@ -191,6 +191,15 @@ struct No_cone_metric_visitor { void operator()(int, double) const {} };
 ///     \cgalParamType{`double`, positive}
 ///     \cgalParamDefault{`1e-10`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{common_subdivision}
+///     \cgalParamDescription{with flips, whether the intrinsic triangulation comes with its
+///       common subdivision with the input (`Intrinsic_triangulation::has_common_subdivision()`):
+///       the correspondence that fields and pictures need on the input. Callers that use only
+///       the conformal factors (e.g. polycube metrics) save its cost (about a third of the flow's
+///       time when many edges are flipped)}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{intrinsic_edge_flips}
 ///     \cgalParamDescription{whether the flow may continue on an intrinsic Delaunay triangulation
 ///       when the input triangulation cannot carry the target metric}
@@ -258,6 +267,7 @@ Cone_metric_status compute_cone_metric(const TriangleMesh& tm,
                                   internal::No_cone_metric_visitor());
   const bool allow_flips = choose_parameter(get_parameter(np, internal_np::intrinsic_edge_flips), true);
   const bool input_first = choose_parameter(get_parameter(np, internal_np::input_triangulation_first), true);
+  const bool with_subdivision = choose_parameter(get_parameter(np, internal_np::common_subdivision), true);
   const Ricci_flow_scheme scheme = choose_parameter(get_parameter(np, internal_np::ricci_flow_scheme), VERTEX_SCALING);
 
   const Intrinsic_mesh<TriangleMesh> im = internal::get_intrinsic_mesh(tm, np);
@@ -318,7 +328,7 @@ Cone_metric_status compute_cone_metric(const TriangleMesh& tm,
   double replay_error = 0;
   st.triangulation_changed = flow.triangulation_changed() &&
       internal::output_intrinsic_triangulation(m, u, target, len, output_lengths, st.intrinsic_triangulation, replay_error,
-                                               st.correspondence_message);
+                                               st.correspondence_message, with_subdivision);
   if(!st.triangulation_changed)
     internal::put_input_edge_lengths(m, len, output_lengths);
   internal::put_conformal_factors(m, np, [&u](std::size_t v) { return u[v]; });
@@ -326,6 +336,65 @@ Cone_metric_status compute_cone_metric(const TriangleMesh& tm,
   st.max_curvature_error = (std::max)(st.max_curvature_error, replay_error);
   st.seconds = internal::seconds_since(t0);
   return st;
+}
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsConeMetrics
+/// The intrinsic Delaunay triangulation of the discrete conformal metric
+/// \f$\ell_{ij} = \ell^0_{ij} e^{(u_i + u_j)/2}\f$ of given conformal factors (e.g. those
+/// compute_cone_metric() wrote to its `conformal_factor_map`, saved and read back), made from the
+/// input by Ptolemy flips, with its common subdivision with the input: the same triangulation
+/// compute_cone_metric() returns for these factors, rebuilt without the flow. When no flip is
+/// needed it is the input triangulation (its common subdivision: one piece per face).
+///
+/// \param tm the input mesh
+/// \param conformal_factors a readable vertex property map: \f$u_v\f$ (finite)
+/// \param np the input metric (`edge_length_map` or `vertex_point_map`) and the index maps;
+///   `intrinsic_edge_flips(false)` keeps the input triangulation (the metric compute_cone_metric()
+///   found on it without flips need not be Delaunay)
+///
+/// Throws `Input_error` for a non-finite factor, a face that violates the triangle inequality
+/// without flips, or a triangulation whose correspondence fails its
+/// own checks (the message says why).
+template <typename TriangleMesh, typename VertexFactorMap, typename NamedParameters = parameters::Default_named_parameters>
+Intrinsic_triangulation conformal_intrinsic_triangulation(const TriangleMesh& tm, const VertexFactorMap& conformal_factors,
+                                                          const NamedParameters& np = parameters::default_values())
+{
+  const Intrinsic_mesh<TriangleMesh> im = internal::get_intrinsic_mesh(tm, np);
+  const internal::Mesh_arrays<TriangleMesh>& m = im.arrays();
+  std::vector<double> u(m.number_of_vertices(), 0.);
+  for(std::size_t v = 0; v < u.size(); ++v) {
+    u[v] = double(get(conformal_factors, m.vertices[v]));
+    if(!std::isfinite(u[v]))
+      throw Input_error(Input_error::INVALID_GEOMETRY, "conformal factor of vertex " + std::to_string(v) + " is not finite");
+  }
+  internal::Tracked_delaunay_flips<TriangleMesh> tf(m);
+  std::vector<double> len;
+  if(parameters::choose_parameter(parameters::get_parameter(np, internal_np::intrinsic_edge_flips), true)) {
+    try {
+      len = tf.make_delaunay(u);
+    } catch(const std::runtime_error& e) {
+      throw Input_error(Input_error::INVALID_ARGUMENT, e.what());
+    }
+  } else {
+    len.resize(m.number_of_edges());
+    for(std::size_t e = 0; e < len.size(); ++e) len[e] = m.length[e] * std::exp(0.5 * (u[std::size_t(m.target[2 * e])] + u[std::size_t(m.target[2 * e + 1])]));
+    for(std::size_t f = 0; f < m.number_of_faces(); ++f) {
+      const int h0 = m.face_halfedge[f], h1 = m.next[std::size_t(h0)], h2 = m.next[std::size_t(h1)];
+      const double a = len[std::size_t(h0 >> 1)], b = len[std::size_t(h1 >> 1)], c = len[std::size_t(h2 >> 1)];
+      if(!(a < b + c && b < c + a && c < a + b))
+        throw Input_error(Input_error::DEGENERATE_FACE, "conformal_intrinsic_triangulation(): face " + std::to_string(f) +
+                                                            " violates the triangle inequality under these factors without flips");
+    }
+  }
+  std::vector<long> input_edge(tf.coincident.begin(), tf.coincident.end());
+  Intrinsic_triangulation it(m.number_of_vertices(), tf.tri.next, tf.tri.target, tf.tri.face, tf.tri.face_halfedge, len,
+                             std::move(input_edge));
+  try {
+    internal::build_common_subdivision(m, tf, u, len, it);
+  } catch(const std::runtime_error& e) {
+    throw Input_error(Input_error::INVALID_ARGUMENT, e.what());
+  }
+  return it;
 }
 
 /// \ingroup PkgSurfaceMeshDirectionFieldsConeMetrics

@@ -92,7 +92,11 @@ struct Piece_directions
 /// (`Intrinsic_triangulation::has_common_subdivision()`).
 ///
 /// The direction of an input face is the field at the face's centroid, mapped by the
-/// differential of the piece's projective map. The matching of an input edge follows the field
+/// differential of the piece's projective map; a face that no intrinsic edge crosses and that is
+/// an intrinsic face too takes the affine map between the two triangles, and a face on the
+/// border keeps the field's angle with its border edge (an edge of both triangulations), as
+/// field_angles_to_vectors() maps a metric's directions: fields parallel or orthogonal to the
+/// boundary stay exactly so. The matching of an input edge follows the field
 /// from one face's centroid to the other's through the pieces of the two faces: the branch of
 /// the \f$N\f$ directions changes by the intrinsic matching wherever the path crosses an
 /// intrinsic edge, and the rotation is summed piece by piece (every step turns by less than
@@ -151,14 +155,71 @@ Field_transfer_status transfer_face_field_to_input(const TriangleMesh& tm, const
   };
   const std::array<double, 3> centroid = {{1. / 3, 1. / 3, 1. / 3}};
 
-  // 1. the representative of every input face, at its centroid; the distortion of its N directions
+  // A face that is one piece in both triangulations (no intrinsic edge crosses it and it is an
+  // intrinsic face too) takes the affine map between the two triangles, as the package maps a
+  // metric's face directions to the embedding everywhere else (field_angles_to_vectors()): it
+  // keeps directions along the face's edges along them.
+  auto whole_face = [&](std::size_t i) {
+    return it.pieces_of_input_face(pieces[i].input_face).size() == 1 && it.pieces_of_intrinsic_face(pieces[i].intrinsic_face).size() == 1;
+  };
+  auto affine_angle = [&](std::size_t i, const internal::Piece_directions& d, double angle) {
+    const auto& P = pieces[i];
+    const auto& V = d.intrinsic_layout;
+    const auto& W = d.input_layout;
+    // corner k of the input face is corner to_intrinsic[k] of the intrinsic one
+    std::array<std::size_t, 3> to_intrinsic = {{0, 1, 2}};
+    for(std::size_t k = 0; k < 3; ++k) {
+      const auto& ci = P.intrinsic_corners[k];
+      const auto& bi = P.input_corners[k];
+      to_intrinsic[bi[0] > 0.5 ? 0 : bi[1] > 0.5 ? 1 : 2] = ci[0] > 0.5 ? 0 : ci[1] > 0.5 ? 1 : 2;
+    }
+    const double ux = std::cos(angle), uy = std::sin(angle);
+    const double e1x = V[1].x() - V[0].x(), e1y = V[1].y() - V[0].y(), e2x = V[2].x() - V[0].x(), e2y = V[2].y() - V[0].y();
+    const double det = e1x * e2y - e1y * e2x;
+    const double d1 = (ux * e2y - uy * e2x) / det, d2 = (e1x * uy - e1y * ux) / det;
+    const std::array<double, 3> dc = {{-d1 - d2, d1, d2}};
+    std::array<double, 3> db = {{0, 0, 0}};
+    for(std::size_t k = 0; k < 3; ++k) db[k] = dc[to_intrinsic[k]];
+    const double x = db[1] * (W[1].x() - W[0].x()) + db[2] * (W[2].x() - W[0].x());
+    const double y = db[1] * (W[1].y() - W[0].y()) + db[2] * (W[2].y() - W[0].y());
+    return std::atan2(y, x);
+  };
+
+  // The angle, in input face f's frame, of the intrinsic direction `angle` of piece i carried
+  // across the border halfedge hb of f (an edge of both triangulations) with its angle to it kept.
+  auto border_angle = [&](std::size_t i, const internal::Piece_directions& d, int hb, double angle) {
+    const auto& P = pieces[i];
+    const std::size_t s = std::size_t(std::find(P.input_sides.begin(), P.input_sides.end(), hb) - P.input_sides.begin());
+    const std::size_t ns = P.corner_ids.size();
+    auto at = [](const std::array<Point_2, 3>& L, const std::array<double, 3>& b) {
+      return Point_2(b[0] * L[0].x() + b[1] * L[1].x() + b[2] * L[2].x(), b[0] * L[0].y() + b[1] * L[1].y() + b[2] * L[2].y());
+    };
+    const Point_2 a = at(d.intrinsic_layout, P.intrinsic_corners[s]), b = at(d.intrinsic_layout, P.intrinsic_corners[(s + 1) % ns]);
+    const Point_2 p = at(d.input_layout, P.input_corners[s]), q = at(d.input_layout, P.input_corners[(s + 1) % ns]);
+    return angle - std::atan2(b.y() - a.y(), b.x() - a.x()) + std::atan2(q.y() - p.y(), q.x() - p.x());
+  };
+
+  // 1. the representative of every input face: at its centroid, in the piece containing it; on a
+  //    border face, in the piece along the border edge (at that piece's centroid), with the angle
+  //    to the border kept; the distortion of its N directions
   std::vector<double> beta(m.number_of_faces());
   std::vector<std::size_t> home(m.number_of_faces());
+  std::vector<std::array<double, 3>> xrep(m.number_of_faces(), centroid);
   for(std::size_t f = 0; f < m.number_of_faces(); ++f) {
+    int hb = -1;   // the face's border halfedge
+    {
+      int h = m.face_halfedge[f];
+      for(int k = 0; k < 3; ++k, h = m.next[std::size_t(h)]) if(m.face[std::size_t(h ^ 1)] < 0) { hb = h; break; }
+    }
     std::size_t best = 0;
     double best_depth = -1e300;
-    for(std::size_t i : it.pieces_of_input_face(int(f))) {   // the piece containing the centroid: the deepest
-      const auto& cs = pieces[i].input_corners;
+    for(std::size_t i : it.pieces_of_input_face(int(f))) {
+      const auto& P = pieces[i];
+      if(hb >= 0) {
+        if(std::find(P.input_sides.begin(), P.input_sides.end(), hb) != P.input_sides.end()) { best = i; best_depth = 0; }
+        continue;
+      }
+      const auto& cs = P.input_corners;   // the piece containing the centroid: the deepest
       double depth = 1e300;
       for(std::size_t k = 0; k < cs.size(); ++k) {
         const auto& a = cs[k];
@@ -168,12 +229,27 @@ Field_transfer_status transfer_face_field_to_input(const TriangleMesh& tm, const
       }
       if(depth > best_depth) { best_depth = depth; best = i; }
     }
+    if(best_depth == -1e300) {
+      st.message = "input face " + std::to_string(f) + " has no piece along its border edge";
+      return st;
+    }
     home[f] = best;
+    if(hb >= 0) {
+      std::array<double, 3> c = {{0, 0, 0}};
+      for(const auto& x : pieces[best].input_corners)
+        for(int k = 0; k < 3; ++k) c[std::size_t(k)] += x[std::size_t(k)] / double(pieces[best].input_corners.size());
+      xrep[f] = c;
+    }
     const internal::Piece_directions d = directions(best);
-    beta[f] = angle_at(best, d, centroid, 0);
+    const double base = intrinsic_angles[std::size_t(pieces[best].intrinsic_face)];
+    auto representative = [&](int J) {
+      if(hb >= 0) return border_angle(best, d, hb, base + J * period);
+      return whole_face(best) ? affine_angle(best, d, base + J * period) : angle_at(best, d, xrep[f], J);
+    };
+    beta[f] = representative(0);
     double distortion = 0;
     for(int J = 1; J < N; ++J)
-      distortion = (std::max)(distortion, std::abs(internal::wrap_angle(angle_at(best, d, centroid, J) - beta[f] - J * period)));
+      distortion = (std::max)(distortion, std::abs(internal::wrap_angle(representative(J) - beta[f] - J * period)));
     st.max_distortion = (std::max)(st.max_distortion, distortion);
     st.mean_distortion += distortion / double(m.number_of_faces());
     put(input_angles, m.faces[f], beta[f]);
@@ -233,8 +309,15 @@ Field_transfer_status transfer_face_field_to_input(const TriangleMesh& tm, const
     // follow the field along the path: a, the accumulated angle (fr's frame, then fl's)
     const double inc = internal::transport_increment(m, h);   // fr's frame -> fl's frame
     int J = 0;
-    std::array<double, 3> x = centroid;
+    std::array<double, 3> x = xrep[std::size_t(fr)];
+    // from the representative to the projective image of branch 0 at its point (the same
+    // unless the face took the affine or the border map)
     double a = beta[std::size_t(fr)];
+    {
+      const std::size_t A = local[path.front()];
+      const internal::Piece_directions dA = directions(A);
+      a += internal::wrap_angle(angle_at(A, dA, x, 0) - beta[std::size_t(fr)]);
+    }
     for(std::size_t step = 0; step + 1 < path.size(); ++step) {
       const std::size_t A = local[path[step]], B = local[path[step + 1]];
       const int s = parent_side[path[step + 1]];
@@ -273,9 +356,10 @@ Field_transfer_status transfer_face_field_to_input(const TriangleMesh& tm, const
     }
     const std::size_t last = local[path.back()];
     const internal::Piece_directions dL = directions(last);
-    a += internal::wrap_angle(angle_at(last, dL, centroid, J) - angle_at(last, dL, x, J));
-    // a: the branch J at fl's centroid; the evenly spaced field there has beta_l + J period
-    const double corr = internal::wrap_angle(angle_at(last, dL, centroid, J) - beta[std::size_t(fl)] - J * period);
+    const std::array<double, 3>& xl = xrep[std::size_t(fl)];
+    a += internal::wrap_angle(angle_at(last, dL, xl, J) - angle_at(last, dL, x, J));
+    // a: the branch J at fl's point; the evenly spaced field there has beta_l + J period
+    const double corr = internal::wrap_angle(angle_at(last, dL, xl, J) - beta[std::size_t(fl)] - J * period);
     const double rotation = a - corr - beta[std::size_t(fr)] - inc;
     const double principal = internal::wrap_angle(beta[std::size_t(fl)] - beta[std::size_t(fr)] - inc);
     put(input_matching, m.edges[e], int(std::lround((rotation - principal) / period)));

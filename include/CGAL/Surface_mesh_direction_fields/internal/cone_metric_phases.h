@@ -191,11 +191,12 @@ template <typename TM, typename EdgeLengthMap>
 bool output_intrinsic_triangulation(const Mesh_arrays<TM>& m, const std::vector<double>& u,
                                     const std::vector<double>& target, std::vector<double>& len,
                                     EdgeLengthMap output_lengths, Intrinsic_triangulation& it,
-                                    double& max_error, std::string& correspondence_message)
+                                    double& max_error, std::string& correspondence_message,
+                                    bool with_subdivision = true)
 {
   Tracked_delaunay_flips<TM> tf(m);
   try {
-    len = tf.make_delaunay(u);
+    len = tf.make_delaunay(u, with_subdivision);
   } catch(const std::runtime_error& e) {
     // the flips without their crossings: the metric is sound, only the correspondence is lost
     correspondence_message = e.what();
@@ -203,6 +204,25 @@ bool output_intrinsic_triangulation(const Mesh_arrays<TM>& m, const std::vector<
     len = tf.make_delaunay(u, false);
   }
   if(tf.flips == 0) return false;
+  if(!with_subdivision || !correspondence_message.empty()) {
+    // untracked flips: an edge is an input edge if it joins the same vertices with the same
+    // Penner coordinate (a flipped-back edge has exactly its old one: Ptolemy is an involution;
+    // input edges sorted by their end points)
+    const std::size_t nv = m.number_of_vertices();
+    auto key = [nv](int a, int b) { return (long long)(std::min)(a, b) * (long long)nv + (std::max)(a, b); };
+    std::vector<std::pair<long long, int>> by_ends(m.number_of_edges());
+    for(std::size_t e = 0; e < m.number_of_edges(); ++e) by_ends[e] = std::make_pair(key(m.target[2 * e], m.target[2 * e + 1]), int(e));
+    std::sort(by_ends.begin(), by_ends.end());
+    for(std::size_t e = 0; e < m.number_of_edges(); ++e) {
+      if(tf.coincident[e] >= 0) continue;
+      const long long k = key(tf.tri.target[2 * e], tf.tri.target[2 * e + 1]);
+      for(auto it = std::lower_bound(by_ends.begin(), by_ends.end(), std::make_pair(k, -1)); it != by_ends.end() && it->first == k; ++it)
+        if(std::abs(tf.l0[e] - m.length[std::size_t(it->second)]) <= 1e-12 * m.length[std::size_t(it->second)]) {
+          tf.coincident[e] = it->second;
+          break;
+        }
+    }
+  }
   std::vector<double> out(m.number_of_edges(), std::numeric_limits<double>::quiet_NaN());
   for(std::size_t e = 0; e < m.number_of_edges(); ++e)
     if(tf.coincident[e] >= 0) out[std::size_t(tf.coincident[e])] = len[e];
@@ -225,7 +245,7 @@ bool output_intrinsic_triangulation(const Mesh_arrays<TM>& m, const std::vector<
   std::vector<long> input_edge(tf.coincident.begin(), tf.coincident.end());
   it = Intrinsic_triangulation(m.number_of_vertices(), tf.tri.next, tf.tri.target, tf.tri.face,
                                tf.tri.face_halfedge, len, std::move(input_edge));
-  if(correspondence_message.empty()) try {
+  if(correspondence_message.empty() && with_subdivision) try {
     build_common_subdivision(m, tf, u, len, it);
   } catch(const std::runtime_error& e) {
     correspondence_message = e.what();

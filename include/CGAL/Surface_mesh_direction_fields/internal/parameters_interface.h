@@ -32,3 +32,4 @@ CGAL_SMDF_add_named_parameter(compatibility_tolerance_t, compatibility_tolerance
 CGAL_SMDF_add_named_parameter(segment_flattening_t, segment_flattening, segment_flattening)
 CGAL_SMDF_add_named_parameter(alignment_weight_t, alignment_weight, alignment_weight)
 CGAL_SMDF_add_named_parameter(smoothing_steps_t, smoothing_steps, smoothing_steps)
+CGAL_SMDF_add_named_parameter(common_subdivision_t, common_subdivision, common_subdivision)

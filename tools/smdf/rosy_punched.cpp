@@ -1,0 +1,283 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// smdf rosy with cones of index >= 1 (Lai et al. 2010, section 4.1.1): a hole is punched at
+// each, the field is designed on the rest and carried back, and the hole is filled.
+
+#include "rosy_inputs.h"
+
+#include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
+#include <CGAL/Surface_mesh_direction_fields/field_singularities.h>
+#include <CGAL/Surface_mesh_direction_fields/field_transfer.h>
+#include <CGAL/Surface_mesh_direction_fields/parallel_rosy_field.h>
+#include <CGAL/Surface_mesh_direction_fields/topology.h>
+
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace smdf_cli {
+
+namespace {
+
+// 3D helpers for the fill: unit vectors, the face normal, a direction's angle in a face frame.
+K::Vector_3 unit_vector(const K::Vector_3& v) { return v / std::sqrt(v.squared_length()); }
+
+K::Vector_3 face_normal(const Mesh& mesh, face_descriptor f)
+{
+  const halfedge_descriptor h = halfedge(f, mesh);
+  const K::Point_3 &a = mesh.point(source(h, mesh)), &b = mesh.point(target(h, mesh)), &c = mesh.point(target(next(h, mesh), mesh));
+  return unit_vector(CGAL::cross_product(b - a, c - a));
+}
+
+} // namespace
+
+Json run_rosy_punched(const Args& args, const std::string& file, Mesh& mesh, int N,
+                      const std::vector<std::pair<vertex_descriptor, double>>& cones, Vertex_double_property targets,
+                      Boundary_mode mode, const SMDF::Svg_options& svg)
+{
+  Json out = Json::object();
+  Json timings = Json::object();
+  Stopwatch clock;
+  const std::size_t nv = num_vertices(mesh);
+  const bool open = !SMDF::mesh_topology(mesh).is_closed();
+  out["N"] = N;
+  out["method"] = "parallel (punched holes)";
+  if(open) out["boundary"] = mode == FREE_BOUNDARY ? "free" : mode == PARALLEL_BOUNDARY ? "parallel" : "orthogonal";
+
+  // 1. the holes: the faces around every interior cone of index >= 1; its ring becomes boundary
+  //    turning by kappa_w = K_w + (K_v - 2 pi) / d (Gauss-Bonnet: the hole turns 2 pi - K_v less)
+  std::vector<char> in_fan(num_faces(mesh), 0);
+  std::vector<int> owner(nv, -1);   // the punched vertex whose hole a vertex belongs to
+  std::map<vertex_descriptor, double> holed_target;
+  for(vertex_descriptor v : vertices(mesh)) holed_target[v] = targets[v];
+  Json punched = Json::array();
+  for(const auto& c : cones) {
+    const vertex_descriptor v = c.first;
+    if(is_border(v, mesh) || c.second < 2 * CGAL_PI - 1e-9) continue;
+    std::vector<vertex_descriptor> ring;
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, mesh), mesh)) ring.push_back(source(h, mesh));
+    auto clash = [&](vertex_descriptor w) { return owner[w.idx()] >= 0 && owner[w.idx()] != int(v.idx()); };
+    if(clash(v)) throw Error(file + ": the cones of index 1 or more at vertices " + std::to_string(v.idx()) + " and " +
+                             std::to_string(owner[v.idx()]) + " are too close to punch two holes (they need three edges between them)");
+    owner[v.idx()] = int(v.idx());
+    for(vertex_descriptor w : ring) {
+      if(is_border(w, mesh))
+        throw Error(file + ": the cone of index 1 or more at vertex " + std::to_string(v.idx()) + " touches the boundary (vertex " +
+                    std::to_string(w.idx()) + "): its hole needs a ring of interior vertices");
+      if(clash(w)) throw Error(file + ": the cones of index 1 or more at vertices " + std::to_string(v.idx()) + " and " +
+                               std::to_string(owner[w.idx()]) + " are too close to punch two holes (they need three edges between them)");
+      owner[w.idx()] = int(v.idx());
+      holed_target[w] += (c.second - 2 * CGAL_PI) / double(ring.size());
+      if(!(holed_target[w] < CGAL_PI))
+        throw Error(file + ": the hole of the cone at vertex " + std::to_string(v.idx()) + " would turn by " + format_real(holed_target[w]) +
+                    " at ring vertex " + std::to_string(w.idx()) + " (at least pi): its index is too large for its " +
+                    std::to_string(ring.size()) + " neighbours");
+    }
+    for(face_descriptor f : faces_around_target(halfedge(v, mesh), mesh)) in_fan[f.idx()] = 1;
+    holed_target.erase(v);
+    Json p = Json::object();
+    p["vertex"] = v.idx();
+    p["index"] = c.second / (2 * CGAL_PI);
+    p["ring"] = ring.size();
+    punched.push_back(std::move(p));
+  }
+  out["punched"] = std::move(punched);
+
+  // 2. the holed mesh: the same vertices (the punched ones isolated), the other faces, each with
+  //    the input's halfedge(f) (a polygon (b, c, a) gives halfedge a -> b), so that face frames agree
+  std::vector<K::Point_3> points;
+  for(vertex_descriptor v : vertices(mesh)) points.push_back(mesh.point(v));
+  std::vector<std::array<std::size_t, 3>> polygons;
+  std::vector<face_descriptor> input_face;
+  for(face_descriptor f : faces(mesh)) {
+    if(in_fan[f.idx()]) continue;
+    const halfedge_descriptor h = halfedge(f, mesh);
+    polygons.push_back({{target(h, mesh).idx(), target(next(h, mesh), mesh).idx(), source(h, mesh).idx()}});
+    input_face.push_back(f);
+  }
+  Mesh holed;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, holed);
+  bool same = num_vertices(holed) == nv && num_faces(holed) == polygons.size();
+  for(std::size_t i = 0; same && i < polygons.size(); ++i) {
+    const halfedge_descriptor h = halfedge(face_descriptor(Mesh::size_type(i)), holed);
+    same = source(h, holed).idx() == polygons[i][2] && target(h, holed).idx() == polygons[i][0];
+  }
+  if(!same) throw Error(file + ": the mesh with its holes punched could not be built (internal)");
+
+  // 3. the metric of the holed surface
+  auto htarget = holed.add_property_map<vertex_descriptor, double>("v:smdf_target", 0.).first;
+  for(const auto& t : holed_target) htarget[t.first] = t.second;
+  const Edge_length_property hlen = holed.add_property_map<edge_descriptor, double>("e:smdf_length", 0.).first;
+  auto hu = holed.add_property_map<vertex_descriptor, double>("v:smdf_u", 0.).first;
+  const SMDF::Cone_metric_status cm = on_file(file, [&] {
+    return SMDF::compute_cone_metric(holed, htarget, hlen, SMDF::parameters::conformal_factor_map(hu));
+  });
+  timings["metric_s"] = clock.lap();
+  Json metric = Json::object();
+  metric["converged"] = cm.converged;
+  metric["iterations"] = cm.iterations;
+  metric["max_curvature_error"] = cm.max_curvature_error;
+  metric["triangulation_changed"] = cm.triangulation_changed;
+  metric["on"] = "the mesh with its holes punched";
+  out["metric"] = std::move(metric);
+  auto fail = [&](const std::string& why) {
+    out["success"] = false;
+    out["timings"] = timings;
+    return Failed_result{out, file + ": " + why, 3};
+  };
+  if(!cm.converged) throw fail("flat cone metric of the holed surface not converged: " + cm.message);
+
+  // 4. its parallel field, on the holed mesh or its intrinsic triangulation
+  Mesh flat_mesh;
+  Mesh* carrier = &holed;
+  Edge_length_property flat = hlen;
+  SMDF::Intrinsic_triangulation itri;
+  if(cm.triangulation_changed) {
+    if(!cm.intrinsic_triangulation.has_common_subdivision()) throw fail("no correspondence with the input: " + cm.correspondence_message);
+    flat = flat_mesh.add_property_map<edge_descriptor, double>("e:smdf_length", 0.).first;
+    SMDF::copy_intrinsic_triangulation(cm.intrinsic_triangulation, holed, flat_mesh, flat);
+    carrier = &flat_mesh;
+    itri = cm.intrinsic_triangulation;
+  } else {
+    itri = SMDF::conformal_intrinsic_triangulation(holed, hu, SMDF::parameters::intrinsic_edge_flips(false));
+  }
+  const Face_angle_property angles = carrier->add_property_map<face_descriptor, double>("f:smdf_angle", 0.).first;
+  const SMDF::Parallel_rosy_status ps = SMDF::parallel_rosy_field(*carrier, N, angles, SMDF::parameters::edge_length_map(flat));
+  if(!ps.success)
+    throw fail("no parallel " + std::to_string(N) + "-RoSy field on the holed surface (cones of index 1 or more take the paper's "
+               "parallel field of the punched metric: on a surface with handles its holonomy need not allow one): " + ps.message);
+  const Edge_matching_property cmatch = carrier->add_property_map<edge_descriptor, int>("e:smdf_matching", 0).first;
+  SMDF::principal_matching(*carrier, angles, cmatch, SMDF::parameters::symmetry_order(N).edge_length_map(flat));
+  timings["compensation_s"] = clock.lap();
+
+  // a field that follows the boundary: turned as a whole onto the first boundary edge, in the
+  // metric (the transfer keeps angles with border edges)
+  if(open && mode != FREE_BOUNDARY) {
+    halfedge_descriptor hb;
+    for(halfedge_descriptor h : halfedges(*carrier)) if(is_border(h, *carrier)) { hb = opposite(h, *carrier); break; }
+    const face_descriptor fb = face(hb, *carrier);
+    auto fvec = get(CGAL::dynamic_face_property_t<K::Vector_3>(), *carrier);
+    SMDF::field_angles_to_vectors(*carrier, angles, fvec, SMDF::parameters::edge_length_map(flat));
+    const K::Vector_3 n = face_normal(*carrier, fb), e = carrier->point(target(hb, *carrier)) - carrier->point(source(hb, *carrier));
+    const K::Vector_3 want = mode == ORTHOGONAL_BOUNDARY ? CGAL::cross_product(n, e) : e, have = get(fvec, fb);
+    const double turn = std::atan2(CGAL::cross_product(have, want) * n, have * want);
+    for(face_descriptor f : faces(*carrier)) angles[f] += turn;
+  }
+
+  // 5. carried to the holed mesh's faces (the input's frames), then to the input's
+  const Face_angle_property hangles = holed.add_property_map<face_descriptor, double>("f:smdf_input_angle", 0.).first;
+  const Edge_matching_property hmatch = holed.add_property_map<edge_descriptor, int>("e:smdf_input_matching", 0).first;
+  {
+    std::vector<double> a(num_faces(*carrier));
+    std::vector<int> k(num_edges(*carrier));
+    for(face_descriptor f : faces(*carrier)) a[f.idx()] = angles[f];
+    for(edge_descriptor e : edges(*carrier)) k[e.idx()] = cmatch[e];
+    const SMDF::Field_transfer_status ts = SMDF::transfer_face_field_to_input(holed, itri, N, a, k, hangles, hmatch);
+    if(!ts.success) throw fail("the field could not be carried to the input faces: " + ts.message);
+  }
+  const Face_angle_property in_angles = mesh.add_property_map<face_descriptor, double>("f:smdf_punched_angle", 0.).first;
+  const Face_vector_property vectors = mesh.add_property_map<face_descriptor, K::Vector_3>("f:smdf_punched_vector").first;
+  const Edge_matching_property in_match = mesh.add_property_map<edge_descriptor, int>("e:smdf_punched_matching", 0).first;
+  for(std::size_t i = 0; i < input_face.size(); ++i) in_angles[input_face[i]] = hangles[face_descriptor(Mesh::size_type(i))];
+  for(edge_descriptor e : edges(holed)) {
+    if(is_border(e, holed)) continue;
+    const halfedge_descriptor hh = halfedge(e, holed);
+    const auto ih = halfedge(vertex_descriptor(source(hh, holed).idx()), vertex_descriptor(target(hh, holed).idx()), mesh);
+    const edge_descriptor ie = edge(ih.first, mesh);
+    in_match[ie] = halfedge(ie, mesh) == ih.first ? hmatch[e] : -hmatch[e];
+  }
+  // 6. the fill: each face of a hole takes the field of the face across its ring edge, unfolded
+  //    (so the ring edges turn it by nothing); the spokes take what the ring vertices' indices
+  //    need (0, or their own cone's), which leaves the punched vertex its index (Gauss-Bonnet)
+  SMDF::field_angles_to_vectors(mesh, in_angles, vectors);
+  for(face_descriptor t : faces(mesh)) {
+    if(!in_fan[t.idx()]) continue;
+    for(halfedge_descriptor h : halfedges_around_face(halfedge(t, mesh), mesh)) {
+      const face_descriptor o = face(opposite(h, mesh), mesh);
+      if(o == boost::graph_traits<Mesh>::null_face() || in_fan[o.idx()]) continue;
+      const K::Vector_3 ev = unit_vector(mesh.point(target(h, mesh)) - mesh.point(source(h, mesh)));
+      const K::Vector_3 no = face_normal(mesh, o), nt = face_normal(mesh, t), v = vectors[o];
+      vectors[t] = (v * ev) * ev + (v * CGAL::cross_product(no, ev)) * CGAL::cross_product(nt, ev);
+    }
+  }
+  {
+    auto fan_vectors = get(CGAL::dynamic_face_property_t<K::Vector_3>(), mesh);
+    auto fan_angles = get(CGAL::dynamic_face_property_t<double>(), mesh);
+    for(face_descriptor f : faces(mesh)) put(fan_vectors, f, vectors[f]);
+    SMDF::vectors_to_face_angles(mesh, fan_vectors, fan_angles);
+    for(face_descriptor f : faces(mesh)) if(in_fan[f.idx()]) in_angles[f] = get(fan_angles, f);
+  }
+  const auto rnp = SMDF::parameters::symmetry_order(N);
+  SMDF::Field_topology<Mesh> found = SMDF::field_singularities(mesh, in_angles, rnp.matching(in_match));
+  {
+    std::map<vertex_descriptor, double> idx(found.singularities.begin(), found.singularities.end());
+    for(edge_descriptor e : edges(mesh)) {
+      const halfedge_descriptor h = halfedge(e, mesh);
+      const vertex_descriptor a = source(h, mesh), b = target(h, mesh);
+      const bool spoke = owner[a.idx()] >= 0 && owner[b.idx()] >= 0 && (int(a.idx()) == owner[a.idx()] || int(b.idx()) == owner[b.idx()]);
+      if(!spoke) continue;
+      const vertex_descriptor w = int(a.idx()) == owner[a.idx()] ? b : a;   // the ring vertex
+      double want = 0;
+      for(const auto& c : cones) if(c.first == w) want = std::round(c.second / (2 * CGAL_PI) * N) / N;
+      const double have = idx.count(w) ? idx[w] : 0.;
+      const int steps = int(std::lround((want - have) * N));
+      in_match[e] += w == a ? steps : -steps;   // +1 on halfedge(e) adds 1/N at its source
+    }
+  }
+  found = SMDF::field_singularities(mesh, in_angles, rnp.matching(in_match));
+  timings["fill_s"] = clock.lap();
+
+  // 7. the read-back on the input
+  std::map<vertex_descriptor, double> want, got(found.singularities.begin(), found.singularities.end());
+  Json prescribed = Json::array();
+  for(const auto& c : cones) {
+    if(is_border(c.first, mesh)) continue;
+    const double k = std::round(c.second / (2 * CGAL_PI) * N) / N;
+    if(k != 0) want[c.first] = k;
+  }
+  for(const auto& w : want) {
+    Json o = Json::object();
+    o["vertex"] = w.first.idx();
+    o["index"] = w.second;
+    prescribed.push_back(std::move(o));
+  }
+  out["prescribed"] = std::move(prescribed);
+  out["found"] = found_list(found);
+  if(open && mode != FREE_BOUNDARY) {
+    // the boundary faces along their edges (mod 2 pi / N; pi / N for odd N)
+    double worst = 0;
+    const double line_period = N % 2 == 0 ? 2 * CGAL_PI / N : CGAL_PI / N;
+    SMDF::field_angles_to_vectors(mesh, in_angles, vectors);
+    for(halfedge_descriptor h : halfedges(mesh)) {
+      if(!is_border(opposite(h, mesh), mesh)) continue;
+      const face_descriptor f = face(h, mesh);
+      const K::Vector_3 n = face_normal(mesh, f), e = mesh.point(target(h, mesh)) - mesh.point(source(h, mesh)), v = vectors[f];
+      double a = std::atan2(CGAL::cross_product(e, v) * n, e * v) - (mode == ORTHOGONAL_BOUNDARY ? CGAL_PI / 2 : 0.);
+      worst = (std::max)(worst, std::abs(std::remainder(a, line_period)));
+    }
+    Json b = Json::object();
+    b["max_boundary_deviation"] = worst;
+    out["boundary_aligned"] = std::move(b);
+    if(!(worst < 1e-6)) throw fail("the field does not follow the boundary everywhere (deviation " + format_real(worst) + " rad)");
+  }
+  if(got != want) throw fail("the field read back with its matching has other singularities than the cones");
+  out["success"] = true;
+  out["timings"] = std::move(timings);
+
+  // 8. the files
+  SMDF::field_angles_to_vectors(mesh, in_angles, vectors);
+  if(args.has("face-field-out")) {
+    std::vector<K::Vector_3> v;
+    for(face_descriptor f : faces(mesh)) v.push_back(vectors[f]);
+    write_vectors(args.value("face-field-out"), v);
+  }
+  if(args.has("matching-out")) write_matching(args.value("matching-out"), mesh, in_match);
+  if(args.has("svg")) write_field_svg_file(args, mesh, vectors, N, found, svg);
+  return out;
+}
+
+} // namespace smdf_cli
