@@ -2,7 +2,9 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # The README's two entry points (CONVENTIONS section 9):
 #   ./run.sh example   install missing Debian packages, build smdf (Release), run it on data/spot.off
-#   ./run.sh test      install missing Debian packages, build everything, run ctest
+#   ./run.sh test      install missing Debian packages, build everything, run ctest (without the
+#                      "sweep" label)
+#   ./run.sh sweep     the sweep of field design over every shared mesh (ctest -L sweep)
 #   ./run.sh sanitize  the library's tests built with AddressSanitizer + UBSan (build-sanitize/;
 #                      the smdf tool, examples, benchmarks and the downstream test are left out:
 #                      the tool runs under ASan + UBSan in ./run.sh fuzz)
@@ -19,9 +21,10 @@ JOBS=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 PACKAGES=(cmake g++ libcgal-dev libeigen3-dev libsuitesparse-dev libboost-dev libbenchmark-dev ccache doxygen python3 libopenblas0-pthread clang libclang-rt-14-dev)
 
 usage() {
-  echo "usage: $0 example|test|sanitize|fuzz" >&2
+  echo "usage: $0 example|test|sweep|sanitize|fuzz" >&2
   echo "  example  build the smdf tool and run it on data/spot.off (cross field, cone metric, SVGs)" >&2
-  echo "  test     build everything and run the test suite (ctest)" >&2
+  echo "  test     build everything and run the test suite (ctest, without the sweep)" >&2
+  echo "  sweep    run the sweep of field design over every shared mesh (ctest -L sweep)" >&2
   echo "  sanitize build the library's tests with ASan + UBSan and run them" >&2
   echo "  fuzz     build the libFuzzer targets with clang and run each for a bounded time" >&2
   exit 2
@@ -94,7 +97,13 @@ run_example() {
 
 run_tests() {
   cmake --build "$BUILD_DIR" -j "$JOBS"
-  ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS"
+  ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS" -LE sweep
+}
+
+# The sweep over every shared mesh (CTest label "sweep"; CI runs it after the tests).
+run_sweep() {
+  cmake --build "$BUILD_DIR" -j "$JOBS" --target smdf
+  ctest --test-dir "$BUILD_DIR" --output-on-failure -L sweep
 }
 
 run_sanitized_tests() {
@@ -137,6 +146,7 @@ run_fuzzers() {
 case "$1" in
   example) install_dependencies; configure; run_example ;;
   test)    install_dependencies; configure; run_tests ;;
+  sweep)   install_dependencies; configure; run_sweep ;;
   sanitize) install_dependencies; run_sanitized_tests ;;
   fuzz)    install_dependencies; run_fuzzers ;;
   *)       usage ;;

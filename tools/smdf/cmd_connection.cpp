@@ -339,6 +339,14 @@ Json run_connection(const Args& args)
   Edge_matching_property out_matching = matching;
   SMDF::Field_topology<Mesh> input_topo;
   SMDF::Field_transfer_status transfer;
+  if(on_input && own_metric) {
+    // another metric on the input's edges: the field and its matching in the embedding
+    out_angles = mesh.add_property_map<face_descriptor, double>("f:smdf_input_angle", 0.).first;
+    out_matching = mesh.add_property_map<edge_descriptor, int>("e:smdf_input_matching", 0).first;
+    SMDF::face_field_in_embedding(mesh, int(N), angles, matching, metric_lengths, out_angles, out_matching);
+    input_topo = SMDF::field_singularities(mesh, out_angles, SMDF::parameters::symmetry_order(int(N)).matching(out_matching));
+    transfer.success = true;
+  }
   if(!on_input) {
     out_angles = mesh.add_property_map<face_descriptor, double>("f:smdf_input_angle", 0.).first;
     out_matching = mesh.add_property_map<edge_descriptor, int>("e:smdf_input_matching", 0).first;
@@ -353,9 +361,9 @@ Json run_connection(const Args& args)
   if(args.has("field-out") || args.has("svg")) {
     Face_vector_property vectors =
       mesh.add_property_map<face_descriptor, K::Vector_3>("f:smdf_vector", K::Vector_3(0, 0, 0)).first;
-    if(on_input) tc.angles_to_vectors(angles, vectors);
+    if(on_input && !own_metric) tc.angles_to_vectors(angles, vectors);
     else SMDF::field_angles_to_vectors(mesh, out_angles, vectors);
-    write_field_files(args, mesh, vectors, N, on_input ? topo : input_topo, opt.svg);
+    write_field_files(args, mesh, vectors, N, on_input && !own_metric ? topo : input_topo, opt.svg);
   }
   if(args.has("connection-out")) write_connection(args.value("connection-out"), mesh, tc);
   if(args.has("matching-out")) write_matching(args.value("matching-out"), mesh, out_matching);
@@ -373,6 +381,11 @@ Json run_connection(const Args& args)
   out["N"] = N;
   out["weights"] = opt.weights_name;
   out["metric"] = args.has("factors") ? "factors" : own_metric ? "lengths" : "embedding";
+  if(on_input && own_metric) {
+    Json t = Json::object();
+    t["found"] = found_list(input_topo);
+    out["input_read_back"] = std::move(t);
+  }
   if(!on_input) {
     Json c = Json::object();
     c["intrinsic_edges"] = itri.number_of_new_edges();
@@ -415,10 +428,10 @@ Json run_connection(const Args& args)
   for(std::size_t g = 0; g < tc.generators().size(); ++g) prescribed_turning.push_back(tc.generator_turning_number(g));
   if(failure.empty() && topo.generator_turning_numbers != prescribed_turning)
     failure = "the field read back with its matching has other generator turning numbers than the prescribed ones";
-  if(failure.empty() && !on_input && !transfer.success)
+  if(failure.empty() && own_metric && !transfer.success)
     failure = "the field could not be carried to the input faces: " + transfer.message;
-  if(failure.empty() && !on_input && !same_singularities(input_topo, sing, N))
-    failure = "the field carried to the input faces reads back, with its matching, other singularities than the prescribed ones";
+  if(failure.empty() && own_metric && !same_singularities(input_topo, sing, N))
+    failure = "the field on the input faces reads back, with its matching, other singularities than the prescribed ones";
   out["success"] = failure.empty();
   out["timings"] = std::move(timings);
   if(!failure.empty()) throw Failed_result{out, file + ": " + failure, 3};

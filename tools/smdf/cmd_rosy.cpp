@@ -504,8 +504,25 @@ Json run_rosy(const Args& args)
     else if(!prescribed_turning.empty() && found.generator_turning_numbers != prescribed_turning)
       failure = "the field read back with its matching has other generator turning numbers than the prescribed ones";
   }
-  // 7'. with flips: the face field and its matching carried to the input faces, read back there
+  // 7'. the face field and its matching on the input mesh, read back there: with flips carried
+  // through the common subdivision, without them mapped face by face to the embedding
   Edge_matching_property input_matching = matching;
+  if(failure.empty() && on_input) {
+    input_matching = mesh.add_property_map<edge_descriptor, int>("e:smdf_rosy_input_matching", 0).first;
+    const Face_angle_property embedded = mesh.add_property_map<face_descriptor, double>("f:smdf_rosy_embedded_angle", 0.).first;
+    SMDF::face_field_in_embedding(mesh, N, angles, matching, flat, embedded, input_matching);
+    const SMDF::Field_topology<Mesh> on_mesh =
+        SMDF::field_singularities(mesh, embedded, SMDF::parameters::symmetry_order(N).matching(input_matching));
+    Json t = Json::object();
+    t["found"] = found_list(on_mesh);
+    out["input_read_back"] = std::move(t);
+    std::map<vertex_descriptor, double> got(on_mesh.singularities.begin(), on_mesh.singularities.end()), want;
+    for(const auto& c : cones) {
+      const double k2 = std::round(c.second / (2 * CGAL_PI) * N) / N;
+      if(!is_border(c.first, mesh) && k2 != 0) want[c.first] = k2;
+    }
+    if(got != want) failure = "the field mapped to the embedding reads back, with its matching, other singularities than the cones";
+  }
   if(failure.empty() && !on_input) {
     input_matching = mesh.add_property_map<edge_descriptor, int>("e:smdf_rosy_input_matching", 0).first;
     std::vector<double> a(num_faces(*carrier));

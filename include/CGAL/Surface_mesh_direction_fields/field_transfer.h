@@ -9,6 +9,8 @@
 #include <CGAL/Surface_mesh_direction_fields/errors.h>
 #include <CGAL/Surface_mesh_direction_fields/intrinsic_triangle.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/development.h>
+#include <CGAL/Surface_mesh_direction_fields/field_singularities.h>
+#include <CGAL/Surface_mesh_direction_fields/parallel_rosy_field.h>
 
 #include <algorithm>
 #include <array>
@@ -446,6 +448,56 @@ std::vector<double> input_vertex_frame_angles(const TriangleMesh& tm, const Intr
     delta[v] = std::isnan(a) ? 0. : a;
   }
   return delta;
+}
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsConeMetrics
+/// A face field of another metric on the same triangulation (e.g. a flat cone metric that
+/// needed no flips, given as `edge_length_map`), with its matching, in the embedding: the
+/// directions mapped as field_angles_to_vectors() maps them (the linear map of each triangle; a
+/// border face keeps the angle with its border edge), as angles in the embedded face frames, and
+/// the matching that gives the same rotations in the embedding's Levi-Civita connection. Across
+/// an edge, each face's map turns a direction by less than \f$\pi\f$ relative to that edge (it
+/// keeps the edge's line and the orientation), so the embedded rotation is the metric's plus the
+/// two faces' turns, and the read-back of the result (field_singularities() on the embedding)
+/// equals the read-back on the metric.
+///
+/// \param tm the mesh
+/// \param N the symmetry order
+/// \param angles per face: the field's angle in the metric's face frame
+/// \param matching per edge: its period jump (convention of field_singularities())
+/// \param metric_lengths per edge: the metric
+/// \param embedded_angles receives the angle of every face in the embedded face frame
+/// \param embedded_matching receives the period jump of every edge in the embedding
+template <typename TriangleMesh, typename FaceAngleMap, typename EdgeMatchingMap, typename EdgeLengthMap,
+          typename OutputFaceAngleMap, typename OutputEdgeMatchingMap>
+void face_field_in_embedding(const TriangleMesh& tm, int N, const FaceAngleMap& angles, const EdgeMatchingMap& matching,
+                             const EdgeLengthMap& metric_lengths, OutputFaceAngleMap embedded_angles,
+                             OutputEdgeMatchingMap embedded_matching)
+{
+  typedef typename boost::property_traits<typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type Point;
+  typedef typename Kernel_traits<Point>::Kernel::Vector_3 Vector;
+  const Intrinsic_mesh<TriangleMesh> metric(tm, parameters::edge_length_map(metric_lengths));
+  const Intrinsic_mesh<TriangleMesh> embedded(tm, parameters::default_values());
+  const internal::Mesh_arrays<TriangleMesh>& mm = metric.arrays();
+  const internal::Mesh_arrays<TriangleMesh>& me = embedded.arrays();
+  auto vectors = get(CGAL::dynamic_face_property_t<Vector>(), tm);
+  field_angles_to_vectors(tm, angles, vectors, parameters::edge_length_map(metric_lengths));
+  vectors_to_face_angles(tm, vectors, embedded_angles);
+  const double period = 2 * CGAL_PI / N;
+  for(std::size_t e = 0; e < mm.number_of_edges(); ++e) {
+    const int h = int(2 * e);
+    const int l = mm.face[std::size_t(h)], r = mm.face[std::size_t(h ^ 1)];
+    if(l < 0 || r < 0) { put(embedded_matching, mm.edges[e], 0); continue; }
+    const double bl = double(get(angles, mm.faces[std::size_t(l)])), br = double(get(angles, mm.faces[std::size_t(r)]));
+    const double el = double(get(embedded_angles, me.faces[std::size_t(l)])), er = double(get(embedded_angles, me.faces[std::size_t(r)]));
+    // the turn of each face's map relative to the shared edge
+    const double tl = internal::wrap_angle((el - internal::halfedge_direction(me, h)) - (bl - internal::halfedge_direction(mm, h)));
+    const double tr = internal::wrap_angle((er - internal::halfedge_direction(me, h ^ 1)) - (br - internal::halfedge_direction(mm, h ^ 1)));
+    const double rotation = internal::wrap_angle(bl - br - internal::transport_increment(mm, h)) + period * double(get(matching, mm.edges[e]));
+    const double embedded_rotation = rotation + tl - tr;
+    const double principal = internal::wrap_angle(el - er - internal::transport_increment(me, h));
+    put(embedded_matching, mm.edges[e], int(std::lround((embedded_rotation - principal) / period)));
+  }
 }
 
 } // namespace Surface_mesh_direction_fields
