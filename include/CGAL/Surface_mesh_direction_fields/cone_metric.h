@@ -325,15 +325,14 @@ Cone_metric_status compute_cone_metric(const TriangleMesh& tm,
   // --- 5. output: lengths of the input edges, or the intrinsic triangulation and its
   // correspondence to the input; conformal factors; status
   Cone_metric_status st;
-  double replay_error = 0;
-  st.triangulation_changed = flow.triangulation_changed() &&
-      internal::output_intrinsic_triangulation(m, u, target, len, output_lengths, st.intrinsic_triangulation, replay_error,
-                                               st.correspondence_message, with_subdivision);
+  st.triangulation_changed = flow.triangulation_changed();
   if(!st.triangulation_changed)
     internal::put_input_edge_lengths(m, len, output_lengths);
+  else
+    internal::output_intrinsic_triangulation(m, flow, u, len, output_lengths, st.intrinsic_triangulation,
+                                             st.correspondence_message, with_subdivision);
   internal::put_conformal_factors(m, np, [&u](std::size_t v) { return u[v]; });
   internal::put_flow_outcome(r, st);
-  st.max_curvature_error = (std::max)(st.max_curvature_error, replay_error);
   st.seconds = internal::seconds_since(t0);
   return st;
 }

@@ -140,6 +140,16 @@ public:
     return len;
   }
 
+  // Makes the flips of `log` in order (a flow's flip_log()), carrying the crossings.
+  void replay(const std::vector<int>& log)
+  {
+    for(int e : log) {
+      if(!tri.is_flippable(e)) throw internal_correspondence_error("a logged flip of an edge that cannot flip");
+      flip(e);
+      ++flips;
+    }
+  }
+
   // Empty, or what is wrong with the crossings of face f: every arc joins two ends of one input
   // edge, enters the face at one end and leaves it at the other, t increasing along it.
   std::string face_error(int f) const

@@ -178,79 +178,63 @@ void put_input_edge_lengths(const Mesh_arrays<TM>& m, const std::vector<double>&
   for(std::size_t e = 0; e < m.number_of_edges(); ++e) put(output_lengths, m.edges[e], len[e]);
 }
 
-// The flow flipped edges. The intrinsic Delaunay triangulation of the final factors u is made
-// again from the input by flips that carry the crossings of the input edges (the flow's own
-// flips are undone by its line searches and are not worth tracking: replaying from the input
-// costs one pass of flips), with its common subdivision. Returns false if no flip is needed at
-// u after all (len then holds the lengths of the input edges). Otherwise `it` receives the
-// triangulation, output_lengths the lengths of the input edges that are still edges and a
-// quiet NaN for the others, and max_error the largest curvature error on it; if the
-// correspondence fails its own checks, `it` has no common subdivision and correspondence_message
-// says why.
-template <typename TM, typename EdgeLengthMap>
-bool output_intrinsic_triangulation(const Mesh_arrays<TM>& m, const std::vector<double>& u,
-                                    const std::vector<double>& target, std::vector<double>& len,
-                                    EdgeLengthMap output_lengths, Intrinsic_triangulation& it,
-                                    double& max_error, std::string& correspondence_message,
+// The flow flipped edges: its flips (flip_log(), without those of rejected trial points) are
+// made again from the input, each carrying the crossings of the input edges (tracking them in
+// the flow itself would copy them at every snapshot of its line searches); the same Ptolemy
+// updates give the flow's triangulation and Penner coordinates bit for bit, so the metric and its
+// curvature are the flow's. `it` receives the triangulation with the lengths `len` and its common
+// subdivision, output_lengths the lengths of the input edges that are still edges (a quiet NaN
+// for the others). If the correspondence fails its own checks (or is not wanted), `it` has no
+// common subdivision and correspondence_message says why.
+template <typename TM, typename Flow, typename EdgeLengthMap>
+void output_intrinsic_triangulation(const Mesh_arrays<TM>& m, const Flow& flow, const std::vector<double>& u,
+                                    const std::vector<double>& len, EdgeLengthMap output_lengths,
+                                    Intrinsic_triangulation& it, std::string& correspondence_message,
                                     bool with_subdivision = true)
 {
+  const Flippable_triangulation& tri = flow.triangulation();
   Tracked_delaunay_flips<TM> tf(m);
-  try {
-    len = tf.make_delaunay(u, with_subdivision);
-  } catch(const std::runtime_error& e) {
-    // the flips without their crossings: the metric is sound, only the correspondence is lost
-    correspondence_message = e.what();
-    tf = Tracked_delaunay_flips<TM>(m);
-    len = tf.make_delaunay(u, false);
+  bool tracked = with_subdivision;
+  if(tracked) {
+    try {
+      tf.replay(flow.flip_log());
+      if(tf.tri.next != tri.next || tf.tri.target != tri.target || tf.l0 != flow.base_lengths())
+        throw internal_correspondence_error("the replayed flips do not give the flow's triangulation");
+    } catch(const std::runtime_error& e) {
+      correspondence_message = e.what();
+      tracked = false;
+    }
   }
-  if(tf.flips == 0) return false;
-  if(!with_subdivision || !correspondence_message.empty()) {
-    // untracked flips: an edge is an input edge if it joins the same vertices with the same
-    // Penner coordinate (a flipped-back edge has exactly its old one: Ptolemy is an involution;
-    // input edges sorted by their end points)
+  std::vector<long> input_edge(m.number_of_edges(), -1);
+  if(tracked) input_edge.assign(tf.coincident.begin(), tf.coincident.end());
+  else {
+    // an edge is an input edge if it joins the same vertices with the same Penner coordinate (a
+    // flipped-back edge has exactly its old one: Ptolemy is an involution; input edges sorted by
+    // their end points)
     const std::size_t nv = m.number_of_vertices();
     auto key = [nv](int a, int b) { return (long long)(std::min)(a, b) * (long long)nv + (std::max)(a, b); };
     std::vector<std::pair<long long, int>> by_ends(m.number_of_edges());
     for(std::size_t e = 0; e < m.number_of_edges(); ++e) by_ends[e] = std::make_pair(key(m.target[2 * e], m.target[2 * e + 1]), int(e));
     std::sort(by_ends.begin(), by_ends.end());
     for(std::size_t e = 0; e < m.number_of_edges(); ++e) {
-      if(tf.coincident[e] >= 0) continue;
-      const long long k = key(tf.tri.target[2 * e], tf.tri.target[2 * e + 1]);
-      for(auto it = std::lower_bound(by_ends.begin(), by_ends.end(), std::make_pair(k, -1)); it != by_ends.end() && it->first == k; ++it)
-        if(std::abs(tf.l0[e] - m.length[std::size_t(it->second)]) <= 1e-12 * m.length[std::size_t(it->second)]) {
-          tf.coincident[e] = it->second;
+      const long long k = key(tri.target[2 * e], tri.target[2 * e + 1]);
+      for(auto p = std::lower_bound(by_ends.begin(), by_ends.end(), std::make_pair(k, -1)); p != by_ends.end() && p->first == k; ++p)
+        if(std::abs(flow.base_lengths()[e] - m.length[std::size_t(p->second)]) <= 1e-12 * m.length[std::size_t(p->second)]) {
+          input_edge[e] = p->second;
           break;
         }
     }
   }
   std::vector<double> out(m.number_of_edges(), std::numeric_limits<double>::quiet_NaN());
   for(std::size_t e = 0; e < m.number_of_edges(); ++e)
-    if(tf.coincident[e] >= 0) out[std::size_t(tf.coincident[e])] = len[e];
+    if(input_edge[e] >= 0) out[std::size_t(input_edge[e])] = len[e];
   for(std::size_t e = 0; e < m.number_of_edges(); ++e) put(output_lengths, m.edges[e], out[e]);
-  // the curvature read back on this triangulation
-  std::vector<double> angle_sum(m.number_of_vertices(), 0.);
-  for(std::size_t f = 0; f < m.number_of_faces(); ++f) {
-    const int h0 = tf.tri.face_halfedge[f], h1 = tf.tri.next[std::size_t(h0)], h2 = tf.tri.next[std::size_t(h1)];
-    const double a = len[std::size_t(h0 >> 1)], b = len[std::size_t(h1 >> 1)], c = len[std::size_t(h2 >> 1)];
-    angle_sum[std::size_t(tf.tri.target[std::size_t(h2)])] += corner_angle(b, a, c);
-    angle_sum[std::size_t(tf.tri.target[std::size_t(h0)])] += corner_angle(c, a, b);
-    angle_sum[std::size_t(tf.tri.target[std::size_t(h1)])] += corner_angle(a, b, c);
-  }
-  max_error = 0;
-  for(std::size_t v = 0; v < m.number_of_vertices(); ++v) {
-    if(m.is_isolated(int(v))) continue;
-    const double k = (m.is_boundary_vertex(int(v)) ? CGAL_PI : 2 * CGAL_PI) - angle_sum[v];
-    max_error = (std::max)(max_error, std::abs(k - target[v]));
-  }
-  std::vector<long> input_edge(tf.coincident.begin(), tf.coincident.end());
-  it = Intrinsic_triangulation(m.number_of_vertices(), tf.tri.next, tf.tri.target, tf.tri.face,
-                               tf.tri.face_halfedge, len, std::move(input_edge));
-  if(correspondence_message.empty() && with_subdivision) try {
+  it = Intrinsic_triangulation(m.number_of_vertices(), tri.next, tri.target, tri.face, tri.face_halfedge, len, std::move(input_edge));
+  if(tracked) try {
     build_common_subdivision(m, tf, u, len, it);
   } catch(const std::runtime_error& e) {
     correspondence_message = e.what();
   }
-  return true;
 }
 
 // Writes conformal_factor(v) of every vertex v to the conformal_factor_map of np, if given.

@@ -126,6 +126,10 @@ public:
   const Flippable_triangulation& triangulation() const { return tri_; }
   const std::vector<double>& base_lengths() const { return l0_; }
   bool triangulation_changed() const { return tri_.next != m_.next; }
+  // The flips that lead from the input triangulation to triangulation(), in order (those of
+  // rejected trial points undone): replayed with the same Ptolemy updates they give the same
+  // triangulation and Penner coordinates, bit for bit (Tracked_delaunay_flips::replay()).
+  const std::vector<int>& flip_log() const { return flip_log_; }
 
   // Strictly valid triangles whose relative area is above the threshold that Mesh_arrays
   // rejects as degenerate; writes the corner angles (as Mesh_arrays::angle) and, per corner,
@@ -275,6 +279,7 @@ public:
       const double p_new = tri_.ptolemy(e, l0_);
       if(!std::isfinite(p_new) || !(p_new > 0)) return false;
       tri_.flip(e);
+      flip_log_.push_back(e);
       l0_[e] = p_new;
       len[e] = p_new * half_exp_[tri_.target[h]] * half_exp_[tri_.target[o]];
       if(!std::isfinite(len[e]) || !(len[e] > 0)) return false;
@@ -606,9 +611,12 @@ private:
   Flippable_triangulation saved_tri_;
   std::vector<double> saved_l0_;
   std::size_t flips_at_snapshot_ = 0, version_ = 0;
+  std::vector<int> flip_log_;
+  std::size_t log_at_snapshot_ = 0;
 
   void snapshot()
   {
+    log_at_snapshot_ = flip_log_.size();
     if(flips_ == flips_at_snapshot_ && !saved_l0_.empty()) return;
     saved_tri_ = tri_;
     saved_l0_ = l0_;
@@ -618,6 +626,7 @@ private:
   void restore()
   {
     if(flips_ == flips_at_snapshot_) return;
+    flip_log_.resize(log_at_snapshot_);
     tri_ = saved_tri_;
     l0_ = saved_l0_;
     flips_at_snapshot_ = flips_;
