@@ -872,6 +872,29 @@ def test_rosy(smdf, c, torus, tmp):
     smdf.error(["rosy", spot, "--cones", "0:pi/2,0:pi/2"], "rosy: cone given twice", 1, "twice")
 
 
+def border_faces(faces):
+    """The boundary edges (a, b) with a < b, each with its face."""
+    edge_faces = {}
+    for fi, f in enumerate(faces):
+        for k in range(3):
+            a, b = f[k], f[(k + 1) % 3]
+            edge_faces.setdefault((min(a, b), max(a, b)), []).append(fi)
+    return [(e, fs[0]) for e, fs in edge_faces.items() if len(fs) == 1]
+
+
+def boundary_deviation(verts, faces, border, vectors, N, mode):
+    """The largest angle between a boundary face's field and its boundary edge (mode "parallel")
+    or the edge's normal in the face plane ("orthogonal"), modulo 2 pi / N (pi / N for odd N)."""
+    worst = 0
+    for e, f in border:
+        d = vsub(verts[e[1]], verts[e[0]])
+        if mode == "orthogonal":
+            a, b, cc = (verts[i] for i in faces[f])
+            d = vcross(vcross(vsub(b, a), vsub(cc, a)), d)
+        worst = max(worst, line_angle_error(vectors[f], d, N if N % 2 == 0 else 2 * N))
+    return worst
+
+
 def test_shared_rosy(smdf, c, meshes, tmp):
     """smdf rosy on open shared meshes (free boundary, fields parallel and orthogonal to the
     boundary, checked edge by edge from --face-field-out) and one singularity on genus 2."""
@@ -904,26 +927,14 @@ def test_shared_rosy(smdf, c, meshes, tmp):
         if not os.path.isfile(path) or too_large(meshes, name):
             continue
         verts, faces = read_off(path)
-        edge_faces = {}
-        for fi, f in enumerate(faces):
-            for k in range(3):
-                a, b = f[k], f[(k + 1) % 3]
-                edge_faces.setdefault((min(a, b), max(a, b)), []).append(fi)
-        border = [(e, fs[0]) for e, fs in edge_faces.items() if len(fs) == 1]
+        border = border_faces(faces)
         for mode in ("parallel", "orthogonal"):
             ff, mm = os.path.join(tmp, "disk_face.txt"), os.path.join(tmp, "disk_matching.txt")
             r = smdf.json(["rosy", path, "--cones", "1000:2pi", "--N", "1", "--boundary", mode, "--face-field-out", ff, "--matching-out", mm],
                           "rosy %s, one cone of index 1, --boundary %s" % (name, mode))
             if not r:
                 continue
-            fv = read_vectors(ff)
-            worst = 0
-            for e, f in border:
-                d = vsub(verts[e[1]], verts[e[0]])
-                if mode == "orthogonal":
-                    a, b, cc = (verts[i] for i in faces[f])
-                    d = vcross(vcross(vsub(b, a), vsub(cc, a)), d)
-                worst = max(worst, line_angle_error(fv[f], d, 2))
+            worst = boundary_deviation(verts, faces, border, read_vectors(ff), 2, mode)
             back = smdf.json(["singularities", path, "--field", ff, "--N", "1", "--matching", mm], "singularities of the disk field")
             c.check(r.get("success") is True and worst < 1e-6 and back is not None
                     and back.get("singularities") == [{"vertex": 1000, "index": 1}],
@@ -936,26 +947,13 @@ def test_shared_rosy(smdf, c, meshes, tmp):
         if not os.path.isfile(path) or too_large(meshes, name):
             continue
         verts, faces = read_off(path)
-        edge_faces = {}
-        for fi, f in enumerate(faces):
-            for k in range(3):
-                a, b = f[k], f[(k + 1) % 3]
-                edge_faces.setdefault((min(a, b), max(a, b)), []).append(fi)
-        border = [(e, fs[0]) for e, fs in edge_faces.items() if len(fs) == 1]
+        border = border_faces(faces)
         for N, mode in modes:
             ff = os.path.join(tmp, "loops_%s_%d.txt" % (mode, N))
             r = smdf.json(["rosy", path, "--N", str(N), "--boundary", mode, "--face-field-out", ff], "rosy %s --N %d --boundary %s" % (name, N, mode))
             if not r:
                 continue
-            fv = read_vectors(ff)
-            orth = mode == "orthogonal"
-            worst = 0
-            for e, f in border:
-                d = vsub(verts[e[1]], verts[e[0]])
-                if orth:
-                    a, b, cc = (verts[i] for i in faces[f])
-                    d = vcross(vcross(vsub(b, a), vsub(cc, a)), d)
-                worst = max(worst, line_angle_error(fv[f], d, N if N % 2 == 0 else 2 * N))
+            worst = boundary_deviation(verts, faces, border, read_vectors(ff), N, mode)
             c.check(r.get("success") is True and r.get("found") == [] and worst < 1e-6,
                     "rosy %s (%d loops) --N %d --boundary %s: every boundary face %s to its edge (%.3g), no singularity"
                     % (name, len(r.get("boundary_turning_over_pi", [])), N, mode, mode, worst))
@@ -2213,15 +2211,7 @@ def test_sweep(smdf, c, shared):
             good = back is not None and back.get("singularities") == want and r.get("found") == want
             if border is not None and mode in ("parallel", "orthogonal"):
                 verts, faces, edges = border
-                fv = read_vectors(ff)
-                worst = 0
-                for e, f in edges:
-                    d = vsub(verts[e[1]], verts[e[0]])
-                    if mode == "orthogonal":
-                        a, b, cc = (verts[i] for i in faces[f])
-                        d = vcross(vcross(vsub(b, a), vsub(cc, a)), d)
-                    worst = max(worst, line_angle_error(fv[f], d, N if N % 2 == 0 else 2 * N))
-                good = good and worst < 1e-6
+                good = good and boundary_deviation(verts, faces, edges, read_vectors(ff), N, mode) < 1e-6
             if c.check(good, "sweep: rosy %s %s: the input's field reads back the cones%s" % (name, " ".join(args)[:80],
                        "" if border is None else " and follows the boundary")):
                 ok += 1
@@ -2236,14 +2226,12 @@ def test_sweep(smdf, c, shared):
             if len(verts) != int(r["V"]) or len(faces) != int(r["F"]):
                 continue   # (unreferenced vertices: the tool's numbering could differ from the file's)
             adjacent = {}
-            edge_faces = {}
-            for fi, f in enumerate(faces):
+            for f in faces:
                 for k in range(3):
                     a, b = f[k], f[(k + 1) % 3]
                     adjacent.setdefault(a, set()).add(b)
                     adjacent.setdefault(b, set()).add(a)
-                    edge_faces.setdefault((min(a, b), max(a, b)), []).append(fi)
-            border_edges = [(e, fs[0]) for e, fs in edge_faces.items() if len(fs) == 1]
+            border_edges = border_faces(faces)
             on_border = {v for e, _ in border_edges for v in e}
             interior = [v for v in range(len(verts)) if v in adjacent and v not in on_border]
             genus = int(r["genus"]) if r["genus"].isdigit() else 0

@@ -245,13 +245,7 @@ Json run_rosy(const Args& args)
     cm = on_file(file, [&] { return SMDF::compute_cone_metric(mesh, targets, lengths); });
   }
   timings["metric_s"] = clock.lap();
-  Json metric = Json::object();
-  metric["converged"] = cm.converged;
-  metric["iterations"] = cm.iterations;
-  metric["max_curvature_error"] = cm.max_curvature_error;
-  metric["triangulation_changed"] = cm.triangulation_changed;
-  if(method == BOUNDARY_ALIGNED) metric["on"] = "double cover";
-  out["metric"] = std::move(metric);
+  out["metric"] = metric_json(cm, method == BOUNDARY_ALIGNED ? "double cover" : nullptr);
   if(open) {
     Json bt = Json::array();
     for(const auto& loop : bgeo.loops) {

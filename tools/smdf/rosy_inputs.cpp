@@ -158,6 +158,17 @@ void open_mesh_targets(const Mesh& mesh, const Boundary_geometry& b, int N, Boun
                   " (not in (-pi, pi)); give the boundary's turning angles with --cones");
 }
 
+Json metric_json(const SMDF::Cone_metric_status& cm, const char* on)
+{
+  Json metric = Json::object();
+  metric["converged"] = cm.converged;
+  metric["iterations"] = cm.iterations;
+  metric["max_curvature_error"] = cm.max_curvature_error;
+  metric["triangulation_changed"] = cm.triangulation_changed;
+  if(on) metric["on"] = on;
+  return metric;
+}
+
 Constraint_lines read_constraint_file(const std::string& file, const Mesh& mesh, bool lengths)
 {
   Constraint_lines c;

@@ -9,6 +9,8 @@
 
 #include "common.h"
 
+#include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
+
 #include <algorithm>
 #include <string>
 #include <utility>
@@ -53,6 +55,10 @@ struct Constraint_lines
 
 // Reads --edit (lengths = false) or --length; Errors name the file and the line.
 Constraint_lines read_constraint_file(const std::string& file, const Mesh& mesh, bool lengths);
+
+// The JSON of a flat cone metric: {converged, iterations, max_curvature_error,
+// triangulation_changed, on} (`on` only when given: what the metric lives on).
+Json metric_json(const SMDF::Cone_metric_status& cm, const char* on);
 
 // smdf rosy with interior cones of index 1 or more (rosy_punched.cpp): holes punched there
 // (Lai et al. 4.1.1), the parallel field of the holed surface's flat metric carried to the input,

@@ -117,13 +117,7 @@ Json run_rosy_punched(const Args& args, const std::string& file, Mesh& mesh, int
     return SMDF::compute_cone_metric(holed, htarget, hlen, SMDF::parameters::conformal_factor_map(hu));
   });
   timings["metric_s"] = clock.lap();
-  Json metric = Json::object();
-  metric["converged"] = cm.converged;
-  metric["iterations"] = cm.iterations;
-  metric["max_curvature_error"] = cm.max_curvature_error;
-  metric["triangulation_changed"] = cm.triangulation_changed;
-  metric["on"] = "the mesh with its holes punched";
-  out["metric"] = std::move(metric);
+  out["metric"] = metric_json(cm, "the mesh with its holes punched");
   auto fail = [&](const std::string& why) {
     out["success"] = false;
     out["timings"] = timings;
