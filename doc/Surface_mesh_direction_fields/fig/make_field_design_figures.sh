@@ -56,10 +56,15 @@ if [ -f "$meshes/mushroom_cgal.off" ]; then
   run rosy "$meshes/mushroom_cgal.off" --N 4 --boundary parallel --hatching-svg "$here/mushroom_boundary_parallel.svg" --width 500
 fi
 # Fig. 8: one singularity of index +2 on a genus-0 surface; Fig. 2: one of index -2 on genus 2.
-# A cone of index 1 or more has no flat cone metric (it would be a hole) and the single cone of
-# -4 pi makes the Ricci flow flip edges (the field then lives on an intrinsic triangulation), so
-# both are the trivial connections of the embedding with those singularities.
+# The trivial connections of the embedding with those singularities, and Fig. 8 by the
+# metric-driven method: a hole punched at the cone of 4 pi, the parallel field of the holed
+# surface carried back and the hole filled (section "Cones of Index One or More"); a vector field
+# parallel to a disk's boundary with one cone of index +1 inside, the same way.
 run connection "$spot" --singularities 1855:2 --svg "$here/spot_index_2.svg" "${view[@]}"
+run rosy "$spot" --cones 1855:4pi --N 1 --svg "$here/spot_index_2_punched.svg" "${view[@]}"
+if [ -f "$meshes/mushroom_cgal.off" ]; then
+  run rosy "$meshes/mushroom_cgal.off" --cones 16:2pi --N 1 --boundary parallel --svg "$here/mushroom_index_1_parallel.svg" --width 500
+fi
 if [ -f "$meshes/eight_directional.off" ]; then
   run connection "$meshes/eight_directional.off" --singularities 0:-2 --svg "$here/eight_index_minus_2.svg" \
       --view 30,40,z --width 500
