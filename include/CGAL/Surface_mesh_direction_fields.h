@@ -35,6 +35,8 @@
 #include <CGAL/Surface_mesh_direction_fields/streamlines.h>
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/Intrinsic_triangulation.h>
+#include <CGAL/Surface_mesh_direction_fields/field_transfer.h>
+#include <CGAL/Surface_mesh_direction_fields/curvature_aligned_field.h>
 
 #ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_WITH_IO
 #include <CGAL/Surface_mesh_direction_fields/IO.h>
