@@ -35,19 +35,6 @@ namespace smdf_cli {
 
 namespace {
 
-enum Rosy_method { AUTOMATIC, ROTATION_COMPENSATION, TRIVIAL_CONNECTION, PARALLEL, BOUNDARY_ALIGNED };
-
-const char* method_name(Rosy_method m)
-{
-  switch(m) {
-    case ROTATION_COMPENSATION: return "rotation-compensation";
-    case TRIVIAL_CONNECTION: return "trivial-connection";
-    case PARALLEL: return "parallel";
-    case BOUNDARY_ALIGNED: return "boundary-aligned";
-    default: return "automatic";
-  }
-}
-
 const char* loop_kind_name(SMDF::Homotopy_loop_kind k)
 {
   return k == SMDF::HANDLE_LOOP ? "handle" : k == SMDF::BOUNDARY_LOOP ? "boundary" : "cone";
@@ -69,43 +56,6 @@ Json tessellation_json(const SMDF::Tessellation_compatibility& t)
   o["max_rotation_deviation"] = t.max_rotation_deviation;
   o["max_translation_deviation"] = t.max_translation_deviation;
   o["failing_loops"] = index_list(t.failing_loops);
-  return o;
-}
-
-struct Rosy_options
-{
-  Rosy_method method = AUTOMATIC;
-  Boundary_mode boundary = FREE_BOUNDARY;
-  bool boundary_given = false;
-  long N = 0;   // 0: from the cones
-  Indexed_values turning;
-};
-
-Rosy_options rosy_options(const Args& args)
-{
-  Rosy_options o;
-  if(args.has("N")) o.N = symmetry_order_option(args);
-  if(args.has("method")) {
-    const std::string m = args.value("method");
-    if(m == "rotation-compensation") o.method = ROTATION_COMPENSATION;
-    else if(m == "trivial-connection") o.method = TRIVIAL_CONNECTION;
-    else if(m == "parallel") o.method = PARALLEL;
-    else throw Usage_error("option --method expects rotation-compensation, trivial-connection or parallel, got '" + shorten(m) + "'");
-  }
-  if(args.has("boundary")) {
-    o.boundary_given = true;
-    const std::string b = args.value("boundary");
-    if(b == "free") o.boundary = FREE_BOUNDARY;
-    else if(b == "parallel") o.boundary = PARALLEL_BOUNDARY;
-    else if(b == "orthogonal") o.boundary = ORTHOGONAL_BOUNDARY;
-    else throw Usage_error("option --boundary expects free, parallel or orthogonal, got '" + shorten(b) + "'");
-  }
-  o.turning = index_list_option(args, "turning");
-  if(o.boundary != FREE_BOUNDARY && (o.method == ROTATION_COMPENSATION || o.method == TRIVIAL_CONNECTION))
-    throw Usage_error(std::string("--boundary ") + args.value("boundary") + " builds the field on the double cover; it takes no --method " +
-                      method_name(o.method));
-  if(o.method == PARALLEL && !o.turning.empty())
-    throw Usage_error("--turning needs --method rotation-compensation or trivial-connection (a parallel field has no choice)");
   return o;
 }
 
@@ -132,44 +82,8 @@ Json run_rosy(const Args& args)
   if((args.has("alignment-weight") || args.has("smoothing-steps")) && !automatic)
     throw Usage_error("--alignment-weight and --smoothing-steps need --cones auto");
   Json automatic_json;
-  const std::vector<std::pair<vertex_descriptor, double>> cones = [&] {
-    if(!automatic) return cone_option(args, mesh, true);
-    const int n = opt.N ? int(opt.N) : 4;
-    double weight = 0.01;
-    if(args.has("alignment-weight")) {
-      char* end = nullptr;
-      const std::string w = args.value("alignment-weight");
-      weight = std::strtod(w.c_str(), &end);
-      if(*end != '\0' || !(weight > 0) || !std::isfinite(weight))
-        throw Usage_error("option --alignment-weight expects a positive number, got '" + shorten(w) + "'");
-    }
-    long steps = 4;
-    if(args.has("smoothing-steps")) {
-      char* end = nullptr;
-      const std::string w = args.value("smoothing-steps");
-      steps = std::strtol(w.c_str(), &end, 10);
-      if(*end != '\0' || w.empty() || steps < 0 || steps > 1000)
-        throw Usage_error("option --smoothing-steps expects an integer from 0 to 1000, got '" + shorten(w) + "'");
-    }
-    const auto st = on_file(file, [&] {
-      return SMDF::automatic_singularities(mesh, n, SMDF::parameters::alignment_weight(weight).smoothing_steps(int(steps)));
-    });
-    if(!st.success) throw Error(file + ": the curvature-aligned field failed: " + st.message);
-    automatic_json = Json::object();
-    automatic_json["N"] = n;
-    automatic_json["alignment_weight"] = weight;
-    automatic_json["smoothing_steps"] = steps;
-    automatic_json["singularities"] = st.singularities.size();
-    automatic_json["max_rotation_over_pi_over_N"] = st.max_rotation_over_pi_over_N;
-    std::vector<std::pair<vertex_descriptor, double>> c;
-    for(const auto& x : st.singularities) {
-      if(!(x.second < 1))
-        throw Error(file + ": the curvature-aligned field has a singularity of index " + format_real(x.second) + " at vertex " +
-                    std::to_string(index(x.first)) + " (1 or more: punched holes are not supported); try another --alignment-weight");
-      c.emplace_back(x.first, 2 * CGAL_PI * x.second);
-    }
-    return c;
-  }();
+  const std::vector<std::pair<vertex_descriptor, double>> cones =
+      automatic ? automatic_cones(args, file, mesh, opt.N ? int(opt.N) : 4, automatic_json) : cone_option(args, mesh, true);
   const bool open = !SMDF::mesh_topology(mesh).is_closed();
   if(opt.boundary_given && !open) throw Usage_error("--boundary: " + file + " has no boundary");
   const bool editing = args.has("edit") || args.has("length");
@@ -489,57 +403,41 @@ Json run_rosy(const Args& args)
   out["found"] = found_list(found);
   out["generator_turning_numbers"] = turning_numbers(found);
   if(failure.empty()) {
-    std::map<vertex_descriptor, double> want, got(found.singularities.begin(), found.singularities.end());
-    for(const auto& c : cones) {
-      const double k = std::round(c.second / (2 * CGAL_PI) * N) / N;
-      if(!is_border(c.first, mesh) && k != 0) want[c.first] = k;
-    }
-    if(got != want) failure = "the field read back with its matching has other singularities than the cones";
+    const std::map<vertex_descriptor, double> got(found.singularities.begin(), found.singularities.end());
+    if(got != prescribed_indices(mesh, cones, N)) failure = "the field read back with its matching has other singularities than the cones";
     else if(!prescribed_turning.empty() && found.generator_turning_numbers != prescribed_turning)
       failure = "the field read back with its matching has other generator turning numbers than the prescribed ones";
   }
   // 7'. the face field and its matching on the input mesh, read back there: with flips carried
   // through the common subdivision, without them mapped face by face to the embedding
   Edge_matching_property input_matching = matching;
-  if(failure.empty() && on_input) {
+  if(failure.empty()) {
     input_matching = mesh.add_property_map<edge_descriptor, int>("e:smdf_rosy_input_matching", 0).first;
-    const Face_angle_property embedded = mesh.add_property_map<face_descriptor, double>("f:smdf_rosy_embedded_angle", 0.).first;
-    SMDF::face_field_in_embedding(mesh, N, angles, matching, flat, embedded, input_matching);
-    const SMDF::Field_topology<Mesh> on_mesh =
-        SMDF::field_singularities(mesh, embedded, SMDF::parameters::symmetry_order(N).matching(input_matching));
+    const Face_angle_property on_mesh_angles =
+        on_input ? mesh.add_property_map<face_descriptor, double>("f:smdf_rosy_embedded_angle", 0.).first : input_angles;
+    SMDF::Field_transfer_status ts;
     Json t = Json::object();
-    t["found"] = found_list(on_mesh);
-    out["input_read_back"] = std::move(t);
-    std::map<vertex_descriptor, double> got(on_mesh.singularities.begin(), on_mesh.singularities.end()), want;
-    for(const auto& c : cones) {
-      const double k2 = std::round(c.second / (2 * CGAL_PI) * N) / N;
-      if(!is_border(c.first, mesh) && k2 != 0) want[c.first] = k2;
+    if(on_input) {
+      SMDF::face_field_in_embedding(mesh, N, angles, matching, flat, on_mesh_angles, input_matching);
+      ts.success = true;
+    } else {
+      std::vector<double> a(num_faces(*carrier));
+      std::vector<int> k(num_edges(*carrier));
+      for(face_descriptor f : faces(*carrier)) a[f.idx()] = angles[f];
+      for(edge_descriptor e : edges(*carrier)) k[e.idx()] = matching[e];
+      ts = SMDF::transfer_face_field_to_input(mesh, cm.intrinsic_triangulation, N, a, k, on_mesh_angles, input_matching);
+      t["max_distortion"] = ts.max_distortion;
+      t["mean_distortion"] = ts.mean_distortion;
     }
-    if(got != want) failure = "the field mapped to the embedding reads back, with its matching, other singularities than the cones";
-  }
-  if(failure.empty() && !on_input) {
-    input_matching = mesh.add_property_map<edge_descriptor, int>("e:smdf_rosy_input_matching", 0).first;
-    std::vector<double> a(num_faces(*carrier));
-    std::vector<int> k(num_edges(*carrier));
-    for(face_descriptor f : faces(*carrier)) a[f.idx()] = angles[f];
-    for(edge_descriptor e : edges(*carrier)) k[e.idx()] = matching[e];
-    const SMDF::Field_transfer_status ts = SMDF::transfer_face_field_to_input(mesh, cm.intrinsic_triangulation, N, a, k,
-                                                                              input_angles, input_matching);
     const SMDF::Field_topology<Mesh> on_mesh =
-        ts.success ? SMDF::field_singularities(mesh, input_angles, SMDF::parameters::symmetry_order(N).matching(input_matching))
+        ts.success ? SMDF::field_singularities(mesh, on_mesh_angles, SMDF::parameters::symmetry_order(N).matching(input_matching))
                    : SMDF::Field_topology<Mesh>();
-    Json t = Json::object();
     t["found"] = found_list(on_mesh);
-    t["max_distortion"] = ts.max_distortion;
-    t["mean_distortion"] = ts.mean_distortion;
     out["input_read_back"] = std::move(t);
-    std::map<vertex_descriptor, double> got(on_mesh.singularities.begin(), on_mesh.singularities.end()), want;
-    for(const auto& c : cones) {
-      const double k2 = std::round(c.second / (2 * CGAL_PI) * N) / N;
-      if(!is_border(c.first, mesh) && k2 != 0) want[c.first] = k2;
-    }
+    const std::map<vertex_descriptor, double> got(on_mesh.singularities.begin(), on_mesh.singularities.end());
     if(!ts.success) failure = "the field could not be carried to the input faces: " + ts.message;
-    else if(got != want) failure = "the field carried to the input faces reads back, with its matching, other singularities than the cones";
+    else if(got != prescribed_indices(mesh, cones, N))
+      failure = "the field on the input faces reads back, with its matching, other singularities than the cones";
   }
   out["success"] = failure.empty();
   out["timings"] = std::move(timings);

@@ -5,6 +5,8 @@
 
 #include "rosy_inputs.h"
 
+#include <CGAL/Surface_mesh_direction_fields/curvature_aligned_field.h>
+
 #include <CGAL/Surface_mesh_direction_fields/topology.h>
 
 #include <algorithm>
@@ -156,6 +158,90 @@ void open_mesh_targets(const Mesh& mesh, const Boundary_geometry& b, int N, Boun
     if(!(targets[v] < CGAL_PI && targets[v] > -CGAL_PI))
       throw Error("boundary vertex " + std::to_string(index(v)) + " would have to turn by " + format_real(targets[v]) +
                   " (not in (-pi, pi)); give the boundary's turning angles with --cones");
+}
+
+std::vector<std::pair<vertex_descriptor, double>> automatic_cones(const Args& args, const std::string& file, const Mesh& mesh,
+                                                                  int N, Json& json)
+{
+  double weight = 0.01;
+  if(args.has("alignment-weight")) {
+    char* end = nullptr;
+    const std::string w = args.value("alignment-weight");
+    weight = std::strtod(w.c_str(), &end);
+    if(*end != '\0' || !(weight > 0) || !std::isfinite(weight))
+      throw Usage_error("option --alignment-weight expects a positive number, got '" + shorten(w) + "'");
+  }
+  long steps = 4;
+  if(args.has("smoothing-steps")) {
+    char* end = nullptr;
+    const std::string w = args.value("smoothing-steps");
+    steps = std::strtol(w.c_str(), &end, 10);
+    if(*end != '\0' || w.empty() || steps < 0 || steps > 1000)
+      throw Usage_error("option --smoothing-steps expects an integer from 0 to 1000, got '" + shorten(w) + "'");
+  }
+  const auto st = on_file(file, [&] {
+    return SMDF::automatic_singularities(mesh, N, SMDF::parameters::alignment_weight(weight).smoothing_steps(int(steps)));
+  });
+  if(!st.success) throw Error(file + ": the curvature-aligned field failed: " + st.message);
+  json = Json::object();
+  json["N"] = N;
+  json["alignment_weight"] = weight;
+  json["smoothing_steps"] = steps;
+  json["singularities"] = st.singularities.size();
+  json["max_rotation_over_pi_over_N"] = st.max_rotation_over_pi_over_N;
+  std::vector<std::pair<vertex_descriptor, double>> c;
+  for(const auto& x : st.singularities) c.emplace_back(x.first, 2 * CGAL_PI * x.second);
+  return c;
+}
+
+std::map<vertex_descriptor, double> prescribed_indices(const Mesh& mesh, const std::vector<std::pair<vertex_descriptor, double>>& cones,
+                                                       int N)
+{
+  std::map<vertex_descriptor, double> want;
+  for(const auto& c : cones) {
+    const double k = std::round(c.second / (2 * CGAL_PI) * N) / N;
+    if(!is_border(c.first, mesh) && k != 0) want[c.first] = k;
+  }
+  return want;
+}
+
+const char* method_name(Rosy_method m)
+{
+  switch(m) {
+    case ROTATION_COMPENSATION: return "rotation-compensation";
+    case TRIVIAL_CONNECTION: return "trivial-connection";
+    case PARALLEL: return "parallel";
+    case BOUNDARY_ALIGNED: return "boundary-aligned";
+    default: return "automatic";
+  }
+}
+
+Rosy_options rosy_options(const Args& args)
+{
+  Rosy_options o;
+  if(args.has("N")) o.N = symmetry_order_option(args);
+  if(args.has("method")) {
+    const std::string m = args.value("method");
+    if(m == "rotation-compensation") o.method = ROTATION_COMPENSATION;
+    else if(m == "trivial-connection") o.method = TRIVIAL_CONNECTION;
+    else if(m == "parallel") o.method = PARALLEL;
+    else throw Usage_error("option --method expects rotation-compensation, trivial-connection or parallel, got '" + shorten(m) + "'");
+  }
+  if(args.has("boundary")) {
+    o.boundary_given = true;
+    const std::string b = args.value("boundary");
+    if(b == "free") o.boundary = FREE_BOUNDARY;
+    else if(b == "parallel") o.boundary = PARALLEL_BOUNDARY;
+    else if(b == "orthogonal") o.boundary = ORTHOGONAL_BOUNDARY;
+    else throw Usage_error("option --boundary expects free, parallel or orthogonal, got '" + shorten(b) + "'");
+  }
+  o.turning = index_list_option(args, "turning");
+  if(o.boundary != FREE_BOUNDARY && (o.method == ROTATION_COMPENSATION || o.method == TRIVIAL_CONNECTION))
+    throw Usage_error(std::string("--boundary ") + args.value("boundary") + " builds the field on the double cover; it takes no --method " +
+                      method_name(o.method));
+  if(o.method == PARALLEL && !o.turning.empty())
+    throw Usage_error("--turning needs --method rotation-compensation or trivial-connection (a parallel field has no choice)");
+  return o;
 }
 
 Json metric_json(const SMDF::Cone_metric_status& cm, const char* on)

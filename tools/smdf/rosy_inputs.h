@@ -12,6 +12,7 @@
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
 
 #include <algorithm>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -21,6 +22,24 @@ namespace smdf_cli {
 typedef Mesh::Property_map<vertex_descriptor, double> Vertex_double_property;
 
 enum Boundary_mode { FREE_BOUNDARY, PARALLEL_BOUNDARY, ORTHOGONAL_BOUNDARY };
+
+enum Rosy_method { AUTOMATIC, ROTATION_COMPENSATION, TRIVIAL_CONNECTION, PARALLEL, BOUNDARY_ALIGNED };
+
+// The name of a method in the JSON and the messages.
+const char* method_name(Rosy_method m);
+
+// The options of smdf rosy that choose the field: --method, --boundary, --N, --turning (usage
+// errors for the combinations that make no sense).
+struct Rosy_options
+{
+  Rosy_method method = AUTOMATIC;
+  Boundary_mode boundary = FREE_BOUNDARY;
+  bool boundary_given = false;
+  long N = 0;   // 0: from the cones
+  Indexed_values turning;
+};
+
+Rosy_options rosy_options(const Args& args);
 
 // The input's turning angle pi - sum(theta) at every boundary vertex, and the boundary loops.
 struct Boundary_geometry
@@ -55,6 +74,16 @@ struct Constraint_lines
 
 // Reads --edit (lengths = false) or --length; Errors name the file and the line.
 Constraint_lines read_constraint_file(const std::string& file, const Mesh& mesh, bool lengths);
+
+// --cones auto: the singularities of a smooth curvature-aligned N-RoSy field
+// (automatic_singularities(), --alignment-weight, --smoothing-steps) as cones; `json` receives
+// {N, alignment_weight, smoothing_steps, singularities, max_rotation_over_pi_over_N}.
+std::vector<std::pair<vertex_descriptor, double>> automatic_cones(const Args& args, const std::string& file, const Mesh& mesh,
+                                                                  int N, Json& json);
+
+// The indices the cones prescribe at interior vertices (rounded to multiples of 1/N, zeros left out).
+std::map<vertex_descriptor, double> prescribed_indices(const Mesh& mesh, const std::vector<std::pair<vertex_descriptor, double>>& cones,
+                                                       int N);
 
 // The JSON of a flat cone metric: {converged, iterations, max_curvature_error,
 // triangulation_changed, on} (`on` only when given: what the metric lives on).

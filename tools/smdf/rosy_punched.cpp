@@ -206,6 +206,7 @@ Json run_rosy_punched(const Args& args, const std::string& file, Mesh& mesh, int
     for(face_descriptor f : faces(mesh)) if(in_fan[f.idx()]) in_angles[f] = get(fan_angles, f);
   }
   const auto rnp = SMDF::parameters::symmetry_order(N);
+  const std::map<vertex_descriptor, double> want = prescribed_indices(mesh, cones, N);
   SMDF::Field_topology<Mesh> found = SMDF::field_singularities(mesh, in_angles, rnp.matching(in_match));
   {
     std::map<vertex_descriptor, double> idx(found.singularities.begin(), found.singularities.end());
@@ -215,10 +216,8 @@ Json run_rosy_punched(const Args& args, const std::string& file, Mesh& mesh, int
       const bool spoke = owner[a.idx()] >= 0 && owner[b.idx()] >= 0 && (int(a.idx()) == owner[a.idx()] || int(b.idx()) == owner[b.idx()]);
       if(!spoke) continue;
       const vertex_descriptor w = int(a.idx()) == owner[a.idx()] ? b : a;   // the ring vertex
-      double want = 0;
-      for(const auto& c : cones) if(c.first == w) want = std::round(c.second / (2 * CGAL_PI) * N) / N;
-      const double have = idx.count(w) ? idx[w] : 0.;
-      const int steps = int(std::lround((want - have) * N));
+      const double have = idx.count(w) ? idx[w] : 0., need = want.count(w) ? want.at(w) : 0.;
+      const int steps = int(std::lround((need - have) * N));
       in_match[e] += w == a ? steps : -steps;   // +1 on halfedge(e) adds 1/N at its source
     }
   }
@@ -226,13 +225,8 @@ Json run_rosy_punched(const Args& args, const std::string& file, Mesh& mesh, int
   timings["fill_s"] = clock.lap();
 
   // 7. the read-back on the input
-  std::map<vertex_descriptor, double> want, got(found.singularities.begin(), found.singularities.end());
+  const std::map<vertex_descriptor, double> got(found.singularities.begin(), found.singularities.end());
   Json prescribed = Json::array();
-  for(const auto& c : cones) {
-    if(is_border(c.first, mesh)) continue;
-    const double k = std::round(c.second / (2 * CGAL_PI) * N) / N;
-    if(k != 0) want[c.first] = k;
-  }
   for(const auto& w : want) {
     Json o = Json::object();
     o["vertex"] = w.first.idx();

@@ -37,6 +37,17 @@ struct Field_transfer_status
 
 namespace internal {
 
+// The unit direction of angle `angle` in the frame of a triangle laid out as V, as a change of
+// barycentric coordinates (summing to 0).
+inline std::array<double, 3> barycentric_direction(const std::array<Point_2, 3>& V, double angle)
+{
+  const double ux = std::cos(angle), uy = std::sin(angle);
+  const double e1x = V[1].x() - V[0].x(), e1y = V[1].y() - V[0].y(), e2x = V[2].x() - V[0].x(), e2y = V[2].y() - V[0].y();
+  const double det = e1x * e2y - e1y * e2x;
+  const double d1 = (ux * e2y - uy * e2x) / det, d2 = (e1x * uy - e1y * ux) / det;
+  return {{-d1 - d2, d1, d2}};
+}
+
 // A piece's map and the layouts of its two triangles: directions of the intrinsic field at a
 // point of the input face, as angles in the input face's frame.
 struct Piece_directions
@@ -64,11 +75,7 @@ struct Piece_directions
   {
     const std::array<double, 3> c = intrinsic_point(b);
     const auto& V = intrinsic_layout;
-    const double ux = std::cos(angle), uy = std::sin(angle);
-    const double e1x = V[1].x() - V[0].x(), e1y = V[1].y() - V[0].y(), e2x = V[2].x() - V[0].x(), e2y = V[2].y() - V[0].y();
-    const double det = e1x * e2y - e1y * e2x;
-    const double d1 = (ux * e2y - uy * e2x) / det, d2 = (e1x * uy - e1y * ux) / det;
-    const std::array<double, 3> dc = {{-d1 - d2, d1, d2}};
+    const std::array<double, 3> dc = barycentric_direction(V, angle);
     std::array<double, 3> Ac, Adc;
     double sAc = 0, sAdc = 0;
     for(int i = 0; i < 3; ++i) {
@@ -165,6 +172,7 @@ Field_transfer_status transfer_face_field_to_input(const TriangleMesh& tm, const
     return it.pieces_of_input_face(pieces[i].input_face).size() == 1 && it.pieces_of_intrinsic_face(pieces[i].intrinsic_face).size() == 1;
   };
   auto affine_angle = [&](std::size_t i, const internal::Piece_directions& d, double angle) {
+    using internal::barycentric_direction;
     const auto& P = pieces[i];
     const auto& V = d.intrinsic_layout;
     const auto& W = d.input_layout;
@@ -175,11 +183,7 @@ Field_transfer_status transfer_face_field_to_input(const TriangleMesh& tm, const
       const auto& bi = P.input_corners[k];
       to_intrinsic[bi[0] > 0.5 ? 0 : bi[1] > 0.5 ? 1 : 2] = ci[0] > 0.5 ? 0 : ci[1] > 0.5 ? 1 : 2;
     }
-    const double ux = std::cos(angle), uy = std::sin(angle);
-    const double e1x = V[1].x() - V[0].x(), e1y = V[1].y() - V[0].y(), e2x = V[2].x() - V[0].x(), e2y = V[2].y() - V[0].y();
-    const double det = e1x * e2y - e1y * e2x;
-    const double d1 = (ux * e2y - uy * e2x) / det, d2 = (e1x * uy - e1y * ux) / det;
-    const std::array<double, 3> dc = {{-d1 - d2, d1, d2}};
+    const std::array<double, 3> dc = barycentric_direction(V, angle);
     std::array<double, 3> db = {{0, 0, 0}};
     for(std::size_t k = 0; k < 3; ++k) db[k] = dc[to_intrinsic[k]];
     const double x = db[1] * (W[1].x() - W[0].x()) + db[2] * (W[2].x() - W[0].x());
