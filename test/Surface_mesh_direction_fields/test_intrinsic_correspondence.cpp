@@ -16,11 +16,17 @@
 // - automatic singularities (a smooth curvature-aligned field): on a torus of revolution the
 //   field follows the parallels and meridians and has no singularity; on a round sphere the
 //   smoothest cross field has the 8 singularities of index 1/4; on every closed shared mesh the
-//   indices are multiples of 1/N summing to chi.
+//   indices are multiples of 1/N summing to chi;
+// - cross fields parallel and orthogonal to the boundary of every open genus-0 shared mesh (each
+//   loop a rectangle in the flat metric, a random interior dipole): the mesh's own flat metric,
+//   with flips where it needs them, boundary_aligned_parallel_field() on it, carried to the input
+//   faces: every boundary face follows its boundary edge (1e-9 rad, measured on the input), and
+//   the field reads back exactly the dipole there.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <CGAL/Surface_mesh_direction_fields/boundary_aligned_field.h>
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/curvature_aligned_field.h>
 #include <CGAL/Surface_mesh_direction_fields/field_singularities.h>
@@ -362,6 +368,103 @@ void automatic_singularities_tests(const std::string& dir)
   }
 }
 
+
+// Cross fields along the boundary of an open genus-0 mesh, on its own flat metric (flips
+// allowed), carried to the input faces. Every boundary loop turns by +2 pi (the first) or
+// -2 pi (the others) at four corners of +-pi/2 spread along it: Gauss-Bonnet, 2 pi (2 - b).
+// Returns whether the metric needed flips.
+bool boundary_aligned_on_input(const Surface_mesh& mesh, const std::string& name, std::mt19937& rng)
+{
+  typedef Surface_mesh::Vertex_index V;
+  std::vector<std::vector<V>> loops;
+  std::set<Surface_mesh::Halfedge_index> seen;
+  for(auto h : halfedges(mesh)) {
+    if(!is_border(h, mesh) || seen.count(h)) continue;
+    loops.emplace_back();
+    for(auto g = h; seen.insert(g).second; g = next(g, mesh)) loops.back().push_back(target(g, mesh));
+  }
+  auto target = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+  for(auto v : vertices(mesh)) put(target, v, 0.);
+  for(std::size_t j = 0; j < loops.size(); ++j)
+    for(int i = 0; i < 4; ++i) put(target, loops[j][loops[j].size() * std::size_t(i) / 4], (j == 0 ? 1 : -1) * CGAL_PI / 2);
+  // a dipole of +-1/4 on two interior vertices
+  std::vector<V> inner;
+  for(auto v : vertices(mesh)) if(!is_border(v, mesh) && !mesh.is_isolated(v)) inner.push_back(v);
+  std::uniform_int_distribution<std::size_t> pick(0, inner.size() - 1);
+  const V plus = inner[pick(rng)];
+  V minus = inner[pick(rng)];
+  while(minus == plus) minus = inner[pick(rng)];
+  put(target, plus, CGAL_PI / 2);
+  put(target, minus, -CGAL_PI / 2);
+  const std::map<std::size_t, double> want = {{std::size_t(plus.idx()), 0.25}, {std::size_t(minus.idx()), -0.25}};
+  auto len = get(CGAL::dynamic_edge_property_t<double>(), mesh);
+  const SMDF::Cone_metric_status cm = SMDF::compute_cone_metric(mesh, target, len);
+  SMDF_CHECK_MSG(cm.converged && cm.correspondence_message.empty(), name << ": " << cm.message << cm.correspondence_message);
+  if(!cm.converged || !cm.correspondence_message.empty()) return false;
+  Surface_mesh carrier = mesh;
+  auto flat = carrier.add_property_map<Surface_mesh::Edge_index, double>("e:flat", 0.).first;
+  if(cm.triangulation_changed) {
+    carrier.clear();
+    flat = carrier.add_property_map<Surface_mesh::Edge_index, double>("e:flat", 0.).first;
+    SMDF::copy_intrinsic_triangulation(cm.intrinsic_triangulation, mesh, carrier, flat);
+  } else {
+    for(auto e : edges(carrier)) flat[e] = get(len, e);
+  }
+  for(bool orthogonal : {false, true}) {
+    const std::string what = name + (orthogonal ? " orthogonal" : " parallel") + (cm.triangulation_changed ? " (flips)" : "");
+    auto angles = carrier.add_property_map<Surface_mesh::Face_index, double>("f:a", 0.).first;
+    auto matching = carrier.add_property_map<Surface_mesh::Edge_index, int>("e:m", 0).first;
+    const auto np = SMDF::parameters::edge_length_map(flat).orthogonal_to_boundary(orthogonal);
+    const SMDF::Boundary_aligned_field_status st = SMDF::boundary_aligned_parallel_field(carrier, 4, angles, np);
+    SMDF_CHECK_MSG(st.success, what << ": " << st.message);
+    if(!st.success) continue;
+    SMDF::principal_matching(carrier, angles, matching, SMDF::parameters::symmetry_order(4).edge_length_map(flat));
+    auto in_angles = get(CGAL::dynamic_face_property_t<double>(), mesh);
+    auto in_matching = get(CGAL::dynamic_edge_property_t<int>(), mesh);
+    if(cm.triangulation_changed) {
+      std::vector<double> a(num_faces(carrier));
+      std::vector<int> k(num_edges(carrier));
+      for(auto f : faces(carrier)) a[f.idx()] = angles[f];
+      for(auto e : edges(carrier)) k[e.idx()] = matching[e];
+      const SMDF::Field_transfer_status fs = SMDF::transfer_face_field_to_input(mesh, cm.intrinsic_triangulation, 4, a, k, in_angles, in_matching);
+      SMDF_CHECK_MSG(fs.success, what << ": " << fs.message);
+      if(!fs.success) continue;
+    } else {
+      SMDF::face_field_in_embedding(mesh, 4, angles, matching, flat, in_angles, in_matching);
+    }
+    const double deviation = SMDF::max_boundary_deviation(mesh, 4, in_angles, SMDF::parameters::orthogonal_to_boundary(orthogonal));
+    SMDF_CHECK_MSG(deviation < 1e-9, what << ": deviation from the boundary on the input faces " << deviation);
+    const auto found = SMDF::field_singularities(mesh, in_angles, SMDF::parameters::symmetry_order(4).matching(in_matching));
+    std::map<std::size_t, double> got;
+    for(const auto& x : found.singularities) got[std::size_t(x.first.idx())] = x.second;
+    SMDF_CHECK_MSG(got == want, what << ": " << got.size() << " singularities read back on the input, 2 prescribed");
+    std::cout << what << ": " << loops.size() << " loops, deviation " << deviation << ", read back " << got.size() << std::endl;
+  }
+  return cm.triangulation_changed;
+}
+
+void boundary_aligned_tests(const std::string& dir, std::mt19937& rng)
+{
+  if(dir.empty()) return;
+  std::size_t meshes = 0, with_flips = 0;
+  for(const auto& e : smdf_test::read_manifest(dir)) {
+    if(e.manifold != "yes" || e.pure_tri != "yes" || e.orientable != "yes" || e.components != 1 || e.boundary_loops == 0 ||
+       e.genus != "0" || e.degenerate_faces > 0 || e.F > 120000)
+      continue;
+    Surface_mesh mesh;
+    try {
+      SMDF::read_triangle_mesh(dir + "/meshes/" + e.file, mesh);
+    } catch(const std::exception& x) {
+      std::cout << e.file << ": not read (" << x.what() << ")" << std::endl;
+      continue;
+    }
+    ++meshes;
+    if(boundary_aligned_on_input(mesh, e.file, rng)) ++with_flips;
+  }
+  std::cout << meshes << " open genus-0 meshes, " << with_flips << " needed flips" << std::endl;
+  SMDF_CHECK(meshes >= 4 && with_flips >= 1);
+}
+
 } // namespace
 
 int main()
@@ -399,5 +502,6 @@ int main()
             << max_distortion << " rad" << std::endl;
   SMDF_CHECK(runs >= 2);
   automatic_singularities_tests(dir);
+  boundary_aligned_tests(dir, rng);
   return smdf_test::finish();
 }

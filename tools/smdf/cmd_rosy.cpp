@@ -149,7 +149,11 @@ Json run_rosy(const Args& args)
   const Face_angle_property input_angles = mesh.add_property_map<face_descriptor, double>("f:smdf_rosy_angle", 0.).first;
   SMDF::Cone_metric_status cm;
   SMDF::Boundary_aligned_field_status aligned;
-  if(method == BOUNDARY_ALIGNED) {
+  // boundary-aligned fields with handles: the double cover (Lai et al. 4.3) on the input's
+  // triangulation; on genus 0 the mesh's own metric (flips allowed), whose mirror double the
+  // cover's is
+  const bool cover_route = method == BOUNDARY_ALIGNED && has_handles(mesh);
+  if(cover_route) {
     aligned = on_file(file, [&] {
       return SMDF::boundary_aligned_rosy_field(mesh, N, targets, lengths, input_angles,
                                                SMDF::parameters::orthogonal_to_boundary(opt.boundary == ORTHOGONAL_BOUNDARY));
@@ -159,7 +163,7 @@ Json run_rosy(const Args& args)
     cm = on_file(file, [&] { return SMDF::compute_cone_metric(mesh, targets, lengths); });
   }
   timings["metric_s"] = clock.lap();
-  out["metric"] = metric_json(cm, method == BOUNDARY_ALIGNED ? "double cover" : nullptr);
+  out["metric"] = metric_json(cm, cover_route ? "double cover" : nullptr);
   if(open) {
     Json bt = Json::array();
     for(const auto& loop : bgeo.loops) {
@@ -179,7 +183,7 @@ Json run_rosy(const Args& args)
   Mesh flat_mesh;
   Edge_length_property flat = lengths;
   Mesh* carrier = &mesh;
-  if(cm.triangulation_changed && method != BOUNDARY_ALIGNED) {
+  if(cm.triangulation_changed && !cover_route) {
     flat = flat_mesh.add_property_map<edge_descriptor, double>("e:smdf_rosy_length", 0.).first;
     SMDF::copy_intrinsic_triangulation(cm.intrinsic_triangulation, mesh, flat_mesh, flat);
     carrier = &flat_mesh;
@@ -324,12 +328,17 @@ Json run_rosy(const Args& args)
       else if(!ps.success) failure = ps.message;
       timings["compensation_s"] = clock.lap();
     } else {
+      if(!cover_route)
+        aligned = on_file(file, [&] {
+          return SMDF::boundary_aligned_parallel_field(*carrier, N, angles, np.orthogonal_to_boundary(opt.boundary == ORTHOGONAL_BOUNDARY));
+        });
       Json a = Json::object();
+      a["route"] = cover_route ? "double cover" : "flat metric of the mesh";
       a["max_boundary_deviation"] = aligned.max_boundary_deviation;
       a["rotation_compensation"] = aligned.rotation_compensation;
       out["boundary_aligned"] = std::move(a);
       if(!aligned.success) failure = aligned.message;
-      timings["compensation_s"] = 0.;
+      timings["compensation_s"] = clock.lap();
     }
   }
 
@@ -433,11 +442,18 @@ Json run_rosy(const Args& args)
         ts.success ? SMDF::field_singularities(mesh, on_mesh_angles, SMDF::parameters::symmetry_order(N).matching(input_matching))
                    : SMDF::Field_topology<Mesh>();
     t["found"] = found_list(on_mesh);
+    // the boundary alignment, measured again on the input faces
+    const double deviation = method == BOUNDARY_ALIGNED && ts.success
+        ? SMDF::max_boundary_deviation(mesh, N, on_mesh_angles, SMDF::parameters::orthogonal_to_boundary(opt.boundary == ORTHOGONAL_BOUNDARY))
+        : 0.;
+    if(method == BOUNDARY_ALIGNED) t["max_boundary_deviation"] = deviation;
     out["input_read_back"] = std::move(t);
     const std::map<vertex_descriptor, double> got(on_mesh.singularities.begin(), on_mesh.singularities.end());
     if(!ts.success) failure = "the field could not be carried to the input faces: " + ts.message;
     else if(got != prescribed_indices(mesh, cones, N))
       failure = "the field on the input faces reads back, with its matching, other singularities than the cones";
+    else if(!(deviation <= 1e-6))
+      failure = "the field on the input faces does not follow the boundary (deviation " + std::to_string(deviation) + " rad)";
   }
   out["success"] = failure.empty();
   out["timings"] = std::move(timings);

@@ -48,9 +48,183 @@ struct Boundary_aligned_field_status
   double max_boundary_deviation = 0;
 };
 
+namespace internal {
+
+// Turns a face field (angles beta in the face frames of the flat metric of mf) that is parallel
+// along the boundary so that it follows every boundary loop: one rotation for the whole field
+// onto the first boundary edge, then, with several loops, a harmonic rotation theta (cotan
+// Laplace of the metric) equal on each loop j to minus the constant angle d_j the field makes
+// with that loop. theta is an exact 1-form that is constant along every loop, so it adds no
+// singularity and keeps the field's angle with each loop (on the double cover: the
+// compensation that is odd under the mirror). Faces on a boundary edge take their loop's value,
+// so the alignment there is exact. False (and a message) if the factorisation fails.
+template <typename TM>
+bool align_with_boundary_loops(const Mesh_arrays<TM>& mf, const Topology_arrays& topo, int N, bool orthogonal,
+                               std::vector<double>& beta, std::string& message)
+{
+  const std::size_t nv = mf.number_of_vertices(), nf = mf.number_of_faces(), ne = mf.number_of_edges();
+  const double across = orthogonal ? CGAL_PI / 2 : 0.;
+  // parallel to an edge = one of the N directions on its line, in either orientation: modulo
+  // 2 pi / N for even N, pi / N for odd N (the directions and their opposites)
+  const double line_period = N % 2 == 0 ? 2 * CGAL_PI / N : CGAL_PI / N;
+  const int hb = topo.loops[0][0] ^ 1;   // the interior halfedge of a boundary edge
+  const double offset = halfedge_direction(mf, hb) + across - beta[std::size_t(mf.face[std::size_t(hb)])];
+  for(double& a : beta) a += offset;
+  if(topo.loops.size() > 1) {
+    std::vector<double> fixed(nv, std::numeric_limits<double>::quiet_NaN());
+    for(const auto& loop : topo.loops) {
+      const int h = loop[0] ^ 1;
+      const double d = std::remainder(beta[std::size_t(mf.face[std::size_t(h)])] - halfedge_direction(mf, h) - across, line_period);
+      for(int b : loop) fixed[std::size_t(mf.source(b))] = -d;
+    }
+    std::vector<int> col(nv, -1);
+    int n = 0;
+    for(std::size_t v = 0; v < nv; ++v) if(std::isnan(fixed[v]) && !mf.is_isolated(int(v))) col[v] = n++;
+    std::vector<double> theta(nv, 0.);
+    for(std::size_t v = 0; v < nv; ++v) if(!std::isnan(fixed[v])) theta[v] = fixed[v];
+    if(n > 0) {
+      const std::vector<double> w = floored_cotan_edge_weights(mf);
+      std::vector<Eigen::Triplet<double>> t;
+      Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n);
+      for(std::size_t e = 0; e < ne; ++e) {
+        const int a = mf.source(int(2 * e)), b = mf.target[2 * e];
+        const int ca = col[std::size_t(a)], cb = col[std::size_t(b)];
+        if(ca >= 0) t.emplace_back(ca, ca, w[e]);
+        if(cb >= 0) t.emplace_back(cb, cb, w[e]);
+        if(ca >= 0 && cb >= 0) t.emplace_back((std::max)(ca, cb), (std::min)(ca, cb), -w[e]);
+        else if(ca >= 0) rhs[ca] += w[e] * theta[std::size_t(b)];
+        else if(cb >= 0) rhs[cb] += w[e] * theta[std::size_t(a)];
+      }
+      Cholmod_cholesky::Matrix L(n, n);
+      L.setFromTriplets(t.begin(), t.end());
+      L.makeCompressed();
+      Cholmod_cholesky chol;
+      if(!chol.factor(L, message)) return false;
+      const Eigen::VectorXd x = chol.solve(rhs);
+      for(std::size_t v = 0; v < nv; ++v) if(col[v] >= 0) theta[v] = x[col[v]];
+    }
+    for(std::size_t f = 0; f < nf; ++f) {
+      const int h0 = mf.face_halfedge[f];
+      double r = 0;
+      int on_boundary = -1;
+      for(int h = h0, i = 0; i < 3; h = mf.next[std::size_t(h)], ++i) {
+        r += theta[std::size_t(mf.source(h))] / 3;
+        if(mf.face[std::size_t(h ^ 1)] < 0) on_boundary = h;
+      }
+      if(on_boundary >= 0) r = theta[std::size_t(mf.source(on_boundary))];
+      beta[f] += r;
+    }
+  }
+  for(double& a : beta) a -= 2 * CGAL_PI * std::floor(a / (2 * CGAL_PI));
+  return true;
+}
+
+// Over the faces with a border edge: the distance of the field's angle with the edge (minus
+// pi/2 when orthogonal) to the nearest direction of the field's line (a multiple of 2 pi / N,
+// of pi / N for odd N); a face with two border edges (a corner face) counts the nearer one, as
+// no constant field in a face follows two sides that meet at an angle off that lattice.
+template <typename TM>
+double boundary_deviation(const Mesh_arrays<TM>& mf, const Topology_arrays& topo, int N, bool orthogonal,
+                          const std::vector<double>& beta)
+{
+  const double line_period = N % 2 == 0 ? 2 * CGAL_PI / N : CGAL_PI / N;
+  std::vector<double> per_face(mf.number_of_faces(), -1.);
+  for(const auto& loop : topo.loops)
+    for(int b : loop) {
+      const int h = b ^ 1;
+      const std::size_t f = std::size_t(mf.face[std::size_t(h)]);
+      const double d = std::abs(std::remainder(beta[f] - halfedge_direction(mf, h) - (orthogonal ? CGAL_PI / 2 : 0.), line_period));
+      per_face[f] = per_face[f] < 0 ? d : (std::min)(per_face[f], d);
+    }
+  double worst = 0;
+  for(double d : per_face) worst = (std::max)(worst, d);
+  return worst;
+}
+
+inline std::string boundary_deviation_message(double deviation)
+{
+  return "the field does not follow the boundary everywhere (deviation " + std::to_string(deviation) +
+         " rad): do the boundary corners turn by multiples of 2 pi / N?";
+}
+
+} // namespace internal
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsFieldDesign
+/// The largest deviation of a face field from the boundary of an open mesh: over the faces with
+/// a border edge, the distance of the angle between the field in the face and the edge (minus
+/// \f$\pi/2\f$ with `orthogonal_to_boundary(true)`) to the nearest multiple of \f$2\pi/N\f$
+/// (\f$\pi/N\f$ for odd \f$N\f$: a direction along the edge in either orientation); a face with
+/// two border edges (a corner face) counts the nearer one, as no constant field in a face
+/// follows two sides that meet at an angle off that lattice. `face_angles`
+/// are in the face frames of the metric given by `edge_length_map` (default: Euclidean lengths)
+/// or `intrinsic_mesh`. 0 for a closed mesh.
+template <typename TriangleMesh, typename FaceAngleMap, typename NamedParameters = parameters::Default_named_parameters>
+double max_boundary_deviation(const TriangleMesh& tm, int N, const FaceAngleMap& face_angles,
+                              const NamedParameters& np = parameters::default_values())
+{
+  if(N < 1) throw Input_error(Input_error::INVALID_ARGUMENT, "symmetry order N must be at least 1, got " + std::to_string(N));
+  const Intrinsic_mesh<TriangleMesh> im = internal::get_intrinsic_mesh(tm, np);
+  const internal::Mesh_arrays<TriangleMesh>& m = im.arrays();
+  std::vector<double> beta(m.number_of_faces());
+  for(std::size_t f = 0; f < beta.size(); ++f) beta[f] = double(get(face_angles, m.faces[f]));
+  return internal::boundary_deviation(m, im.topology_arrays(), N,
+                                      parameters::choose_parameter(parameters::get_parameter(np, internal_np::orthogonal_to_boundary), false),
+                                      beta);
+}
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsFieldDesign
+/// The N-RoSy field parallel (or, with `orthogonal_to_boundary(true)`, orthogonal) to the
+/// boundary of an open mesh of genus 0 with any number of boundary loops, on a flat cone metric
+/// whose boundary loops are geodesics with corners that turn by multiples of \f$2\pi/N\f$
+/// (e.g. the metric of compute_cone_metric() with boundary targets rounded so, on the input or
+/// on its intrinsic triangulation): the parallel field of the metric (parallel_rosy_field()),
+/// turned onto the first boundary edge, then by a harmonic rotation that is constant on every
+/// boundary loop onto the others. This is the restriction to one half of Lai et al.'s double
+/// cover (section 4.3): the mirror-symmetric metric of the double cover is the mirror double of
+/// this one, and the harmonic rotation is its compensation that is odd under the mirror.
+///
+/// `face_angles` receives the field in the face frames of the metric, like
+/// parallel_rosy_field(); its only singularities are the interior cones. Named parameters:
+/// `orthogonal_to_boundary` (`bool`, default `false`), `edge_length_map` (the flat metric) or
+/// `intrinsic_mesh`, `holonomy_tolerance` and the index maps. The status (its `metric` is left
+/// empty) fails with a message when the metric has no parallel field (a cone or a boundary
+/// corner that is no multiple of \f$2\pi/N\f$) or when the deviation from the boundary exceeds
+/// \f$10^{-6}\f$. Throws `Input_error` for closed meshes, several components, handles and
+/// \f$N < 1\f$ (meshes with handles: boundary_aligned_rosy_field()).
+template <typename TriangleMesh, typename FaceAngleMap, typename NamedParameters = parameters::Default_named_parameters>
+Boundary_aligned_field_status boundary_aligned_parallel_field(const TriangleMesh& tm, int N, FaceAngleMap face_angles,
+                                                              const NamedParameters& np = parameters::default_values())
+{
+  if(N < 1) throw Input_error(Input_error::INVALID_ARGUMENT, "symmetry order N must be at least 1, got " + std::to_string(N));
+  Boundary_aligned_field_status st;
+  st.N = N;
+  st.orthogonal = parameters::choose_parameter(parameters::get_parameter(np, internal_np::orthogonal_to_boundary), false);
+  const Intrinsic_mesh<TriangleMesh> im = internal::get_intrinsic_mesh(tm, np);
+  const internal::Mesh_arrays<TriangleMesh>& m = im.arrays();
+  const internal::Topology_arrays& topo = im.topology_arrays();
+  if(topo.components.size() != 1 || topo.loops.empty() || topo.components[0].genus() != 0)
+    throw Input_error(Input_error::INVALID_ARGUMENT, "boundary_aligned_parallel_field() needs a mesh of genus 0, one component, "
+                                                     "with a boundary (meshes with handles: boundary_aligned_rosy_field())");
+  const std::size_t nf = m.number_of_faces();
+  auto tmp = get(CGAL::dynamic_face_property_t<double>(), tm);
+  const Parallel_rosy_status ps = parallel_rosy_field(tm, N, tmp, np);
+  if(!ps.success) { st.message = ps.message; return st; }
+  std::vector<double> beta(nf);
+  for(std::size_t f = 0; f < nf; ++f) beta[f] = get(tmp, m.faces[f]);
+  if(!internal::align_with_boundary_loops(m, topo, N, st.orthogonal, beta, st.message)) return st;
+  for(std::size_t f = 0; f < nf; ++f) put(face_angles, m.faces[f], beta[f]);
+  st.max_boundary_deviation = internal::boundary_deviation(m, topo, N, st.orthogonal, beta);
+  st.success = st.max_boundary_deviation <= 1e-6;
+  if(!st.success) st.message = internal::boundary_deviation_message(st.max_boundary_deviation);
+  return st;
+}
+
 /// \ingroup PkgSurfaceMeshDirectionFieldsFieldDesign
 /// An N-RoSy field on an open mesh that is parallel to its boundary, or orthogonal to it with
-/// the named parameter `orthogonal_to_boundary(true)` (Lai et al. 2010, section 4.3). The mesh
+/// the named parameter `orthogonal_to_boundary(true)` (Lai et al. 2010, section 4.3), on the
+/// mesh's own triangulation. On genus 0 the flat metric with a geodesic boundary is computed on
+/// the mesh itself and the field is boundary_aligned_parallel_field() (the restriction of the
+/// double cover's, below); with handles the mesh
 /// is glued to a mirrored copy of itself along its boundary (the double cover, a closed surface
 /// on which every interior cone appears twice); a flat cone metric of the double cover is
 /// computed with curvature `target_curvature(v)` at the interior vertices of both copies and
@@ -64,8 +238,11 @@ struct Boundary_aligned_field_status
 ///
 /// Outputs: `output_lengths` (per edge of `tm`: the flat metric restricted to it) and
 /// `face_angles` (per face, in the face frames of that metric). The status checks every boundary
-/// edge; an interior edge joining two boundary vertices (an "ear") makes it fail with a message,
-/// as the double cover would join those vertices twice: split such edges first. Named
+/// edge; with handles, an interior edge joining two boundary vertices (an "ear") makes it fail
+/// with a message, as the double cover would join those vertices twice: split such edges first.
+/// The metric is computed without edge flips (it must live on `tm`'s edges); for metrics that
+/// need flips, compose compute_cone_metric(), copy_intrinsic_triangulation(),
+/// boundary_aligned_parallel_field() and transfer_face_field_to_input() as `smdf rosy` does. Named
 /// parameters: `orthogonal_to_boundary` (`bool`, default `false`), `edge_length_map`
 /// (the input metric, default Euclidean) and the index maps. Throws `Input_error` for closed
 /// meshes, several components, \f$N < 1\f$ and the errors of compute_cone_metric().
@@ -90,6 +267,21 @@ Boundary_aligned_field_status boundary_aligned_rosy_field(const TriangleMesh& tm
   if(topo.components.size() != 1 || topo.loops.empty())
     throw Input_error(Input_error::INVALID_ARGUMENT, "boundary_aligned_rosy_field() needs a mesh of one component with a boundary");
   const std::size_t nv = m.number_of_vertices(), nf = m.number_of_faces(), ne = m.number_of_edges();
+  // genus 0: the double cover's metric is the mirror double of the mesh's own flat metric with
+  // these targets, and its parallel field restricted to one half is the mesh's (half the size)
+  if(topo.components[0].genus() == 0) {
+    st.metric = compute_cone_metric(tm, target_curvature, output_lengths, np.intrinsic_edge_flips(false));
+    if(!st.metric.converged) {
+      st.message = "no flat cone metric with a geodesic boundary on the mesh's triangulation: " + st.metric.message;
+      return st;
+    }
+    const Boundary_aligned_field_status fs =
+        boundary_aligned_parallel_field(tm, N, face_angles, np.edge_length_map(output_lengths).orthogonal_to_boundary(st.orthogonal));
+    st.success = fs.success;
+    st.message = fs.message;
+    st.max_boundary_deviation = fs.max_boundary_deviation;
+    return st;
+  }
 
   // an interior edge between two boundary vertices would become two edges joining the same
   // vertices in the double cover
@@ -191,86 +383,11 @@ Boundary_aligned_field_status boundary_aligned_rosy_field(const TriangleMesh& tm
     if(own_ps.success)
       for(std::size_t f = 0; f < nf; ++f) beta[f] = get(tmp, m.faces[f]);
   }
-  // turn the whole field so that it follows the first boundary edge
-  const int hb = topo.loops[0][0] ^ 1;   // the interior halfedge of a boundary edge
-  const int fb = mf.face[std::size_t(hb)];
-  const double period = 2 * CGAL_PI / N;
-  const double offset = internal::halfedge_direction(mf, hb) + (st.orthogonal ? CGAL_PI / 2 : 0.) - beta[std::size_t(fb)];
-  for(std::size_t f = 0; f < nf; ++f) {
-    double a = beta[f] + offset;
-    a -= 2 * CGAL_PI * std::floor(a / (2 * CGAL_PI));
-    beta[f] = a;
-    put(face_angles, m.faces[f], a);
-  }
-  // parallel to an edge = one of the N directions on its line, in either orientation: modulo
-  // 2 pi / N for even N, pi / N for odd N (the directions and their opposites)
-  const double line_period = N % 2 == 0 ? period : CGAL_PI / N;
-  // Several boundary loops: the field follows the first one; along each other loop (a geodesic
-  // with corners that turn by multiples of the period) it makes a constant angle d_j with the
-  // boundary. A harmonic rotation theta (cotan Laplace of the flat metric) equal to -d_j on loop
-  // j turns it onto every loop without new singularity: an exact 1-form, the double cover's
-  // compensation that is odd under the mirror (the even one would turn the field along the
-  // boundary loops themselves). Faces on a boundary edge take the loop's value, so the
-  // alignment there is exact.
-  if(topo.loops.size() > 1) {
-    std::vector<double> fixed(nv, std::numeric_limits<double>::quiet_NaN());
-    for(const auto& loop : topo.loops) {
-      const int h = loop[0] ^ 1;
-      const double d = std::remainder(beta[std::size_t(mf.face[std::size_t(h)])] - internal::halfedge_direction(mf, h) -
-                                      (st.orthogonal ? CGAL_PI / 2 : 0.), line_period);
-      for(int b : loop) fixed[std::size_t(mf.source(b))] = -d;
-    }
-    std::vector<int> col(nv, -1);
-    int n = 0;
-    for(std::size_t v = 0; v < nv; ++v) if(std::isnan(fixed[v]) && !m.is_isolated(int(v))) col[v] = n++;
-    std::vector<double> theta(nv, 0.);
-    for(std::size_t v = 0; v < nv; ++v) if(!std::isnan(fixed[v])) theta[v] = fixed[v];
-    if(n > 0) {
-      const std::vector<double> w = internal::floored_cotan_edge_weights(mf);
-      std::vector<Eigen::Triplet<double>> t;
-      Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n);
-      for(std::size_t e = 0; e < ne; ++e) {
-        const int a = mf.source(int(2 * e)), b = mf.target[2 * e];
-        const int ca = col[std::size_t(a)], cb = col[std::size_t(b)];
-        if(ca >= 0) t.emplace_back(ca, ca, w[e]);
-        if(cb >= 0) t.emplace_back(cb, cb, w[e]);
-        if(ca >= 0 && cb >= 0) t.emplace_back((std::max)(ca, cb), (std::min)(ca, cb), -w[e]);
-        else if(ca >= 0) rhs[ca] += w[e] * theta[std::size_t(b)];
-        else if(cb >= 0) rhs[cb] += w[e] * theta[std::size_t(a)];
-      }
-      Cholmod_cholesky::Matrix L(n, n);
-      L.setFromTriplets(t.begin(), t.end());
-      L.makeCompressed();
-      Cholmod_cholesky chol;
-      if(!chol.factor(L, st.message)) return st;
-      const Eigen::VectorXd x = chol.solve(rhs);
-      for(std::size_t v = 0; v < nv; ++v) if(col[v] >= 0) theta[v] = x[col[v]];
-    }
-    for(std::size_t f = 0; f < nf; ++f) {
-      const int h0 = mf.face_halfedge[f];
-      double r = 0;
-      int on_boundary = -1;
-      for(int h = h0, i = 0; i < 3; h = mf.next[std::size_t(h)], ++i) {
-        r += theta[std::size_t(mf.source(h))] / 3;
-        if(mf.face[std::size_t(h ^ 1)] < 0) on_boundary = h;
-      }
-      if(on_boundary >= 0) r = theta[std::size_t(mf.source(on_boundary))];
-      double a = beta[f] + r;
-      a -= 2 * CGAL_PI * std::floor(a / (2 * CGAL_PI));
-      beta[f] = a;
-      put(face_angles, m.faces[f], a);
-    }
-  }
-  for(const auto& loop : topo.loops)
-    for(int b : loop) {
-      const int h = b ^ 1;
-      const double d = beta[std::size_t(mf.face[std::size_t(h)])] - internal::halfedge_direction(mf, h) - (st.orthogonal ? CGAL_PI / 2 : 0.);
-      st.max_boundary_deviation = (std::max)(st.max_boundary_deviation, std::abs(std::remainder(d, line_period)));
-    }
+  if(!internal::align_with_boundary_loops(mf, topo, N, st.orthogonal, beta, st.message)) return st;
+  for(std::size_t f = 0; f < nf; ++f) put(face_angles, m.faces[f], beta[f]);
+  st.max_boundary_deviation = internal::boundary_deviation(mf, topo, N, st.orthogonal, beta);
   st.success = st.max_boundary_deviation <= 1e-6;
-  if(!st.success)
-    st.message = "the field does not follow the boundary everywhere (deviation " + std::to_string(st.max_boundary_deviation) +
-                 " rad): do the boundary corners turn by multiples of 2 pi / N?";
+  if(!st.success) st.message = internal::boundary_deviation_message(st.max_boundary_deviation);
   return st;
 }
 
