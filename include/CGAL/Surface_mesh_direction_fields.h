@@ -37,6 +37,7 @@
 #include <CGAL/Surface_mesh_direction_fields/Intrinsic_triangulation.h>
 #include <CGAL/Surface_mesh_direction_fields/field_transfer.h>
 #include <CGAL/Surface_mesh_direction_fields/curvature_aligned_field.h>
+#include <CGAL/Surface_mesh_direction_fields/vertex_field_from_faces.h>
 
 #ifdef CGAL_SURFACE_MESH_DIRECTION_FIELDS_WITH_IO
 #include <CGAL/Surface_mesh_direction_fields/IO.h>

@@ -17,11 +17,12 @@
 //   field follows the parallels and meridians and has no singularity; on a round sphere the
 //   smoothest cross field has the 8 singularities of index 1/4; on every closed shared mesh the
 //   indices are multiples of 1/N summing to chi;
-// - cross fields parallel and orthogonal to the boundary of every open genus-0 shared mesh (each
-//   loop a rectangle in the flat metric, a random interior dipole): the mesh's own flat metric,
-//   with flips where it needs them, boundary_aligned_parallel_field() on it, carried to the input
-//   faces: every boundary face follows its boundary edge (1e-9 rad, measured on the input), and
-//   the field reads back exactly the dipole there.
+// - cross fields parallel and orthogonal to the boundary of every open shared mesh (each loop a
+//   rectangle in the flat metric, 8g cones of -1/4 for the handles, a random interior dipole):
+//   the mesh's own flat metric, with flips where it needs them, boundary_aligned_field_of_metric()
+//   on it (rotation compensation of the handles), carried to the input faces: every boundary face
+//   follows its boundary edge (1e-9 rad, measured on the input), and the field reads back
+//   exactly the cones and the dipole there.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
@@ -369,11 +370,11 @@ void automatic_singularities_tests(const std::string& dir)
 }
 
 
-// Cross fields along the boundary of an open genus-0 mesh, on its own flat metric (flips
+// Cross fields along the boundary of an open mesh of genus g, on its own flat metric (flips
 // allowed), carried to the input faces. Every boundary loop turns by +2 pi (the first) or
-// -2 pi (the others) at four corners of +-pi/2 spread along it: Gauss-Bonnet, 2 pi (2 - b).
-// Returns whether the metric needed flips.
-bool boundary_aligned_on_input(const Surface_mesh& mesh, const std::string& name, std::mt19937& rng)
+// -2 pi (the others) at four corners of +-pi/2 spread along it, 8g random interior cones of
+// -pi/2 make up Gauss-Bonnet (2 pi (2 - 2g - b)). Returns whether the metric needed flips.
+bool boundary_aligned_on_input(const Surface_mesh& mesh, int genus, const std::string& name, std::mt19937& rng)
 {
   typedef Surface_mesh::Vertex_index V;
   std::vector<std::vector<V>> loops;
@@ -396,7 +397,13 @@ bool boundary_aligned_on_input(const Surface_mesh& mesh, const std::string& name
   while(minus == plus) minus = inner[pick(rng)];
   put(target, plus, CGAL_PI / 2);
   put(target, minus, -CGAL_PI / 2);
-  const std::map<std::size_t, double> want = {{std::size_t(plus.idx()), 0.25}, {std::size_t(minus.idx()), -0.25}};
+  std::map<std::size_t, double> want = {{std::size_t(plus.idx()), 0.25}, {std::size_t(minus.idx()), -0.25}};
+  while(int(want.size()) < 2 + 8 * genus) {
+    const V v = inner[pick(rng)];
+    if(want.count(std::size_t(v.idx()))) continue;
+    put(target, v, -CGAL_PI / 2);
+    want[std::size_t(v.idx())] = -0.25;
+  }
   auto len = get(CGAL::dynamic_edge_property_t<double>(), mesh);
   const SMDF::Cone_metric_status cm = SMDF::compute_cone_metric(mesh, target, len);
   SMDF_CHECK_MSG(cm.converged && cm.correspondence_message.empty(), name << ": " << cm.message << cm.correspondence_message);
@@ -415,7 +422,7 @@ bool boundary_aligned_on_input(const Surface_mesh& mesh, const std::string& name
     auto angles = carrier.add_property_map<Surface_mesh::Face_index, double>("f:a", 0.).first;
     auto matching = carrier.add_property_map<Surface_mesh::Edge_index, int>("e:m", 0).first;
     const auto np = SMDF::parameters::edge_length_map(flat).orthogonal_to_boundary(orthogonal);
-    const SMDF::Boundary_aligned_field_status st = SMDF::boundary_aligned_parallel_field(carrier, 4, angles, np);
+    const SMDF::Boundary_aligned_field_status st = SMDF::boundary_aligned_field_of_metric(carrier, 4, angles, np);
     SMDF_CHECK_MSG(st.success, what << ": " << st.message);
     if(!st.success) continue;
     SMDF::principal_matching(carrier, angles, matching, SMDF::parameters::symmetry_order(4).edge_length_map(flat));
@@ -437,8 +444,9 @@ bool boundary_aligned_on_input(const Surface_mesh& mesh, const std::string& name
     const auto found = SMDF::field_singularities(mesh, in_angles, SMDF::parameters::symmetry_order(4).matching(in_matching));
     std::map<std::size_t, double> got;
     for(const auto& x : found.singularities) got[std::size_t(x.first.idx())] = x.second;
-    SMDF_CHECK_MSG(got == want, what << ": " << got.size() << " singularities read back on the input, 2 prescribed");
-    std::cout << what << ": " << loops.size() << " loops, deviation " << deviation << ", read back " << got.size() << std::endl;
+    SMDF_CHECK_MSG(got == want, what << ": " << got.size() << " singularities read back on the input, " << want.size() << " prescribed");
+    std::cout << what << ": genus " << genus << ", " << loops.size() << " loops, deviation " << deviation << ", read back "
+              << got.size() << std::endl;
   }
   return cm.triangulation_changed;
 }
@@ -446,10 +454,10 @@ bool boundary_aligned_on_input(const Surface_mesh& mesh, const std::string& name
 void boundary_aligned_tests(const std::string& dir, std::mt19937& rng)
 {
   if(dir.empty()) return;
-  std::size_t meshes = 0, with_flips = 0;
+  std::size_t meshes = 0, with_flips = 0, with_handles = 0;
   for(const auto& e : smdf_test::read_manifest(dir)) {
     if(e.manifold != "yes" || e.pure_tri != "yes" || e.orientable != "yes" || e.components != 1 || e.boundary_loops == 0 ||
-       e.genus != "0" || e.degenerate_faces > 0 || e.F > 120000)
+       e.degenerate_faces > 0 || e.F > 120000)
       continue;
     Surface_mesh mesh;
     try {
@@ -459,10 +467,12 @@ void boundary_aligned_tests(const std::string& dir, std::mt19937& rng)
       continue;
     }
     ++meshes;
-    if(boundary_aligned_on_input(mesh, e.file, rng)) ++with_flips;
+    const int genus = std::stoi(e.genus);
+    if(boundary_aligned_on_input(mesh, genus, e.file, rng)) ++with_flips;
+    with_handles += genus > 0 ? 1 : 0;
   }
-  std::cout << meshes << " open genus-0 meshes, " << with_flips << " needed flips" << std::endl;
-  SMDF_CHECK(meshes >= 4 && with_flips >= 1);
+  std::cout << meshes << " open meshes, " << with_handles << " with handles, " << with_flips << " needed flips" << std::endl;
+  SMDF_CHECK(meshes >= 4 && with_flips >= 1 && with_handles >= 1);
 }
 
 } // namespace

@@ -867,7 +867,14 @@ def test_rosy(smdf, c, torus, tmp):
     smdf.error(["rosy", spot, "--cones", "0:2pi,1:0"], "rosy: cone of index 1 breaking Gauss-Bonnet", 1, "Gauss-Bonnet")
     smdf.error(["rosy", spot, "--cones", "100:4pi", "--N", "1", "--method", "trivial-connection"], "rosy: index 2 with another method", 2,
                "parallel field of the punched surface")
-    smdf.error(["rosy", spot, "--cones", "100:4pi", "--N", "1", "--field-out", ff], "rosy: index 2 with --field-out", 2, "punched holes")
+    smdf.error(["rosy", spot, "--cones", "100:4pi", "--N", "1", "--edit", ff], "rosy: index 2 with --edit", 2, "punched holes")
+    vf = os.path.join(tmp, "punched_vertex.txt")
+    p3 = smdf.json(["rosy", spot, "--cones", "100:4pi", "--N", "1", "--field-out", vf], "rosy spot, index 2, --field-out")
+    if p3:
+        vv = read_vectors(vf)
+        zero = [i for i, v in enumerate(vv) if vnorm(v) == 0]
+        c.check(p3.get("success") is True and zero == [100] and all(abs(vnorm(v) - 1) < 1e-9 for i, v in enumerate(vv) if i != 100),
+                "rosy --cones 100:4pi --field-out: unit vectors except the zero vector at the singularity (%r)" % zero[:5])
     smdf.error(["rosy", spot, "--cones", "0:pi/2"], "rosy: Gauss-Bonnet", 1, "[inconsistent_indices]")
     smdf.error(["rosy", spot, "--cones", "0:pi/2,0:pi/2"], "rosy: cone given twice", 1, "twice")
 
@@ -884,15 +891,52 @@ def border_faces(faces):
 
 def boundary_deviation(verts, faces, border, vectors, N, mode):
     """The largest angle between a boundary face's field and its boundary edge (mode "parallel")
-    or the edge's normal in the face plane ("orthogonal"), modulo 2 pi / N (pi / N for odd N)."""
-    worst = 0
+    or the edge's normal in the face plane ("orthogonal"), modulo 2 pi / N (pi / N for odd N). A
+    face with two boundary edges (a corner face) counts the nearer one: a constant field in a face
+    cannot follow two sides that meet at an angle off that lattice."""
+    per_face = {}
     for e, f in border:
         d = vsub(verts[e[1]], verts[e[0]])
         if mode == "orthogonal":
             a, b, cc = (verts[i] for i in faces[f])
             d = vcross(vcross(vsub(b, a), vsub(cc, a)), d)
-        worst = max(worst, line_angle_error(vectors[f], d, N if N % 2 == 0 else 2 * N))
-    return worst
+        err = line_angle_error(vectors[f], d, N if N % 2 == 0 else 2 * N)
+        per_face[f] = min(err, per_face.get(f, err))
+    return max(per_face.values(), default=0)
+
+
+def boundary_vertex_deviation(verts, faces, vectors, N, mode):
+    """At every boundary vertex: the angle between its --field-out vector and its outgoing border
+    edge (the border edge its face traverses from it) projected on the vertex's tangent plane
+    (normal: the area-weighted mean of its faces' normals), or that edge's normal in the plane
+    ("orthogonal"), modulo 2 pi / N (pi / N for odd N); and the largest | 1 - |v| | there."""
+    normal, count = {}, {}
+    for f in faces:
+        a, b, cc = (verts[i] for i in f)
+        n = vcross(vsub(b, a), vsub(cc, a))
+        for v in f:
+            m = normal.get(v, (0.0, 0.0, 0.0))
+            normal[v] = (m[0] + n[0], m[1] + n[1], m[2] + n[2])
+        for k in range(3):
+            key = (min(f[k], f[(k + 1) % 3]), max(f[k], f[(k + 1) % 3]))
+            count[key] = count.get(key, 0) + 1
+    worst = length = 0.0
+    for f in faces:
+        for k in range(3):
+            a, b = f[k], f[(k + 1) % 3]
+            if count[(min(a, b), max(a, b))] != 1:
+                continue
+            n = normal[a]
+            nn = vnorm(n)
+            n = (n[0] / nn, n[1] / nn, n[2] / nn)
+            e = vsub(verts[b], verts[a])
+            d = vdot(e, n)
+            e = (e[0] - d * n[0], e[1] - d * n[1], e[2] - d * n[2])
+            if mode == "orthogonal":
+                e = vcross(n, e)
+            worst = max(worst, line_angle_error(vectors[a], e, N if N % 2 == 0 else 2 * N))
+            length = max(length, abs(1 - vnorm(vectors[a])))
+    return worst, length
 
 
 def test_shared_rosy(smdf, c, meshes, tmp):
@@ -949,14 +993,21 @@ def test_shared_rosy(smdf, c, meshes, tmp):
         verts, faces = read_off(path)
         border = border_faces(faces)
         for N, mode in modes:
-            ff = os.path.join(tmp, "loops_%s_%d.txt" % (mode, N))
-            r = smdf.json(["rosy", path, "--N", str(N), "--boundary", mode, "--face-field-out", ff], "rosy %s --N %d --boundary %s" % (name, N, mode))
+            ff, vf = os.path.join(tmp, "loops_%s_%d.txt" % (mode, N)), os.path.join(tmp, "loops_vertex.txt")
+            r = smdf.json(["rosy", path, "--N", str(N), "--boundary", mode, "--face-field-out", ff, "--field-out", vf],
+                          "rosy %s --N %d --boundary %s" % (name, N, mode))
             if not r:
                 continue
             worst = boundary_deviation(verts, faces, border, read_vectors(ff), N, mode)
             c.check(r.get("success") is True and r.get("found") == [] and worst < 1e-6,
                     "rosy %s (%d loops) --N %d --boundary %s: every boundary face %s to its edge (%.3g), no singularity"
                     % (name, len(r.get("boundary_turning_over_pi", [])), N, mode, mode, worst))
+            vv = read_vectors(vf)
+            vworst, vlength = boundary_vertex_deviation(verts, faces, vv, N, mode)
+            units = all(abs(vnorm(v) - 1) < 1e-9 for v in vv)
+            c.check(len(vv) == len(verts) and units and vworst < 1e-6,
+                    "rosy %s --N %d --boundary %s --field-out: a unit vector per vertex, %s to the boundary at every "
+                    "boundary vertex (%.3g)" % (name, N, mode, mode, vworst))
     annulus = os.path.join(meshes, "annulus_igltest.obj")
     if os.path.isfile(annulus):
         r = smdf.json(["rosy", annulus, "--N", "4"], "rosy annulus, free boundary")
@@ -1061,6 +1112,30 @@ def test_shared_rosy_flips(smdf, c, meshes, tmp):
             back = smdf.json(["singularities", path, "--field", ff, "--N", "4", "--matching", mm], "singularities of connection --factors")
             c.check(back is not None and back.get("singularities") == want,
                     "connection --factors: smdf singularities reads the written field and matching as prescribed")
+        # the same metric as cone-metric --lengths-out writes it (intrinsic edges): the factors
+        # rebuilt from the edges shared with the input, the file checked line by line
+        lf = os.path.join(tmp, "intrinsic_lengths.txt")
+        ml = smdf.json(["cone-metric", path, "--cones", ",".join("%d:pi/2" % v for v in corners), "--lengths-out", lf],
+                       "cone-metric cheburashka --lengths-out (flips)")
+        fl, ml2 = os.path.join(tmp, "lengths_field.txt"), os.path.join(tmp, "lengths_matching.txt")
+        rl = smdf.json(["connection", path, "--N", "4", "--singularities", sing, "--lengths", lf, "--field-out", fl, "--matching-out", ml2],
+                       "connection cheburashka --lengths with intrinsic edges")
+        if ml and rl:
+            back = smdf.json(["singularities", path, "--field", fl, "--N", "4", "--matching", ml2], "singularities of connection --lengths")
+            c.check(ml.get("triangulation_changed") is True and rl.get("correspondence", {}).get("intrinsic_edges", 0) > 0
+                    and rl["input_read_back"]["found"] == want and back is not None and back.get("singularities") == want,
+                    "connection --lengths (intrinsic edges): the metric rebuilt with its correspondence, read back on the input (%r)"
+                    % rl.get("correspondence"))
+            with open(lf) as f:
+                rows = [l for l in f if l.strip() and not l.startswith("#")]
+            _, cfaces = read_off(path)
+            input_edges = {(min(f[k], f[(k + 1) % 3]), max(f[k], f[(k + 1) % 3])) for f in cfaces for k in range(3)}
+            new = next(n for n, row in enumerate(rows) if tuple(sorted(int(x) for x in row.split()[:2])) not in input_edges)
+            i, j, l = rows[new].split()
+            with open(os.path.join(tmp, "bad_lengths.txt"), "w") as f:
+                f.writelines(rows[:new] + ["%s %s %.17g\n" % (i, j, float(l) * 1.01)] + rows[new + 1:])
+            smdf.error(["connection", path, "--N", "4", "--singularities", sing, "--lengths", os.path.join(tmp, "bad_lengths.txt")],
+                       "connection --lengths: an intrinsic length off by 1%", 1, "the conformal metric of the input edges gives it")
         smdf.error(["connection", path, "--factors", u, "--lengths", u], "connection --factors with --lengths", 2, "not both")
         with open(os.path.join(tmp, "bad_factors.txt"), "w") as f:
             f.write("0.1\n0.2\n")
@@ -2194,12 +2269,13 @@ def test_sweep(smdf, c, shared):
     runs = ok = refused = 0
     refusals = []
     with tempfile.TemporaryDirectory(prefix="smdf_sweep_") as tmp:
-        ff, mm = os.path.join(tmp, "face.txt"), os.path.join(tmp, "matching.txt")
+        ff, mm, vf = os.path.join(tmp, "face.txt"), os.path.join(tmp, "matching.txt"), os.path.join(tmp, "vertex.txt")
 
         def run(path, name, args, want, border=None, N=4, mode=None):
             nonlocal runs, ok, refused
             runs += 1
-            rc, out, err = smdf.run(["rosy", path] + args + ["--face-field-out", ff, "--matching-out", mm])
+            extra = ["--field-out", vf] if border is not None and mode in ("parallel", "orthogonal") else []
+            rc, out, err = smdf.run(["rosy", path] + args + ["--face-field-out", ff, "--matching-out", mm] + extra)
             if (rc == 3 and out.strip() or rc == 1 and b"[degenerate_face]" in err) and len(err.strip().splitlines()) == 1:
                 refused += 1
                 refusals.append("%s %s: %s" % (name, " ".join(args)[:60], err.strip()[-160:]))
@@ -2212,6 +2288,8 @@ def test_sweep(smdf, c, shared):
             if border is not None and mode in ("parallel", "orthogonal"):
                 verts, faces, edges = border
                 good = good and boundary_deviation(verts, faces, edges, read_vectors(ff), N, mode) < 1e-6
+                if extra:   # (punched cones take no --field-out: those runs are refused by usage)
+                    good = good and boundary_vertex_deviation(verts, faces, read_vectors(vf), N, mode)[0] < 1e-6
             if c.check(good, "sweep: rosy %s %s: the input's field reads back the cones%s" % (name, " ".join(args)[:80],
                        "" if border is None else " and follows the boundary")):
                 ok += 1

@@ -14,6 +14,8 @@
 #include <CGAL/Surface_mesh_direction_fields/parameters.h>
 #include <CGAL/Surface_mesh_direction_fields/Trivial_connection.h>
 
+#include <Eigen/SparseCholesky>
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -111,6 +113,85 @@ std::vector<double> read_factors(const std::string& file, const Mesh& mesh)
   if(missing > 0)
     throw file_error(file, std::to_string(missing) + " of " + std::to_string(nv) + " vertices have no conformal factor", "file_error");
   return u;
+}
+
+// --lengths FILE whose lines name pairs of vertices that no input edge joins: the intrinsic
+// triangulation of a discrete conformal metric (cone-metric --lengths-out after flips). Its
+// conformal factors follow from the edges it shares with the input, l = exp((u_i + u_j) / 2) L
+// (least squares over them); the triangulation is rebuilt from the factors with its common
+// subdivision, and every line of the file is checked against it (relative 1e-8). Returns an
+// empty triangulation when every line is an input edge (the plain --lengths route).
+SMDF::Intrinsic_triangulation intrinsic_lengths(const std::string& file, Mesh& mesh)
+{
+  struct Line { std::size_t i, j, line_no; double l; };
+  std::vector<Line> lines;
+  const std::size_t nv = num_vertices(mesh);
+  bool all_input = true;
+  for_each_data_line(file, [&](std::size_t line_no, const std::vector<std::string>& tok) {
+    if(tok.size() != 3) throw line_error(file, line_no, "expected 'i j length', got " + std::to_string(tok.size()) + " fields");
+    Line x{vertex_field(file, line_no, tok[0], nv), vertex_field(file, line_no, tok[1], nv), line_no, finite_field(file, line_no, tok[2])};
+    if(!(x.l > 0)) throw line_error(file, line_no, "the length must be positive, got " + tok[2]);
+    if(x.i == x.j) throw line_error(file, line_no, "an edge from vertex " + tok[0] + " to itself");
+    all_input = all_input && halfedge(vertex_descriptor(Mesh::size_type(x.i)), vertex_descriptor(Mesh::size_type(x.j)), mesh).second;
+    lines.push_back(x);
+  });
+  if(all_input) return SMDF::Intrinsic_triangulation();
+  // the factors: least squares over the lines on input edges (normal equations, the signless
+  // Laplacian of those edges; a vertex on none of them has no factor)
+  std::vector<Eigen::Triplet<double>> t;
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(Eigen::Index(nv));
+  std::vector<char> covered(nv, 0);
+  for(const Line& x : lines) {
+    const auto h = halfedge(vertex_descriptor(Mesh::size_type(x.i)), vertex_descriptor(Mesh::size_type(x.j)), mesh);
+    if(!h.second) continue;
+    const double L = std::sqrt(CGAL::squared_distance(mesh.point(source(h.first, mesh)), mesh.point(target(h.first, mesh))));
+    const double b = 2 * std::log(x.l / L);
+    for(std::size_t a : {x.i, x.j}) { t.emplace_back(Eigen::Index(a), Eigen::Index(a), 1.); rhs[Eigen::Index(a)] += b; covered[a] = 1; }
+    t.emplace_back(Eigen::Index(x.i), Eigen::Index(x.j), 1.);
+    t.emplace_back(Eigen::Index(x.j), Eigen::Index(x.i), 1.);
+  }
+  for(vertex_descriptor v : vertices(mesh))
+    if(!covered[v.idx()] && !mesh.is_isolated(v))
+      throw file_error(file, "vertex " + std::to_string(v.idx()) + " is on no input edge of the file: its conformal factor is unknown "
+                             "(use --factors)", "file_error");
+  for(std::size_t v = 0; v < nv; ++v) if(!covered[v]) t.emplace_back(Eigen::Index(v), Eigen::Index(v), 1.);
+  Eigen::SparseMatrix<double> A{Eigen::Index(nv), Eigen::Index(nv)};
+  A.setFromTriplets(t.begin(), t.end());
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(A);
+  const Eigen::VectorXd u = ldlt.solve(rhs);
+  if(ldlt.info() != Eigen::Success || !u.allFinite())
+    throw file_error(file, "the lengths of the input edges in the file determine no conformal factors", "file_error");
+  auto factors = mesh.add_property_map<vertex_descriptor, double>("v:smdf_factor", 0.).first;
+  for(vertex_descriptor v : vertices(mesh)) factors[v] = u[Eigen::Index(v.idx())];
+  SMDF::Intrinsic_triangulation itri = on_file(file, [&] { return SMDF::conformal_intrinsic_triangulation(mesh, factors); });
+  // every line an edge of the rebuilt triangulation with its length, and every edge a line
+  std::map<std::pair<std::size_t, std::size_t>, std::vector<double>> rebuilt;
+  for(std::size_t e = 0; e < itri.number_of_edges(); ++e) {
+    const std::size_t a = std::size_t(itri.source(int(2 * e))), b = std::size_t(itri.target(int(2 * e)));
+    rebuilt[{(std::min)(a, b), (std::max)(a, b)}].push_back(itri.length(int(e)));
+  }
+  for(const Line& x : lines) {
+    auto it = rebuilt.find({(std::min)(x.i, x.j), (std::max)(x.i, x.j)});
+    std::size_t best = 0;
+    double err = 1e300;
+    if(it != rebuilt.end())
+      for(std::size_t k = 0; k < it->second.size(); ++k) {
+        const double d = std::abs(it->second[k] - x.l) / x.l;
+        if(d < err) { err = d; best = k; }
+      }
+    if(!(err <= 1e-8))
+      throw line_error(file, x.line_no, it == rebuilt.end()
+          ? "edge (" + std::to_string(x.i) + ", " + std::to_string(x.j) + ") is not in the intrinsic Delaunay triangulation of the "
+            "conformal metric these lengths define (are they a discrete conformal metric of the mesh, e.g. cone-metric --lengths-out?)"
+          : "edge (" + std::to_string(x.i) + ", " + std::to_string(x.j) + ") has length " + std::to_string(x.l) +
+            " but the conformal metric of the input edges gives it " + std::to_string(it->second[best]) + " (relative error " +
+            std::to_string(err) + ")");
+    it->second.erase(it->second.begin() + long(best));
+  }
+  if(lines.size() != itri.number_of_edges())
+    throw file_error(file, std::to_string(lines.size()) + " lengths for a triangulation of " + std::to_string(itri.number_of_edges()) +
+                           " edges", "file_error");
+  return itri;
 }
 
 // --constraints FILE: lines 'face angle' (radians in the face frame) or 'face x y z' (a 3D
@@ -282,11 +363,14 @@ Json run_connection(const Args& args)
   Mesh flat_mesh;
   Mesh* carrier = &mesh;
   Edge_length_property metric_lengths;
-  if(args.has("factors")) {
-    const std::vector<double> u = read_factors(metric_file, mesh);
-    auto factors = mesh.add_property_map<vertex_descriptor, double>("v:smdf_factor", 0.).first;
-    for(vertex_descriptor v : vertices(mesh)) factors[v] = u[v.idx()];
-    itri = on_file(metric_file, [&] { return SMDF::conformal_intrinsic_triangulation(mesh, factors); });
+  if(args.has("lengths")) itri = intrinsic_lengths(metric_file, mesh);   // empty: every line an input edge
+  if(args.has("factors") || !itri.empty()) {
+    if(args.has("factors")) {
+      const std::vector<double> u = read_factors(metric_file, mesh);
+      auto factors = mesh.add_property_map<vertex_descriptor, double>("v:smdf_factor", 0.).first;
+      for(vertex_descriptor v : vertices(mesh)) factors[v] = u[v.idx()];
+      itri = on_file(metric_file, [&] { return SMDF::conformal_intrinsic_triangulation(mesh, factors); });
+    }
     if(itri.number_of_new_edges() > 0) {
       if(!constraints.empty() || opt.edits > 0 || args.has("connection-out"))
         throw Usage_error("--constraints, --edit-benchmark and --connection-out need the metric on the input's edges; "
@@ -451,7 +535,9 @@ Command connection_command()
            {"field-out", "FILE", "write one unit direction 'x y z' per face"},
            {"connection-out", "FILE", "write 'i j angle' per interior edge (adjustment angle)"},
            {"matching-out", "FILE", "write 'i j k' per interior edge (period jump of the field)"},
-           {"lengths", "FILE", "intrinsic metric: one line 'i j length' per edge (as holonomy --lengths)"},
+           {"lengths", "FILE", "intrinsic metric: one line 'i j length' per edge (as holonomy --lengths); with edges not in the input "
+                              "(cone-metric --lengths-out after flips) the conformal metric is rebuilt from the shared edges, checked "
+                              "line by line, and the field carried to the input faces"},
            {"factors", "FILE", "the discrete conformal metric of these factors, one 'u' per vertex (cone-metric --factors-out); with edge flips the field is carried to the input faces"},
            {"edit-benchmark", "K", "time K random singularity moves (re-solve + field)"},
            {"svg", "FILE", "write an SVG picture of the field and its found singularities"},

@@ -12,6 +12,7 @@
 #include <CGAL/Surface_mesh_direction_fields/Intrinsic_triangulation.h>
 #include <CGAL/Surface_mesh_direction_fields/Trivial_connection.h>
 #include <CGAL/Surface_mesh_direction_fields/boundary_aligned_field.h>
+#include <CGAL/Surface_mesh_direction_fields/vertex_field_from_faces.h>
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/curvature_aligned_field.h>
 #include <CGAL/Surface_mesh_direction_fields/field_editing.h>
@@ -118,13 +119,10 @@ Json run_rosy(const Args& args)
   if(editing && method != ROTATION_COMPENSATION)
     throw Usage_error(std::string("--edit and --length edit the vertex field of rotation compensation (closed meshes), not a ") +
                       method_name(method) + " field");
-  if(args.has("field-out") && method != ROTATION_COMPENSATION)
-    throw Usage_error(std::string("--field-out writes the vertex field of rotation compensation (closed meshes); the ") +
-                      method_name(method) + " field is per face: --face-field-out");
   out["method"] = method_name(method);
   if(open) out["boundary"] = opt.boundary == FREE_BOUNDARY ? "free" : opt.boundary == PARALLEL_BOUNDARY ? "parallel" : "orthogonal";
 
-  // 2. the targets and the flat cone metric (the double cover's for boundary-aligned fields)
+  // 2. the targets and the flat cone metric
   auto targets = mesh.add_property_map<vertex_descriptor, double>("v:smdf_rosy_target", 0.).first;
   for(const auto& c : cones) targets[c.first] = c.second;
   const Boundary_geometry bgeo = open ? boundary_geometry(mesh) : Boundary_geometry();
@@ -141,29 +139,17 @@ Json run_rosy(const Args& args)
   if(punch) {
     if(opt.method != AUTOMATIC && opt.method != PARALLEL)
       throw Usage_error(std::string("cones of index 1 or more take the parallel field of the punched surface, not --method ") + method_name(opt.method));
-    for(const char* o : {"edit", "length", "field-out", "hatching-svg", "turning", "holonomy"})
+    for(const char* o : {"edit", "length", "hatching-svg", "turning", "holonomy"})
       if(args.has(o)) throw Usage_error(std::string("--") + o + " is not available with cones of index 1 or more (punched holes)");
     return run_rosy_punched(args, file, mesh, N, cones, targets, opt.boundary, svg);
   }
   const Edge_length_property lengths = mesh.add_property_map<edge_descriptor, double>("e:smdf_rosy_length", 0.).first;
   const Face_angle_property input_angles = mesh.add_property_map<face_descriptor, double>("f:smdf_rosy_angle", 0.).first;
-  SMDF::Cone_metric_status cm;
-  SMDF::Boundary_aligned_field_status aligned;
-  // boundary-aligned fields with handles: the double cover (Lai et al. 4.3) on the input's
-  // triangulation; on genus 0 the mesh's own metric (flips allowed), whose mirror double the
-  // cover's is
-  const bool cover_route = method == BOUNDARY_ALIGNED && has_handles(mesh);
-  if(cover_route) {
-    aligned = on_file(file, [&] {
-      return SMDF::boundary_aligned_rosy_field(mesh, N, targets, lengths, input_angles,
-                                               SMDF::parameters::orthogonal_to_boundary(opt.boundary == ORTHOGONAL_BOUNDARY));
-    });
-    cm = aligned.metric;
-  } else {
-    cm = on_file(file, [&] { return SMDF::compute_cone_metric(mesh, targets, lengths); });
-  }
+  // the flat cone metric (flips allowed); fields along the boundary take its geodesic boundary
+  // (Lai et al. 4.3: the double cover's metric restricted to the mesh)
+  const SMDF::Cone_metric_status cm = on_file(file, [&] { return SMDF::compute_cone_metric(mesh, targets, lengths); });
   timings["metric_s"] = clock.lap();
-  out["metric"] = metric_json(cm, cover_route ? "double cover" : nullptr);
+  out["metric"] = metric_json(cm, nullptr);
   if(open) {
     Json bt = Json::array();
     for(const auto& loop : bgeo.loops) {
@@ -183,7 +169,7 @@ Json run_rosy(const Args& args)
   Mesh flat_mesh;
   Edge_length_property flat = lengths;
   Mesh* carrier = &mesh;
-  if(cm.triangulation_changed && !cover_route) {
+  if(cm.triangulation_changed) {
     flat = flat_mesh.add_property_map<edge_descriptor, double>("e:smdf_rosy_length", 0.).first;
     SMDF::copy_intrinsic_triangulation(cm.intrinsic_triangulation, mesh, flat_mesh, flat);
     carrier = &flat_mesh;
@@ -328,12 +314,10 @@ Json run_rosy(const Args& args)
       else if(!ps.success) failure = ps.message;
       timings["compensation_s"] = clock.lap();
     } else {
-      if(!cover_route)
-        aligned = on_file(file, [&] {
-          return SMDF::boundary_aligned_parallel_field(*carrier, N, angles, np.orthogonal_to_boundary(opt.boundary == ORTHOGONAL_BOUNDARY));
-        });
+      const SMDF::Boundary_aligned_field_status aligned = on_file(file, [&] {
+        return SMDF::boundary_aligned_field_of_metric(*carrier, N, angles, np.orthogonal_to_boundary(opt.boundary == ORTHOGONAL_BOUNDARY));
+      });
       Json a = Json::object();
-      a["route"] = cover_route ? "double cover" : "flat metric of the mesh";
       a["max_boundary_deviation"] = aligned.max_boundary_deviation;
       a["rotation_compensation"] = aligned.rotation_compensation;
       out["boundary_aligned"] = std::move(a);
@@ -420,10 +404,12 @@ Json run_rosy(const Args& args)
   // 7'. the face field and its matching on the input mesh, read back there: with flips carried
   // through the common subdivision, without them mapped face by face to the embedding
   Edge_matching_property input_matching = matching;
+  Face_angle_property embedded_angles = input_angles;   // the field in the embedded face frames
   if(failure.empty()) {
     input_matching = mesh.add_property_map<edge_descriptor, int>("e:smdf_rosy_input_matching", 0).first;
     const Face_angle_property on_mesh_angles =
         on_input ? mesh.add_property_map<face_descriptor, double>("f:smdf_rosy_embedded_angle", 0.).first : input_angles;
+    embedded_angles = on_mesh_angles;
     SMDF::Field_transfer_status ts;
     Json t = Json::object();
     if(on_input) {
@@ -460,7 +446,14 @@ Json run_rosy(const Args& args)
   if(!failure.empty()) throw Failed_result{out, file + ": " + failure, 3};
 
   // 8. the files, on the input mesh: vertex and face fields in 3D, the matching, the pictures
-  if(args.has("field-out")) {
+  if(args.has("field-out") && method != ROTATION_COMPENSATION) {
+    // the face field's vertex version: zero at the singularities, exact along a followed boundary
+    auto vv = mesh.add_property_map<vertex_descriptor, K::Vector_3>("v:smdf_rosy_vector").first;
+    SMDF::vertex_field_from_face_field(mesh, N, embedded_angles, input_matching, vv);
+    std::vector<K::Vector_3> v;
+    for(vertex_descriptor x : vertices(mesh)) v.push_back(vv[x]);
+    write_vectors(args.value("field-out"), v);
+  } else if(args.has("field-out")) {
     auto vv = mesh.add_property_map<vertex_descriptor, K::Vector_3>("v:smdf_rosy_vector").first;
     if(on_input) SMDF::vertex_field_to_vectors(mesh, vertex_angles, vv, SMDF::parameters::edge_length_map(flat));
     else {
@@ -518,7 +511,8 @@ Command rosy_command()
            {"boundary", "B", "open meshes: free (default), parallel or orthogonal (the field follows the boundary)"},
            {"edit", "FILE", "direction constraints, lines 'vertex x y z [weight]' (no weight: hard; hard and soft may be mixed)"},
            {"length", "FILE", "length constraints, lines 'vertex length [weight]'"},
-           {"field-out", "FILE", "write one 'x y z' per vertex (rotation compensation; scaled by the edited lengths)"},
+           {"field-out", "FILE", "write one 'x y z' per vertex: rotation compensation's vertex field (scaled by the edited lengths), "
+                                 "else the face field's vertex version (0 at singularities; along the boundary at boundary vertices when it follows it)"},
            {"face-field-out", "FILE", "write one unit direction 'x y z' per face"},
            {"matching-out", "FILE", "write 'i j k' per interior edge (period jump of the field)"},
            {"holonomy", "", "print the basis-loop table: kind, cone, rotation, translation, compatible"},
@@ -542,8 +536,10 @@ Command rosy_command()
           "Open meshes: --boundary free gives the boundary vertices not named in --cones the input's\n"
           "turning angle, changed so that each boundary loop turns by a multiple of 2 pi / N and\n"
           "Gauss-Bonnet holds; --boundary parallel|orthogonal rounds each boundary vertex's turning\n"
-          "angle to a multiple of 2 pi / N (pi / N for odd N) and builds the field on the double cover\n"
-          "(4.3), parallel or orthogonal to every boundary edge.\n"
+          "angle to a multiple of 2 pi / N (pi / N for odd N) and builds the field parallel or\n"
+          "orthogonal to every boundary edge (4.3) from the mesh's own flat metric with a geodesic\n"
+          "boundary (flips allowed; the double cover's, restricted), with rotation compensation of\n"
+          "the handles.\n"
           "--edit and --length edit the vertex field (4.2): harmonic interpolation of the rotation\n"
           "and the log-length with the cotan Laplacian; a line without weight is a hard constraint,\n"
           "one with weight lambda a soft one. Directions are projected on the vertex tangent plane.\n"

@@ -237,7 +237,7 @@ Rosy_options rosy_options(const Args& args)
   }
   o.turning = index_list_option(args, "turning");
   if(o.boundary != FREE_BOUNDARY && (o.method == ROTATION_COMPENSATION || o.method == TRIVIAL_CONNECTION))
-    throw Usage_error(std::string("--boundary ") + args.value("boundary") + " builds the field on the double cover; it takes no --method " +
+    throw Usage_error(std::string("--boundary ") + args.value("boundary") + " builds the field that follows the boundary; it takes no --method " +
                       method_name(o.method));
   if(o.method == PARALLEL && !o.turning.empty())
     throw Usage_error("--turning needs --method rotation-compensation or trivial-connection (a parallel field has no choice)");

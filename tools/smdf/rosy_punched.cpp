@@ -11,6 +11,7 @@
 #include <CGAL/Surface_mesh_direction_fields/field_transfer.h>
 #include <CGAL/Surface_mesh_direction_fields/parallel_rosy_field.h>
 #include <CGAL/Surface_mesh_direction_fields/topology.h>
+#include <CGAL/Surface_mesh_direction_fields/vertex_field_from_faces.h>
 
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 
@@ -264,6 +265,13 @@ Json run_rosy_punched(const Args& args, const std::string& file, Mesh& mesh, int
     write_vectors(args.value("face-field-out"), v);
   }
   if(args.has("matching-out")) write_matching(args.value("matching-out"), mesh, in_match);
+  if(args.has("field-out")) {   // the vertex version: 0 at the singularities
+    auto vv = mesh.add_property_map<vertex_descriptor, K::Vector_3>("v:smdf_punched_vector").first;
+    SMDF::vertex_field_from_face_field(mesh, N, in_angles, in_match, vv);
+    std::vector<K::Vector_3> v;
+    for(vertex_descriptor x : vertices(mesh)) v.push_back(vv[x]);
+    write_vectors(args.value("field-out"), v);
+  }
   if(args.has("svg")) write_field_svg_file(args, mesh, vectors, N, found, svg);
   return out;
 }
