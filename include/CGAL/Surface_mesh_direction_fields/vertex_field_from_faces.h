@@ -30,10 +30,10 @@ namespace Surface_mesh_direction_fields {
 /// - at an interior vertex, the \f$N\f$-th power mean of the faces' directions projected on the
 ///   tangent plane, weighted by the corner angles (one of the \f$N\f$ directions; the others
 ///   are it turned by multiples of \f$2\pi/N\f$ about the normal);
-/// - at a boundary vertex, the direction of the face of its outgoing border edge (the border
-///   edge that leaves it in the loop's order), projected: a field along or across the boundary
-///   on the boundary faces stays exactly so at the boundary vertices, against the projected
-///   border edge;
+/// - at a boundary vertex, the field of the face of its outgoing border edge (the border edge
+///   that leaves it in the loop's order), at the same angle to that edge projected on the
+///   tangent plane as in the face: a field along or across the boundary on the boundary faces
+///   stays exactly so at the boundary vertices;
 /// - at a singularity of the field (read back with `matching`, a non-zero index), the zero
 ///   vector: no direction is defined there.
 ///
@@ -59,8 +59,8 @@ std::size_t vertex_field_from_face_field(const TriangleMesh& tm, int N, const Fa
     const Vector x = get(fvec, m.faces[f]);
     d[f] = {{CGAL::to_double(x[0]), CGAL::to_double(x[1]), CGAL::to_double(x[2])}};
   }
-  const internal::Embedded_vertex_frames frames(
-      m, choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm)));
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
+  const internal::Embedded_vertex_frames frames(m, vpm);
   std::vector<char> singular(nv, 0);
   const Field_topology<TriangleMesh> ft = field_singularities(tm, face_angles, parameters::symmetry_order(N).matching(matching));
   std::size_t count = 0;
@@ -77,10 +77,13 @@ std::size_t vertex_field_from_face_field(const TriangleMesh& tm, int N, const Fa
       // the interior halfedge of the border edge that leaves v
       int h0 = m.vertex_out[v], h = h0;
       do { if(m.face[std::size_t(h)] >= 0 && m.face[std::size_t(h ^ 1)] < 0) break; h = m.ccw_out(h); } while(h != h0);
+      // the face's angle with that edge, kept against the edge projected on the tangent plane
       const std::size_t f = std::size_t(m.face[std::size_t(h)]);
-      c = F::dot(d[f], frames.e1[v]);
-      s = F::dot(d[f], frames.e2[v]);
-      a = std::atan2(s, c);
+      const auto p = get(vpm, m.vertices[v]), q = get(vpm, m.vertices[std::size_t(m.target[std::size_t(h)])]);
+      const F::V3 ev{{CGAL::to_double(q.x() - p.x()), CGAL::to_double(q.y() - p.y()), CGAL::to_double(q.z() - p.z())}};
+      c = F::dot(ev, frames.e1[v]);
+      s = F::dot(ev, frames.e2[v]);
+      a = std::atan2(s, c) + double(get(face_angles, m.faces[f])) - internal::halfedge_direction(m, h);
       defined = c != 0 || s != 0;
     } else if(defined) {
       const int h0 = m.vertex_out[v];
