@@ -906,10 +906,10 @@ def boundary_deviation(verts, faces, border, vectors, N, mode):
 
 
 def boundary_vertex_deviation(verts, faces, vectors, N, mode):
-    """At every boundary vertex: the angle between its --field-out vector and its outgoing border
-    edge (the border edge its face traverses from it) projected on the vertex's tangent plane
-    (normal: the area-weighted mean of its faces' normals), or that edge's normal in the plane
-    ("orthogonal"), modulo 2 pi / N (pi / N for odd N); and the largest | 1 - |v| | there."""
+    """At every boundary vertex: the angle between its --field-out vector and the nearer of its two
+    border edges projected on the vertex's tangent plane (normal: the area-weighted mean of its
+    faces' normals), or that edge's normal in the plane ("orthogonal"), modulo 2 pi / N (pi / N
+    for odd N); and the largest | 1 - |v| | there."""
     normal, count = {}, {}
     for f in faces:
         a, b, cc = (verts[i] for i in f)
@@ -920,23 +920,25 @@ def boundary_vertex_deviation(verts, faces, vectors, N, mode):
         for k in range(3):
             key = (min(f[k], f[(k + 1) % 3]), max(f[k], f[(k + 1) % 3]))
             count[key] = count.get(key, 0) + 1
-    worst = length = 0.0
+    per_vertex = {}
     for f in faces:
         for k in range(3):
             a, b = f[k], f[(k + 1) % 3]
             if count[(min(a, b), max(a, b))] != 1:
                 continue
-            n = normal[a]
-            nn = vnorm(n)
-            n = (n[0] / nn, n[1] / nn, n[2] / nn)
-            e = vsub(verts[b], verts[a])
-            d = vdot(e, n)
-            e = (e[0] - d * n[0], e[1] - d * n[1], e[2] - d * n[2])
-            if mode == "orthogonal":
-                e = vcross(n, e)
-            worst = max(worst, line_angle_error(vectors[a], e, N if N % 2 == 0 else 2 * N))
-            length = max(length, abs(1 - vnorm(vectors[a])))
-    return worst, length
+            for v in (a, b):   # the edge leaves a and arrives at b
+                n = normal[v]
+                nn = vnorm(n)
+                n = (n[0] / nn, n[1] / nn, n[2] / nn)
+                e = vsub(verts[b], verts[a])
+                d = vdot(e, n)
+                e = (e[0] - d * n[0], e[1] - d * n[1], e[2] - d * n[2])
+                if mode == "orthogonal":
+                    e = vcross(n, e)
+                err = line_angle_error(vectors[v], e, N if N % 2 == 0 else 2 * N)
+                per_vertex[v] = min(err, per_vertex.get(v, err))
+    length = max((abs(1 - vnorm(vectors[v])) for v in per_vertex), default=0.0)
+    return max(per_vertex.values(), default=0.0), length
 
 
 def test_shared_rosy(smdf, c, meshes, tmp):

@@ -212,11 +212,7 @@ Field_transfer_status transfer_face_field_to_input(const TriangleMesh& tm, const
   std::vector<std::size_t> home(m.number_of_faces());
   std::vector<std::array<double, 3>> xrep(m.number_of_faces(), centroid);
   for(std::size_t f = 0; f < m.number_of_faces(); ++f) {
-    int hb = -1;   // the face's border halfedge
-    {
-      int h = m.face_halfedge[f];
-      for(int k = 0; k < 3; ++k, h = m.next[std::size_t(h)]) if(m.face[std::size_t(h ^ 1)] < 0) { hb = h; break; }
-    }
+    const int hb = internal::followed_border_halfedge(m, int(f));   // the face's border halfedge, if any
     std::size_t best = 0;
     double best_depth = -1e300;
     for(std::size_t i : it.pieces_of_input_face(int(f))) {

@@ -136,7 +136,8 @@ struct Face_map_axes
 /// `Trivial_connection` on an `edge_length_map` produce them) to unit 3D vectors in the
 /// embedded faces, by the linear map from each metric triangle to the embedded one (the identity
 /// when the metric is the embedding's). A face with a border edge is mapped instead by the
-/// similarity that keeps the direction of its (first) border edge: directions along or across
+/// similarity that keeps the direction of its border edge (of two, the one that ends at
+/// their common corner): directions along or across
 /// the boundary stay so (the fields of boundary_aligned_rosy_field()), and the N directions
 /// stay \f$2\pi/N\f$ apart in 3D, which the linear map of a triangle that is not similar to
 /// its image does not keep. Named parameters: `edge_length_map` or `intrinsic_mesh` (the metric
@@ -158,9 +159,8 @@ void field_angles_to_vectors(const TriangleMesh& tm, const FaceAngleMap& angles,
   for(std::size_t f = 0; f < m.number_of_faces(); ++f) {
     const double beta = double(get(angles, m.faces[f]));
     std::array<double, 3> v = internal::embedded_direction(frames[f], beta);
-    int h = m.face_halfedge[f];
-    for(int k = 0; k < 3 && m.face[std::size_t(h ^ 1)] >= 0; ++k) h = m.next[std::size_t(h)];
-    if(m.face[std::size_t(h ^ 1)] < 0) {
+    const int h = internal::followed_border_halfedge(m, int(f));
+    if(h >= 0) {
       // the unit border edge e and n x e in the face plane, turned by the angle to the edge
       const internal::Face_map_axes axes(frames[f], h == m.face_halfedge[f] ? 0 : h == m.next[std::size_t(m.face_halfedge[f])] ? 1 : 2);
       const double a = beta - internal::halfedge_direction(m, h);

@@ -30,10 +30,11 @@ namespace Surface_mesh_direction_fields {
 /// - at an interior vertex, the \f$N\f$-th power mean of the faces' directions projected on the
 ///   tangent plane, weighted by the corner angles (one of the \f$N\f$ directions; the others
 ///   are it turned by multiples of \f$2\pi/N\f$ about the normal);
-/// - at a boundary vertex, the field of the face of its outgoing border edge (the border edge
-///   that leaves it in the loop's order), at the same angle to that edge projected on the
-///   tangent plane as in the face: a field along or across the boundary on the boundary faces
-///   stays exactly so at the boundary vertices;
+/// - at a boundary vertex, the field of the face of one of its two border edges, at the same
+///   angle to that edge projected on the tangent plane as in the face: a field along or across
+///   the boundary on the boundary faces stays exactly so at the boundary vertices. The edge is
+///   one its face's field is drawn against by field_angles_to_vectors() (a face's only border
+///   edge; of two, the one that ends at their common corner), the outgoing one if it is;
 /// - at a singularity of the field (read back with `matching`, a non-zero index), the zero
 ///   vector: no direction is defined there.
 ///
@@ -74,12 +75,18 @@ std::size_t vertex_field_from_face_field(const TriangleMesh& tm, int N, const Fa
     double a = 0, c = 0, s = 0;
     bool defined = !singular[v] && !m.is_isolated(int(v));
     if(defined && m.is_boundary_vertex(int(v))) {
-      // the interior halfedge of the border edge that leaves v
-      int h0 = m.vertex_out[v], h = h0;
-      do { if(m.face[std::size_t(h)] >= 0 && m.face[std::size_t(h ^ 1)] < 0) break; h = m.ccw_out(h); } while(h != h0);
+      // a border edge at v that its face's field is drawn against: the outgoing one, else the
+      // incoming one (one of them is, internal::followed_border_halfedge())
+      const int out = m.vertex_out[v];   // leaves v, its opposite on the border
+      int b = out;                       // counterclockwise to the border halfedge leaving v
+      for(std::size_t guard = 0; m.face[std::size_t(b)] >= 0 && guard < m.number_of_halfedges(); ++guard) b = m.ccw_out(b);
+      const int in = b ^ 1;              // arrives at v, its opposite on the border
+      int h = internal::followed_border_halfedge(m, m.face[std::size_t(out)]) == out ? out : in;
+      if(internal::followed_border_halfedge(m, m.face[std::size_t(h)]) != h)
+        h = internal::followed_border_halfedge(m, m.face[std::size_t(out)]);   // (a lone triangle)
       // the face's angle with that edge, kept against the edge projected on the tangent plane
       const std::size_t f = std::size_t(m.face[std::size_t(h)]);
-      const auto p = get(vpm, m.vertices[v]), q = get(vpm, m.vertices[std::size_t(m.target[std::size_t(h)])]);
+      const auto p = get(vpm, m.vertices[std::size_t(m.source(h))]), q = get(vpm, m.vertices[std::size_t(m.target[std::size_t(h)])]);
       const F::V3 ev{{CGAL::to_double(q.x() - p.x()), CGAL::to_double(q.y() - p.y()), CGAL::to_double(q.z() - p.z())}};
       c = F::dot(ev, frames.e1[v]);
       s = F::dot(ev, frames.e2[v]);

@@ -52,6 +52,24 @@ double halfedge_direction(const Mesh_arrays<TM>& m, int h)
   return t1 + CGAL_PI - m.angle[m.next[h1]];
 }
 
+// The border edge a face's field is drawn against (its interior halfedge in face f), -1 if f has
+// none: the only one, or of two (a corner face, whose tip is on no other face) the one that
+// ends at the tip (its next halfedge is the other). Around every boundary vertex one of
+// its two border edges is then the one of its face (a strip of corner faces included).
+template <typename TM>
+int followed_border_halfedge(const Mesh_arrays<TM>& m, int f)
+{
+  const int h0 = m.face_halfedge[std::size_t(f)];
+  int first = -1;
+  for(int i = 0, h = h0; i < 3; ++i, h = m.next[std::size_t(h)]) {
+    if(m.face[std::size_t(h ^ 1)] >= 0) continue;
+    if(first < 0) first = h;
+    if(m.face[std::size_t(m.next[std::size_t(h)] ^ 1)] < 0 && m.face[std::size_t(m.next[std::size_t(m.next[std::size_t(h)])] ^ 1)] >= 0)
+      return h;
+  }
+  return first;
+}
+
 // Change of a tangent direction's angle when it is carried by the Levi-Civita connection
 // across the edge of h, from face(opposite(h)) into face(h): alpha_j = alpha_i + increment.
 template <typename TM>
