@@ -370,6 +370,26 @@ void automatic_singularities_tests(const std::string& dir)
 }
 
 
+// Every shared mesh that is manifold, oriented, of one component, without degenerate faces and
+// of at most 120k faces, closed or open as asked, read and handed to f(entry, mesh).
+template <typename F>
+void for_each_shared_mesh(const std::string& dir, bool open, const F& f)
+{
+  for(const auto& e : smdf_test::read_manifest(dir)) {
+    if(e.manifold != "yes" || e.pure_tri != "yes" || e.orientable != "yes" || e.components != 1 ||
+       (e.boundary_loops > 0) != open || e.degenerate_faces > 0 || e.F > 120000)
+      continue;
+    Surface_mesh mesh;
+    try {
+      SMDF::read_triangle_mesh(dir + "/meshes/" + e.file, mesh);
+    } catch(const std::exception& x) {
+      std::cout << e.file << ": not read (" << x.what() << ")" << std::endl;
+      continue;
+    }
+    f(e, mesh);
+  }
+}
+
 // Cross fields along the boundary of an open mesh of genus g, on its own flat metric (flips
 // allowed), carried to the input faces. Every boundary loop turns by +2 pi (the first) or
 // -2 pi (the others) at four corners of +-pi/2 spread along it, 8g random interior cones of
@@ -422,10 +442,9 @@ bool boundary_aligned_on_input(const Surface_mesh& mesh, int genus, const std::s
     auto angles = carrier.add_property_map<Surface_mesh::Face_index, double>("f:a", 0.).first;
     auto matching = carrier.add_property_map<Surface_mesh::Edge_index, int>("e:m", 0).first;
     const auto np = SMDF::parameters::edge_length_map(flat).orthogonal_to_boundary(orthogonal);
-    const SMDF::Boundary_aligned_field_status st = SMDF::boundary_aligned_field_of_metric(carrier, 4, angles, np);
+    const SMDF::Boundary_aligned_field_status st = SMDF::boundary_aligned_field_of_metric(carrier, 4, angles, matching, np);
     SMDF_CHECK_MSG(st.success, what << ": " << st.message);
     if(!st.success) continue;
-    SMDF::principal_matching(carrier, angles, matching, SMDF::parameters::symmetry_order(4).edge_length_map(flat));
     auto in_angles = get(CGAL::dynamic_face_property_t<double>(), mesh);
     auto in_matching = get(CGAL::dynamic_edge_property_t<int>(), mesh);
     if(cm.triangulation_changed) {
@@ -455,22 +474,12 @@ void boundary_aligned_tests(const std::string& dir, std::mt19937& rng)
 {
   if(dir.empty()) return;
   std::size_t meshes = 0, with_flips = 0, with_handles = 0;
-  for(const auto& e : smdf_test::read_manifest(dir)) {
-    if(e.manifold != "yes" || e.pure_tri != "yes" || e.orientable != "yes" || e.components != 1 || e.boundary_loops == 0 ||
-       e.degenerate_faces > 0 || e.F > 120000)
-      continue;
-    Surface_mesh mesh;
-    try {
-      SMDF::read_triangle_mesh(dir + "/meshes/" + e.file, mesh);
-    } catch(const std::exception& x) {
-      std::cout << e.file << ": not read (" << x.what() << ")" << std::endl;
-      continue;
-    }
+  for_each_shared_mesh(dir, true, [&](const smdf_test::Manifest_entry& e, const Surface_mesh& mesh) {
     ++meshes;
     const int genus = std::stoi(e.genus);
     if(boundary_aligned_on_input(mesh, genus, e.file, rng)) ++with_flips;
     with_handles += genus > 0 ? 1 : 0;
-  }
+  });
   std::cout << meshes << " open meshes, " << with_handles << " with handles, " << with_flips << " needed flips" << std::endl;
   SMDF_CHECK(meshes >= 4 && with_flips >= 1 && with_handles >= 1);
 }
@@ -490,22 +499,11 @@ int main()
   }
   const std::string dir = smdf_test::shared_data_dir();
   if(!dir.empty()) {
-    for(const auto& e : smdf_test::read_manifest(dir)) {
-      if(e.manifold != "yes" || e.pure_tri != "yes" || e.orientable != "yes" || e.components != 1 ||
-         e.boundary_loops != 0 || e.degenerate_faces > 0 || e.F > 120000)
-        continue;
-      Surface_mesh mesh;
-      try {
-        SMDF::read_triangle_mesh(dir + "/meshes/" + e.file, mesh);
-      } catch(const std::exception& x) {
-        std::cout << e.file << ": not read (" << x.what() << ")" << std::endl;
-        continue;
-      }
-      const int genus = std::stoi(e.genus);
-      if(genus > 10) continue;
+    for_each_shared_mesh(dir, false, [&](const smdf_test::Manifest_entry& e, const Surface_mesh& mesh) {
+      if(std::stoi(e.genus) > 10) return;
       run_mesh(mesh, e.file, 1, rng, false);
       run_mesh(mesh, e.file, 6, rng, false);
-    }
+    });
   }
   std::cout << runs << " metrics with flips, " << total_flips << " edges not in the input, " << total_crossings
             << " crossings, " << total_pieces << " pieces; largest distortion of a transferred cross field "

@@ -2259,10 +2259,11 @@ def test_sweep(smdf, c, shared):
     alone cannot satisfy Gauss-Bonnet). A run either succeeds, and then its face field and matching
     read back by smdf singularities on the input are exactly the prescribed cones (and fields along
     the boundary follow every boundary edge), or exits 3 with one line saying why. The counts are
-    printed. At least 70% of the runs must succeed (2026-12-05: 133 of 178; the others are
-    boundary-aligned fields whose double-cover metric the input triangulation cannot carry, a
-    punctured torus, a Ricci flow that does not converge and a degenerate input, each refused
-    with its reason); no run may end otherwise."""
+    printed. At least 95% of the runs must succeed (2026-12-05: 175 of 178; the others are the
+    cheese, whose near-degenerate faces fail the correspondence's own check, and Homer's cone of
+    index 2, whose holed Ricci flow does not converge, each refused with its reason); no run may
+    end otherwise. Fields along the boundary are also written per vertex (--field-out) and
+    checked at every boundary vertex."""
     rng = random.Random(2026)
     meshes = os.path.join(shared, "meshes")
     rows = []
@@ -2349,7 +2350,7 @@ def test_sweep(smdf, c, shared):
     print("sweep: %d runs, %d succeeded with an exact read-back, %d refused with a message" % (runs, ok, refused))
     for line in refusals:
         print("  refused: " + line)
-    c.check(runs > 0 and ok >= 0.70 * runs, "sweep: %d of %d runs succeed (at least 70%%)" % (ok, runs))
+    c.check(runs > 0 and ok >= 0.95 * runs, "sweep: %d of %d runs succeed (at least 95%%)" % (ok, runs))
 
 
 def main():

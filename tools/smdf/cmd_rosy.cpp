@@ -315,8 +315,10 @@ Json run_rosy(const Args& args)
       timings["compensation_s"] = clock.lap();
     } else {
       const SMDF::Boundary_aligned_field_status aligned = on_file(file, [&] {
-        return SMDF::boundary_aligned_field_of_metric(*carrier, N, angles, np.orthogonal_to_boundary(opt.boundary == ORTHOGONAL_BOUNDARY));
+        return SMDF::boundary_aligned_field_of_metric(*carrier, N, angles, matching,
+                                                      np.orthogonal_to_boundary(opt.boundary == ORTHOGONAL_BOUNDARY));
       });
+      have_matching = aligned.success;
       Json a = Json::object();
       a["max_boundary_deviation"] = aligned.max_boundary_deviation;
       a["rotation_compensation"] = aligned.rotation_compensation;

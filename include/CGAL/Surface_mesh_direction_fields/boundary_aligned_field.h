@@ -62,10 +62,12 @@ namespace internal {
 //   parallel field arrives with (modulo the line's period): it reaches that loop aligned.
 // Lagrange: rho = W C^T lambda, (C W C^T) lambda = c; the vertex block is the cotan Laplacian of
 // the interior edges (one vertex held), factored once, the others by a Schur complement of size
-// 2g + b - 1. beta receives the face angles; false (and a message) on numerical failure.
+// 2g + b - 1. beta receives the face angles, rho the rotations; false (and a message) on
+// numerical failure.
 template <typename TM>
 bool compensated_boundary_field(const Mesh_arrays<TM>& m, const Topology_arrays& topo, const std::vector<Generator_arrays>& generators,
-                                int N, bool orthogonal, std::vector<double>& beta, double& max_inconsistency, std::string& message)
+                                int N, bool orthogonal, std::vector<double>& beta, std::vector<double>& rho,
+                                double& max_inconsistency, std::string& message)
 {
   const std::size_t nv = m.number_of_vertices(), nf = m.number_of_faces(), ne = m.number_of_edges();
   const double period = 2 * CGAL_PI / N, line_period = N % 2 == 0 ? period : CGAL_PI / N;
@@ -179,7 +181,7 @@ bool compensated_boundary_field(const Mesh_arrays<TM>& m, const Topology_arrays&
   Eigen::VectorXd lv = Eigen::VectorXd::Zero(n);
   for(std::size_t i = 0; i < k; ++i) lv -= lx[Eigen::Index(i)] * X[i];
   auto lambda = [&](int v) { return col[std::size_t(v)] >= 0 ? lv[col[std::size_t(v)]] : 0.; };
-  std::vector<double> rho(ne, 0.);
+  rho.assign(ne, 0.);
   for(std::size_t e = 0; e < ne; ++e) {
     if(!interior(e)) continue;
     double r = lambda(m.source(int(2 * e))) - lambda(m.target[2 * e]);
@@ -277,7 +279,11 @@ double max_boundary_deviation(const TriangleMesh& tm, int N, const FaceAngleMap&
 /// this one; its compensation that is odd under the mirror is this rotation.
 ///
 /// `face_angles` receives the field in the face frames of the metric, like
-/// parallel_rosy_field(); its only singularities are the interior cones. Named parameters:
+/// parallel_rosy_field(), and `matching` its period jumps per edge (the convention of
+/// field_singularities(); 0 on border edges): the ones that make its rotation across every
+/// interior edge the rotation above. Read back with them, its only singularities are the
+/// interior cones (the principal matching may differ where the rotation exceeds
+/// \f$\pi/N\f$ across an edge, e.g. between small holes). Named parameters:
 /// `orthogonal_to_boundary` (`bool`, default `false`), `edge_length_map` (the flat metric) or
 /// `intrinsic_mesh`, and the index maps. The status (its `metric` left empty;
 /// `rotation_compensation` says whether the mesh has handles) fails with a message when the
@@ -285,8 +291,10 @@ double max_boundary_deviation(const TriangleMesh& tm, int N, const FaceAngleMap&
 /// corner that is no multiple of \f$2\pi/N\f$) or when its deviation from the boundary
 /// (max_boundary_deviation()) exceeds \f$10^{-6}\f$. Throws `Input_error` for closed meshes,
 /// several components and \f$N < 1\f$.
-template <typename TriangleMesh, typename FaceAngleMap, typename NamedParameters = parameters::Default_named_parameters>
+template <typename TriangleMesh, typename FaceAngleMap, typename EdgeMatchingMap,
+          typename NamedParameters = parameters::Default_named_parameters>
 Boundary_aligned_field_status boundary_aligned_field_of_metric(const TriangleMesh& tm, int N, FaceAngleMap face_angles,
+                                                               EdgeMatchingMap matching,
                                                                const NamedParameters& np = parameters::default_values())
 {
   if(N < 1) throw Input_error(Input_error::INVALID_ARGUMENT, "symmetry order N must be at least 1, got " + std::to_string(N));
@@ -299,11 +307,19 @@ Boundary_aligned_field_status boundary_aligned_field_of_metric(const TriangleMes
   if(topo.components.size() != 1 || topo.loops.empty())
     throw Input_error(Input_error::INVALID_ARGUMENT, "boundary_aligned_field_of_metric() needs a mesh of one component with a boundary");
   st.rotation_compensation = topo.components[0].genus() > 0;
-  std::vector<double> beta;
+  std::vector<double> beta, rho;
   double inconsistency = 0;
-  if(!internal::compensated_boundary_field(m, topo, im.generator_arrays(), N, st.orthogonal, beta, inconsistency, st.message))
+  if(!internal::compensated_boundary_field(m, topo, im.generator_arrays(), N, st.orthogonal, beta, rho, inconsistency, st.message))
     return st;
   for(std::size_t f = 0; f < beta.size(); ++f) put(face_angles, m.faces[f], beta[f]);
+  const double period = 2 * CGAL_PI / N;
+  for(std::size_t e = 0; e < m.number_of_edges(); ++e) {   // rotation wrap(raw) + k period = rho_e
+    const int h = int(2 * e);
+    if(m.face[std::size_t(h)] < 0 || m.face[std::size_t(h ^ 1)] < 0) { put(matching, m.edges[e], 0); continue; }
+    const double raw = beta[std::size_t(m.face[std::size_t(h)])] - beta[std::size_t(m.face[std::size_t(h ^ 1)])] -
+                       internal::transport_increment(m, h);
+    put(matching, m.edges[e], int(std::lround((rho[e] - internal::wrap_angle(raw)) / period)));
+  }
   if(!(inconsistency <= 1e-6)) {
     std::ostringstream os;
     os.precision(3);
@@ -343,29 +359,27 @@ Boundary_aligned_field_status boundary_aligned_rosy_field(const TriangleMesh& tm
                                                           OutputEdgeLengthMap output_lengths, FaceAngleMap face_angles,
                                                           const NamedParameters& np = parameters::default_values())
 {
-  if(N < 1) throw Input_error(Input_error::INVALID_ARGUMENT, "symmetry order N must be at least 1, got " + std::to_string(N));
-  Boundary_aligned_field_status st;
-  st.N = N;
-  st.orthogonal = parameters::choose_parameter(parameters::get_parameter(np, internal_np::orthogonal_to_boundary), false);
+  const bool orthogonal = parameters::choose_parameter(parameters::get_parameter(np, internal_np::orthogonal_to_boundary), false);
   const Intrinsic_mesh<TriangleMesh> im = internal::get_intrinsic_mesh(tm, np);
   const internal::Mesh_arrays<TriangleMesh>& m = im.arrays();
-  const internal::Topology_arrays& topo = im.topology_arrays();
-  if(topo.components.size() != 1 || topo.loops.empty())
-    throw Input_error(Input_error::INVALID_ARGUMENT, "boundary_aligned_rosy_field() needs a mesh of one component with a boundary");
+  if(im.topology_arrays().components.size() != 1 || im.topology_arrays().loops.empty() || N < 1)
+    throw Input_error(Input_error::INVALID_ARGUMENT, "boundary_aligned_rosy_field() needs a mesh of one component with a boundary "
+                                                     "and N >= 1 (N = " + std::to_string(N) + ")");
   auto input_length = get(CGAL::dynamic_edge_property_t<double>(), tm);   // the input metric, as given
   for(std::size_t e = 0; e < m.number_of_edges(); ++e) put(input_length, m.edges[e], m.length[e]);
-  st.metric = compute_cone_metric(tm, target_curvature, output_lengths,
-                                  parameters::edge_length_map(input_length).intrinsic_edge_flips(false));
-  if(!st.metric.converged) {
-    st.message = "no flat cone metric with a geodesic boundary on the mesh's triangulation: " + st.metric.message;
-    return st;
+  const Cone_metric_status metric = compute_cone_metric(tm, target_curvature, output_lengths,
+                                                        parameters::edge_length_map(input_length).intrinsic_edge_flips(false));
+  Boundary_aligned_field_status st;
+  if(metric.converged) {
+    auto matching = get(CGAL::dynamic_edge_property_t<int>(), tm);
+    st = boundary_aligned_field_of_metric(tm, N, face_angles, matching,
+                                          parameters::edge_length_map(output_lengths).orthogonal_to_boundary(orthogonal));
+  } else {
+    st.N = N;
+    st.orthogonal = orthogonal;
+    st.message = "no flat cone metric with a geodesic boundary on the mesh's triangulation: " + metric.message;
   }
-  const Boundary_aligned_field_status fs =
-      boundary_aligned_field_of_metric(tm, N, face_angles, parameters::edge_length_map(output_lengths).orthogonal_to_boundary(st.orthogonal));
-  st.success = fs.success;
-  st.message = fs.message;
-  st.rotation_compensation = fs.rotation_compensation;
-  st.max_boundary_deviation = fs.max_boundary_deviation;
+  st.metric = metric;
   return st;
 }
 
