@@ -37,6 +37,7 @@
 #include <CGAL/Surface_mesh_direction_fields/IO/read_triangle_mesh.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <chrono>
 #include <map>
 #include <set>
@@ -481,7 +482,9 @@ void boundary_aligned_tests(const std::string& dir, std::mt19937& rng)
     with_handles += genus > 0 ? 1 : 0;
   });
   std::cout << meshes << " open meshes, " << with_handles << " with handles, " << with_flips << " needed flips" << std::endl;
-  SMDF_CHECK(meshes >= 4 && with_flips >= 1 && with_handles >= 1);
+  // (the sanitizer run's reduced mesh set, at most 15k faces, has no open mesh that needs flips)
+  const bool reduced = std::getenv("SMDF_TEST_MAX_FACES") != nullptr;
+  SMDF_CHECK(meshes >= 4 && with_handles >= 1 && (with_flips >= 1 || reduced));
 }
 
 } // namespace

@@ -137,6 +137,19 @@ public:
   std::vector<std::size_t> pieces_of_input_face(int f) const { return range(input_first_, input_list_, f); }
   /// the pieces in intrinsic face `f` (indices into `common_subdivision()`)
   std::vector<std::size_t> pieces_of_intrinsic_face(int f) const { return range(intrinsic_first_, intrinsic_list_, f); }
+  /// A range of piece indices, viewed in place (valid while the triangulation lives).
+  struct Piece_range
+  {
+    const std::size_t* first = nullptr;
+    const std::size_t* last = nullptr;
+    const std::size_t* begin() const { return first; }
+    const std::size_t* end() const { return last; }
+    std::size_t size() const { return std::size_t(last - first); }
+  };
+  /// as pieces_of_input_face(), without a copy (for loops over every face)
+  Piece_range input_face_pieces(int f) const { return view(input_first_, input_list_, f); }
+  /// as pieces_of_intrinsic_face(), without a copy
+  Piece_range intrinsic_face_pieces(int f) const { return view(intrinsic_first_, intrinsic_list_, f); }
   /// number of points where an input edge crosses an intrinsic edge
   std::size_t number_of_crossings() const { return crossings_; }
   /// largest error of the correspondence's own check: the corners of every piece mapped by its
@@ -206,6 +219,14 @@ private:
       list[fill[std::size_t(input ? pieces_[i].input_face : pieces_[i].intrinsic_face)]++] = i;
   }
 
+  static Piece_range view(const std::vector<std::size_t>& first, const std::vector<std::size_t>& list, int f)
+  {
+    Piece_range r;
+    if(f < 0 || std::size_t(f) + 1 >= first.size()) return r;
+    r.first = list.data() + first[std::size_t(f)];
+    r.last = list.data() + first[std::size_t(f) + 1];
+    return r;
+  }
   static std::vector<std::size_t> range(const std::vector<std::size_t>& first, const std::vector<std::size_t>& list, int f)
   {
     if(f < 0 || std::size_t(f) + 1 >= first.size()) return {};

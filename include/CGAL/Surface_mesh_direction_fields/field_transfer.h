@@ -149,13 +149,19 @@ Field_transfer_status transfer_face_field_to_input(const TriangleMesh& tm, const
   const double period = 2 * CGAL_PI / N;
   Field_transfer_status st;
 
+  // the layouts of both triangulations' faces, once (every piece on a path needs its two)
+  std::vector<std::array<Point_2, 3>> intrinsic_layouts(it.number_of_faces()), input_layouts(m.number_of_faces());
+  for(std::size_t f = 0; f < it.number_of_faces(); ++f) {
+    const int g0 = it.halfedge(int(f)), g1 = it.next(g0), g2 = it.next(g1);
+    intrinsic_layouts[f] = lay_out_triangle(it.length(g0 >> 1), it.length(g1 >> 1), it.length(g2 >> 1));
+    input_layouts[f] = internal::canonical_layout(m, int(f));
+  }
   auto directions = [&](std::size_t i) {
     internal::Piece_directions d;
     d.to_input = it.piece_map(i, true);
     d.from_input = it.piece_map(i, false);
-    const int g0 = it.halfedge(pieces[i].intrinsic_face), g1 = it.next(g0), g2 = it.next(g1);
-    d.intrinsic_layout = lay_out_triangle(it.length(g0 >> 1), it.length(g1 >> 1), it.length(g2 >> 1));
-    d.input_layout = internal::canonical_layout(m, pieces[i].input_face);
+    d.intrinsic_layout = intrinsic_layouts[std::size_t(pieces[i].intrinsic_face)];
+    d.input_layout = input_layouts[std::size_t(pieces[i].input_face)];
     return d;
   };
   // the branch J of the intrinsic field in piece i, at input point b
@@ -168,9 +174,10 @@ Field_transfer_status transfer_face_field_to_input(const TriangleMesh& tm, const
   // intrinsic face too) takes the affine map between the two triangles, as the package maps a
   // metric's face directions to the embedding everywhere else (field_angles_to_vectors()): it
   // keeps directions along the face's edges along them.
-  auto whole_face = [&](std::size_t i) {
-    return it.pieces_of_input_face(pieces[i].input_face).size() == 1 && it.pieces_of_intrinsic_face(pieces[i].intrinsic_face).size() == 1;
-  };
+  std::vector<char> whole(pieces.size(), 0);   // computed once: the test runs for every face and edge
+  for(std::size_t i = 0; i < pieces.size(); ++i)
+    whole[i] = it.input_face_pieces(pieces[i].input_face).size() == 1 && it.intrinsic_face_pieces(pieces[i].intrinsic_face).size() == 1;
+  auto whole_face = [&](std::size_t i) { return whole[i] != 0; };
   auto affine_angle = [&](std::size_t i, const internal::Piece_directions& d, double angle) {
     using internal::barycentric_direction;
     const auto& P = pieces[i];
@@ -215,7 +222,7 @@ Field_transfer_status transfer_face_field_to_input(const TriangleMesh& tm, const
     const int hb = internal::followed_border_halfedge(m, int(f));   // the face's border halfedge, if any
     std::size_t best = 0;
     double best_depth = -1e300;
-    for(std::size_t i : it.pieces_of_input_face(int(f))) {
+    for(std::size_t i : it.input_face_pieces(int(f))) {
       const auto& P = pieces[i];
       if(hb >= 0) {
         if(std::find(P.input_sides.begin(), P.input_sides.end(), hb) != P.input_sides.end()) { best = i; best_depth = 0; }
@@ -257,57 +264,96 @@ Field_transfer_status transfer_face_field_to_input(const TriangleMesh& tm, const
     put(input_angles, m.faces[f], beta[f]);
   }
 
+  // Directions of intrinsic halfedges in their face frames (counterclockwise from
+  // it.halfedge(face)) and the Levi-Civita transport across them, as internal::halfedge_direction()
+  // and internal::transport_increment() for the input.
+  auto intrinsic_corner = [&](int g) {   // angle of face(g) at source(g)
+    const int g1 = it.next(g), g2 = it.next(g1);
+    return corner_angle(it.length(g1 >> 1), it.length(g >> 1), it.length(g2 >> 1));
+  };
+  auto intrinsic_direction = [&](int g) {
+    const int g0 = it.halfedge(it.face(g)), g1 = it.next(g0);
+    if(g == g0) return 0.;
+    const double t1 = CGAL_PI - intrinsic_corner(g1);
+    return g == g1 ? t1 : t1 + CGAL_PI - intrinsic_corner(it.next(g1));
+  };
+  auto intrinsic_transport = [&](int g) { return intrinsic_direction(g) + CGAL_PI - intrinsic_direction(g ^ 1); };
+
   // 2. the matching of every interior input edge: a path of pieces from one centroid to the other
   struct Side { long a, b; std::size_t piece; int index; };
   std::vector<Side> sides;
-  std::vector<std::size_t> local;
+  std::vector<std::size_t> local, queue, path;   // reused from edge to edge
+  std::vector<int> parent, parent_side;
   for(std::size_t e = 0; e < m.number_of_edges(); ++e) {
     const int h = int(2 * e);
     const int fl = m.face[std::size_t(h)], fr = m.face[std::size_t(h ^ 1)];
     if(fl < 0 || fr < 0) { put(input_matching, m.edges[e], 0); continue; }
-    local = it.pieces_of_input_face(fr);
-    const std::size_t nr = local.size();
-    for(std::size_t i : it.pieces_of_input_face(fl)) local.push_back(i);
-    sides.clear();
-    for(std::size_t k = 0; k < local.size(); ++k) {
-      const auto& ids = pieces[local[k]].corner_ids;
-      for(std::size_t s = 0; s < ids.size(); ++s) {
-        const long a = ids[s], b = ids[(s + 1) % ids.size()];
-        sides.push_back({(std::min)(a, b), (std::max)(a, b), k, int(s)});
-      }
-    }
-    std::sort(sides.begin(), sides.end(), [](const Side& x, const Side& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
-    // breadth-first search from the home piece of fr to that of fl
-    std::vector<int> parent(local.size(), -1), parent_side(local.size(), -1);
-    std::size_t start = 0, goal = 0;
-    for(std::size_t k = 0; k < local.size(); ++k) {
-      if(k < nr && local[k] == home[std::size_t(fr)]) start = k;
-      if(k >= nr && local[k] == home[std::size_t(fl)]) goal = k;
-    }
-    std::vector<std::size_t> queue(1, start);
-    parent[start] = int(start);
-    for(std::size_t qi = 0; qi < queue.size() && parent[goal] < 0; ++qi) {
-      const std::size_t k = queue[qi];
-      const auto& ids = pieces[local[k]].corner_ids;
-      for(std::size_t s = 0; s < ids.size(); ++s) {
-        const long a = (std::min)(ids[s], ids[(s + 1) % ids.size()]), b = (std::max)(ids[s], ids[(s + 1) % ids.size()]);
-        auto it2 = std::lower_bound(sides.begin(), sides.end(), Side{a, b, 0, 0},
-                                    [](const Side& x, const Side& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
-        for(; it2 != sides.end() && it2->a == a && it2->b == b; ++it2) {
-          if(it2->piece == k || parent[it2->piece] >= 0) continue;
-          parent[it2->piece] = int(k);
-          parent_side[it2->piece] = int(s);
-          queue.push_back(it2->piece);
+    // two whole faces (one piece each in both triangulations) meet along an edge of both: the
+    // path is their two pieces (most edges, away from the flips: no search)
+    const std::size_t A0 = home[std::size_t(fr)], B0 = home[std::size_t(fl)];
+    if(whole[A0] && whole[B0]) {
+      // each face's map keeps the shared edge's line: the input rotation is the intrinsic one
+      // plus the turns of the two maps relative to that edge (as face_field_in_embedding())
+      const auto& sides_A = pieces[A0].input_sides;
+      const int gA = pieces[A0].intrinsic_sides[std::size_t(std::find(sides_A.begin(), sides_A.end(), h ^ 1) - sides_A.begin())];
+      const int gB = gA ^ 1;   // in fl's intrinsic face
+      const double bl = intrinsic_angles[std::size_t(it.face(gB))], br = intrinsic_angles[std::size_t(it.face(gA))];
+      const double el = beta[std::size_t(fl)], er = beta[std::size_t(fr)];
+      const int k = intrinsic_matching[std::size_t(gB >> 1)];   // for the intrinsic halfedge 2e'
+      const double rotation = (gB & 1) ? -(internal::wrap_angle(br - bl - intrinsic_transport(gA)) + period * k)
+                                       : internal::wrap_angle(bl - br - intrinsic_transport(gB)) + period * k;
+      const double tl = internal::wrap_angle((el - internal::halfedge_direction(m, h)) - (bl - intrinsic_direction(gB)));
+      const double tr = internal::wrap_angle((er - internal::halfedge_direction(m, h ^ 1)) - (br - intrinsic_direction(gA)));
+      const double principal = internal::wrap_angle(el - er - internal::transport_increment(m, h));
+      put(input_matching, m.edges[e], int(std::lround((rotation + tl - tr - principal) / period)));
+      continue;
+    } else {
+      const auto rr = it.input_face_pieces(fr), rl = it.input_face_pieces(fl);
+      local.assign(rr.begin(), rr.end());
+      const std::size_t nr = local.size();
+      local.insert(local.end(), rl.begin(), rl.end());
+      sides.clear();
+      for(std::size_t k = 0; k < local.size(); ++k) {
+        const auto& ids = pieces[local[k]].corner_ids;
+        for(std::size_t s = 0; s < ids.size(); ++s) {
+          const long a = ids[s], b = ids[(s + 1) % ids.size()];
+          sides.push_back({(std::min)(a, b), (std::max)(a, b), k, int(s)});
         }
       }
+      std::sort(sides.begin(), sides.end(), [](const Side& x, const Side& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
+      // breadth-first search from the home piece of fr to that of fl
+      parent.assign(local.size(), -1);
+      parent_side.assign(local.size(), -1);
+      std::size_t start = 0, goal = 0;
+      for(std::size_t k = 0; k < local.size(); ++k) {
+        if(k < nr && local[k] == A0) start = k;
+        if(k >= nr && local[k] == B0) goal = k;
+      }
+      queue.assign(1, start);
+      parent[start] = int(start);
+      for(std::size_t qi = 0; qi < queue.size() && parent[goal] < 0; ++qi) {
+        const std::size_t k = queue[qi];
+        const auto& ids = pieces[local[k]].corner_ids;
+        for(std::size_t s = 0; s < ids.size(); ++s) {
+          const long a = (std::min)(ids[s], ids[(s + 1) % ids.size()]), b = (std::max)(ids[s], ids[(s + 1) % ids.size()]);
+          auto it2 = std::lower_bound(sides.begin(), sides.end(), Side{a, b, 0, 0},
+                                      [](const Side& x, const Side& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
+          for(; it2 != sides.end() && it2->a == a && it2->b == b; ++it2) {
+            if(it2->piece == k || parent[it2->piece] >= 0) continue;
+            parent[it2->piece] = int(k);
+            parent_side[it2->piece] = int(s);
+            queue.push_back(it2->piece);
+          }
+        }
+      }
+      if(parent[goal] < 0) {
+        st.message = "no path of pieces across input edge " + std::to_string(e);
+        return st;
+      }
+      path.assign(1, goal);
+      while(path.back() != start) path.push_back(std::size_t(parent[path.back()]));
+      std::reverse(path.begin(), path.end());
     }
-    if(parent[goal] < 0) {
-      st.message = "no path of pieces across input edge " + std::to_string(e);
-      return st;
-    }
-    std::vector<std::size_t> path(1, goal);
-    while(path.back() != start) path.push_back(std::size_t(parent[path.back()]));
-    std::reverse(path.begin(), path.end());
     // follow the field along the path: a, the accumulated angle (fr's frame, then fl's)
     const double inc = internal::transport_increment(m, h);   // fr's frame -> fl's frame
     int J = 0;
@@ -427,7 +473,7 @@ std::vector<double> input_vertex_frame_angles(const TriangleMesh& tm, const Intr
     }
     if(std::isnan(a)) {
       // else its first segment, a side of a piece of face(k) from the corner at v
-      for(std::size_t i : it.pieces_of_input_face(m.face[std::size_t(k)])) {
+      for(std::size_t i : it.input_face_pieces(m.face[std::size_t(k)])) {
         const auto& P = pieces[i];
         for(std::size_t s = 0; s < P.corner_ids.size(); ++s) {
           if(P.input_sides[s] != k || P.corner_ids[s] != long(v)) continue;
