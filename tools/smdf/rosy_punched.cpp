@@ -6,6 +6,7 @@
 
 #include "rosy_inputs.h"
 
+#include <CGAL/Surface_mesh_direction_fields/boundary_aligned_field.h>
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/field_singularities.h>
 #include <CGAL/Surface_mesh_direction_fields/field_transfer.h>
@@ -152,8 +153,10 @@ Json run_rosy_punched(const Args& args, const std::string& file, Mesh& mesh, int
   // a field that follows the boundary: turned as a whole onto the first boundary edge, in the
   // metric (the transfer keeps angles with border edges)
   if(open && mode != FREE_BOUNDARY) {
-    halfedge_descriptor hb;
-    for(halfedge_descriptor h : halfedges(*carrier)) if(is_border(h, *carrier)) { hb = opposite(h, *carrier); break; }
+    halfedge_descriptor hb;   // on the input's boundary, not on the ring of a hole
+    for(halfedge_descriptor h : halfedges(*carrier))
+      if(is_border(h, *carrier) && is_border(vertex_descriptor(source(h, *carrier).idx()), mesh) &&
+         is_border(vertex_descriptor(target(h, *carrier).idx()), mesh)) { hb = opposite(h, *carrier); break; }
     const face_descriptor fb = face(hb, *carrier);
     auto fvec = get(CGAL::dynamic_face_property_t<K::Vector_3>(), *carrier);
     SMDF::field_angles_to_vectors(*carrier, angles, fvec, SMDF::parameters::edge_length_map(flat));
@@ -238,16 +241,8 @@ Json run_rosy_punched(const Args& args, const std::string& file, Mesh& mesh, int
   out["found"] = found_list(found);
   if(open && mode != FREE_BOUNDARY) {
     // the boundary faces along their edges (mod 2 pi / N; pi / N for odd N)
-    double worst = 0;
-    const double line_period = N % 2 == 0 ? 2 * CGAL_PI / N : CGAL_PI / N;
-    SMDF::field_angles_to_vectors(mesh, in_angles, vectors);
-    for(halfedge_descriptor h : halfedges(mesh)) {
-      if(!is_border(opposite(h, mesh), mesh)) continue;
-      const face_descriptor f = face(h, mesh);
-      const K::Vector_3 n = face_normal(mesh, f), e = mesh.point(target(h, mesh)) - mesh.point(source(h, mesh)), v = vectors[f];
-      double a = std::atan2(CGAL::cross_product(e, v) * n, e * v) - (mode == ORTHOGONAL_BOUNDARY ? CGAL_PI / 2 : 0.);
-      worst = (std::max)(worst, std::abs(std::remainder(a, line_period)));
-    }
+    const double worst =
+        SMDF::max_boundary_deviation(mesh, N, in_angles, SMDF::parameters::orthogonal_to_boundary(mode == ORTHOGONAL_BOUNDARY));
     Json b = Json::object();
     b["max_boundary_deviation"] = worst;
     out["boundary_aligned"] = std::move(b);
