@@ -55,6 +55,11 @@ run rosy "$spot" --cones "$cube" --hatching-svg "$here/spot_hatching.svg" --view
 if [ -f "$meshes/mushroom_cgal.off" ]; then
   run rosy "$meshes/mushroom_cgal.off" --N 4 --boundary parallel --hatching-svg "$here/mushroom_boundary_parallel.svg" --width 500
 fi
+# the same on a surface with a handle (the punctured torus: rotation compensation with the
+# boundary held)
+if [ -f "$meshes/punctured-torus_bff.obj" ]; then
+  run rosy "$meshes/punctured-torus_bff.obj" --N 4 --boundary parallel --hatching-svg "$here/punctured_torus_boundary_parallel.svg" --width 500
+fi
 # Fig. 8: one singularity of index +2 on a genus-0 surface; Fig. 2: one of index -2 on genus 2.
 # The trivial connections of the embedding with those singularities, and Fig. 8 by the
 # metric-driven method: a hole punched at the cone of 4 pi, the parallel field of the holed
