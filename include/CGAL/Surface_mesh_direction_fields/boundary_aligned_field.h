@@ -143,28 +143,21 @@ bool compensated_boundary_field(const Mesh_arrays<TM>& m, const Topology_arrays&
   // source of halfedge 2e, - at its target) and X_k = A^-1 B_k
   const std::size_t k = paths.size();
   std::vector<std::vector<double>> C(k, std::vector<double>(ne, 0.));
-  std::vector<Eigen::VectorXd> X(k);
+  std::vector<Eigen::VectorXd> B(k), X(k);
   Eigen::MatrixXd S = Eigen::MatrixXd::Zero(Eigen::Index(k), Eigen::Index(k));
   for(std::size_t i = 0; i < k; ++i) {
     for(int x : paths[i]) C[i][std::size_t(x >> 1)] += sign(x);
-    Eigen::VectorXd B = Eigen::VectorXd::Zero(n);
+    B[i] = Eigen::VectorXd::Zero(n);
     for(std::size_t e = 0; e < ne; ++e) {
       if(C[i][e] == 0) continue;
       const int ca = col[std::size_t(m.source(int(2 * e)))], cb = col[std::size_t(m.target[2 * e])];
-      if(ca >= 0) B[ca] += w[e] * C[i][e];
-      if(cb >= 0) B[cb] -= w[e] * C[i][e];
+      if(ca >= 0) B[i][ca] += w[e] * C[i][e];
+      if(cb >= 0) B[i][cb] -= w[e] * C[i][e];
     }
-    X[i] = n > 0 ? Eigen::VectorXd(chol.solve(B)) : Eigen::VectorXd();
-    for(std::size_t j = 0; j <= i; ++j) {
-      double d = 0;
+    X[i] = n > 0 ? Eigen::VectorXd(chol.solve(B[i])) : Eigen::VectorXd();
+    for(std::size_t j = 0; j <= i; ++j) {   // S = C_X W C_X^T - B^T A^-1 B
+      double d = n > 0 ? -B[j].dot(X[i]) : 0.;
       for(std::size_t e = 0; e < ne; ++e) d += C[i][e] * w[e] * C[j][e];
-      // minus B_j . X_i, B_j recomputed from C_j through the same rule
-      for(std::size_t e = 0; e < ne; ++e) {
-        if(C[j][e] == 0) continue;
-        const int ca = col[std::size_t(m.source(int(2 * e)))], cb = col[std::size_t(m.target[2 * e])];
-        if(ca >= 0) d -= w[e] * C[j][e] * X[i][ca];
-        if(cb >= 0) d += w[e] * C[j][e] * X[i][cb];
-      }
       S(Eigen::Index(i), Eigen::Index(j)) = S(Eigen::Index(j), Eigen::Index(i)) = d;
     }
   }

@@ -307,53 +307,52 @@ Field_transfer_status transfer_face_field_to_input(const TriangleMesh& tm, const
       const double principal = internal::wrap_angle(el - er - internal::transport_increment(m, h));
       put(input_matching, m.edges[e], int(std::lround((rotation + tl - tr - principal) / period)));
       continue;
-    } else {
-      const auto rr = it.input_face_pieces(fr), rl = it.input_face_pieces(fl);
-      local.assign(rr.begin(), rr.end());
-      const std::size_t nr = local.size();
-      local.insert(local.end(), rl.begin(), rl.end());
-      sides.clear();
-      for(std::size_t k = 0; k < local.size(); ++k) {
-        const auto& ids = pieces[local[k]].corner_ids;
-        for(std::size_t s = 0; s < ids.size(); ++s) {
-          const long a = ids[s], b = ids[(s + 1) % ids.size()];
-          sides.push_back({(std::min)(a, b), (std::max)(a, b), k, int(s)});
-        }
-      }
-      std::sort(sides.begin(), sides.end(), [](const Side& x, const Side& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
-      // breadth-first search from the home piece of fr to that of fl
-      parent.assign(local.size(), -1);
-      parent_side.assign(local.size(), -1);
-      std::size_t start = 0, goal = 0;
-      for(std::size_t k = 0; k < local.size(); ++k) {
-        if(k < nr && local[k] == A0) start = k;
-        if(k >= nr && local[k] == B0) goal = k;
-      }
-      queue.assign(1, start);
-      parent[start] = int(start);
-      for(std::size_t qi = 0; qi < queue.size() && parent[goal] < 0; ++qi) {
-        const std::size_t k = queue[qi];
-        const auto& ids = pieces[local[k]].corner_ids;
-        for(std::size_t s = 0; s < ids.size(); ++s) {
-          const long a = (std::min)(ids[s], ids[(s + 1) % ids.size()]), b = (std::max)(ids[s], ids[(s + 1) % ids.size()]);
-          auto it2 = std::lower_bound(sides.begin(), sides.end(), Side{a, b, 0, 0},
-                                      [](const Side& x, const Side& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
-          for(; it2 != sides.end() && it2->a == a && it2->b == b; ++it2) {
-            if(it2->piece == k || parent[it2->piece] >= 0) continue;
-            parent[it2->piece] = int(k);
-            parent_side[it2->piece] = int(s);
-            queue.push_back(it2->piece);
-          }
-        }
-      }
-      if(parent[goal] < 0) {
-        st.message = "no path of pieces across input edge " + std::to_string(e);
-        return st;
-      }
-      path.assign(1, goal);
-      while(path.back() != start) path.push_back(std::size_t(parent[path.back()]));
-      std::reverse(path.begin(), path.end());
     }
+    const auto rr = it.input_face_pieces(fr), rl = it.input_face_pieces(fl);
+    local.assign(rr.begin(), rr.end());
+    const std::size_t nr = local.size();
+    local.insert(local.end(), rl.begin(), rl.end());
+    sides.clear();
+    for(std::size_t k = 0; k < local.size(); ++k) {
+      const auto& ids = pieces[local[k]].corner_ids;
+      for(std::size_t s = 0; s < ids.size(); ++s) {
+        const long a = ids[s], b = ids[(s + 1) % ids.size()];
+        sides.push_back({(std::min)(a, b), (std::max)(a, b), k, int(s)});
+      }
+    }
+    std::sort(sides.begin(), sides.end(), [](const Side& x, const Side& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
+    // breadth-first search from the home piece of fr to that of fl
+    parent.assign(local.size(), -1);
+    parent_side.assign(local.size(), -1);
+    std::size_t start = 0, goal = 0;
+    for(std::size_t k = 0; k < local.size(); ++k) {
+      if(k < nr && local[k] == A0) start = k;
+      if(k >= nr && local[k] == B0) goal = k;
+    }
+    queue.assign(1, start);
+    parent[start] = int(start);
+    for(std::size_t qi = 0; qi < queue.size() && parent[goal] < 0; ++qi) {
+      const std::size_t k = queue[qi];
+      const auto& ids = pieces[local[k]].corner_ids;
+      for(std::size_t s = 0; s < ids.size(); ++s) {
+        const long a = (std::min)(ids[s], ids[(s + 1) % ids.size()]), b = (std::max)(ids[s], ids[(s + 1) % ids.size()]);
+        auto it2 = std::lower_bound(sides.begin(), sides.end(), Side{a, b, 0, 0},
+                                    [](const Side& x, const Side& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
+        for(; it2 != sides.end() && it2->a == a && it2->b == b; ++it2) {
+          if(it2->piece == k || parent[it2->piece] >= 0) continue;
+          parent[it2->piece] = int(k);
+          parent_side[it2->piece] = int(s);
+          queue.push_back(it2->piece);
+        }
+      }
+    }
+    if(parent[goal] < 0) {
+      st.message = "no path of pieces across input edge " + std::to_string(e);
+      return st;
+    }
+    path.assign(1, goal);
+    while(path.back() != start) path.push_back(std::size_t(parent[path.back()]));
+    std::reverse(path.begin(), path.end());
     // follow the field along the path: a, the accumulated angle (fr's frame, then fl's)
     const double inc = internal::transport_increment(m, h);   // fr's frame -> fl's frame
     int J = 0;
