@@ -42,6 +42,7 @@
 #include <map>
 #include <set>
 
+#include "shared_meshes.h"
 #include "test_util.h"
 #include "mesh_generators.h"
 
@@ -371,26 +372,6 @@ void automatic_singularities_tests(const std::string& dir)
 }
 
 
-// Every shared mesh that is manifold, oriented, of one component, without degenerate faces and
-// of at most 120k faces, closed or open as asked, read and handed to f(entry, mesh).
-template <typename F>
-void for_each_shared_mesh(const std::string& dir, bool open, const F& f)
-{
-  for(const auto& e : smdf_test::read_manifest(dir)) {
-    if(e.manifold != "yes" || e.pure_tri != "yes" || e.orientable != "yes" || e.components != 1 ||
-       (e.boundary_loops > 0) != open || e.degenerate_faces > 0 || e.F > 120000)
-      continue;
-    Surface_mesh mesh;
-    try {
-      SMDF::read_triangle_mesh(dir + "/meshes/" + e.file, mesh);
-    } catch(const std::exception& x) {
-      std::cout << e.file << ": not read (" << x.what() << ")" << std::endl;
-      continue;
-    }
-    f(e, mesh);
-  }
-}
-
 // Cross fields along the boundary of an open mesh of genus g, on its own flat metric (flips
 // allowed), carried to the input faces. Every boundary loop turns by +2 pi (the first) or
 // -2 pi (the others) at four corners of +-pi/2 spread along it, 8g random interior cones of
@@ -475,7 +456,7 @@ void boundary_aligned_tests(const std::string& dir, std::mt19937& rng)
 {
   if(dir.empty()) return;
   std::size_t meshes = 0, with_flips = 0, with_handles = 0;
-  for_each_shared_mesh(dir, true, [&](const smdf_test::Manifest_entry& e, const Surface_mesh& mesh) {
+  smdf_test::for_each_shared_mesh<Surface_mesh>(dir, true, [&](const smdf_test::Manifest_entry& e, const Surface_mesh& mesh) {
     ++meshes;
     const int genus = std::stoi(e.genus);
     if(boundary_aligned_on_input(mesh, genus, e.file, rng)) ++with_flips;
@@ -502,7 +483,7 @@ int main()
   }
   const std::string dir = smdf_test::shared_data_dir();
   if(!dir.empty()) {
-    for_each_shared_mesh(dir, false, [&](const smdf_test::Manifest_entry& e, const Surface_mesh& mesh) {
+    smdf_test::for_each_shared_mesh<Surface_mesh>(dir, false, [&](const smdf_test::Manifest_entry& e, const Surface_mesh& mesh) {
       if(std::stoi(e.genus) > 10) return;
       run_mesh(mesh, e.file, 1, rng, false);
       run_mesh(mesh, e.file, 6, rng, false);

@@ -23,6 +23,8 @@
 #include <CGAL/Surface_mesh_direction_fields/polyhedron_compatibility.h>
 #include <CGAL/Surface_mesh_direction_fields/polyhedron_remeshing.h>
 #include <CGAL/Surface_mesh_direction_fields/remesh_untangling.h>
+#include <CGAL/Surface_mesh_direction_fields/remeshing_cones.h>
+#include <CGAL/Surface_mesh_direction_fields/Intrinsic_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/delaunay_refinement.h>
 #include <CGAL/Surface_mesh_direction_fields/topology.h>
@@ -41,6 +43,7 @@
 #include <string>
 #include <vector>
 
+#include "shared_meshes.h"
 #include "test_util.h"
 #include "mesh_generators.h"
 
@@ -956,6 +959,111 @@ void seam_relaxation(const std::string& dir)
   SMDF_CHECK_MSG(threw, "seam_relaxation_rings(-1) is rejected by name");
 }
 
+// Cones for remeshing (place_remeshing_cones()) on every shared mesh of one component, closed
+// and open, N = 4 or 6 and the bound drawn at random. Read back from the result alone: every
+// curvature +-2pi/N, the sum 2 pi chi, no two
+// cones adjacent, the metric's curvature recomputed from its lengths (on its own triangulation)
+// equal to the cones and zero elsewhere, and its scale spread recomputed from the conformal
+// factors (away from the cones' rings and isolated vertices) equal to the reported one, within the bound on success.
+template <typename Mesh>
+bool check_remeshing_cones(const Mesh& mesh, int N, double bound, const std::string& what, std::size_t& cones_out)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor V;
+  auto lengths = get(CGAL::dynamic_edge_property_t<double>(), mesh);
+  auto u = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+  const auto st = SMDF::place_remeshing_cones(mesh, lengths, SMDF::parameters::symmetry_order(N).distortion_bound(bound).conformal_factor_map(u));
+  SMDF_CHECK_MSG(st.success || !st.message.empty(), what);
+  SMDF_CHECK_MSG(st.metric.converged, what << ": " << st.message);
+  if(!st.metric.converged) return false;
+  const double q = 2 * CGAL_PI / N;
+  const SMDF::Mesh_topology<Mesh> topo = SMDF::mesh_topology(mesh);
+  const long chi = topo.components[0].euler_characteristic;
+  const auto vim = CGAL::get_initialized_vertex_index_map(mesh);
+  auto id = [&](V v) { return std::size_t(get(vim, v)); };
+  std::map<std::size_t, double> K;
+  double sum = 0;
+  bool multiples = true, ranged = true;
+  for(const auto& c : st.cones) {
+    K[id(c.first)] = c.second;
+    sum += c.second;
+    const double k = c.second / q;
+    multiples = multiples && std::abs(k - std::round(k)) < 1e-12;
+    ranged = ranged && std::abs(std::round(k)) == 1;   // one quantum each
+  }
+  SMDF_CHECK_MSG(multiples && ranged, what);
+  SMDF_CHECK_MSG(K.size() == st.cones.size(), what << ": a vertex listed twice");
+  SMDF_CHECK_MSG(std::abs(sum - 2 * CGAL_PI * chi) < 1e-9, what << ": cones sum to " << sum << ", 2 pi chi = " << 2 * CGAL_PI * chi);
+  bool apart = true;
+  for(const auto& c : st.cones)
+    for(auto w : CGAL::vertices_around_target(halfedge(c.first, mesh), mesh)) apart = apart && !K.count(id(w));
+  SMDF_CHECK_MSG(apart, what << ": two cones are adjacent");
+  // the metric's curvature, recomputed on the triangulation that carries it
+  double err = 0;
+  if(st.metric.triangulation_changed) {
+    Surface_mesh tri;
+    auto tl = tri.template add_property_map<Surface_mesh::Edge_index, double>("e:l", 0.).first;
+    SMDF::copy_intrinsic_triangulation(st.metric.intrinsic_triangulation, mesh, tri, tl);
+    const SMDF::Intrinsic_mesh<Surface_mesh> im(tri, SMDF::parameters::edge_length_map(tl));
+    for(auto v : vertices(tri)) {
+      const auto it = K.find(std::size_t(v.idx()));
+      err = std::max(err, std::abs(im.vertex_curvature(v) - (it == K.end() ? 0. : it->second)));
+    }
+  } else {
+    const SMDF::Intrinsic_mesh<Mesh> im(mesh, SMDF::parameters::edge_length_map(lengths));
+    for(auto v : vertices(mesh)) {
+      const auto it = K.find(id(v));
+      err = std::max(err, std::abs(im.vertex_curvature(v) - (it == K.end() ? 0. : it->second)));
+    }
+  }
+  SMDF_CHECK_MSG(err < 1e-8, what << ": curvature error " << err);
+  // the spread, away from the cones and their neighbours
+  std::set<std::size_t> near;
+  for(const auto& c : st.cones) {
+    near.insert(id(c.first));
+    for(auto w : CGAL::vertices_around_target(halfedge(c.first, mesh), mesh)) near.insert(id(w));
+  }
+  double lo = 1e300, hi = -1e300;
+  for(auto v : vertices(mesh)) if(!near.count(id(v)) && halfedge(v, mesh) != boost::graph_traits<Mesh>::null_halfedge()) { lo = std::min(lo, get(u, v)); hi = std::max(hi, get(u, v)); }
+  SMDF_CHECK_MSG(std::abs((hi - lo) - st.scale_spread) < 1e-9, what << ": spread " << hi - lo << " reported " << st.scale_spread);
+  if(st.success) SMDF_CHECK_MSG(st.scale_spread <= bound, what);
+  std::cout << what << ": " << st.cones.size() << " cones, spread " << st.scale_spread << " (bound " << bound << ")"
+            << (st.metric.triangulation_changed ? ", flips" : "") << (st.success ? "" : ", not within the bound: " + st.message) << std::endl;
+  cones_out = st.cones.size();
+  return st.success;
+}
+
+void remeshing_cones(const std::string& dir)
+{
+  std::mt19937 rng(20261206);
+  std::size_t runs = 0, within = 0, open = 0;
+  for(bool open_meshes : {false, true})
+    smdf_test::for_each_shared_mesh<Surface_mesh>(dir, open_meshes, [&](const smdf_test::Manifest_entry& e, const Surface_mesh& mesh) {
+      const int N = std::uniform_int_distribution<int>(0, 3)(rng) == 0 ? 6 : 4;
+      const double bound = std::uniform_real_distribution<double>(1.5, 2.5)(rng);
+      std::size_t n = 0;
+      ++runs;
+      open += open_meshes;
+      within += check_remeshing_cones(mesh, N, bound, e.file + " (N = " + std::to_string(N) + ")", n);
+    });
+  std::cout << "remeshing cones: " << within << " of " << runs << " meshes (" << open << " open) within the bound" << std::endl;
+  SMDF_CHECK(runs >= 20 && open >= 5);
+  SMDF_CHECK(within * 10 >= runs * 8);   // measured: the beetle and the feline miss it at 2
+  // Polyhedron_3: the same cones as on the Surface_mesh
+  Polyhedron p;
+  Surface_mesh sm;
+  SMDF::read_triangle_mesh(dir + "/meshes/double-torus_jnd.off", p);
+  SMDF::read_triangle_mesh(dir + "/meshes/double-torus_jnd.off", sm);
+  std::size_t np = 0, ns = 0;
+  check_remeshing_cones(p, 4, 2., "double torus (Polyhedron_3)", np);
+  check_remeshing_cones(sm, 4, 2., "double torus (Surface_mesh)", ns);
+  SMDF_CHECK(np == ns && np >= 4);
+  // bad input
+  bool threw = false;
+  try { SMDF::place_remeshing_cones(sm, get(CGAL::dynamic_edge_property_t<double>(), sm), SMDF::parameters::distortion_bound(-1.)); }
+  catch(const SMDF::Input_error&) { threw = true; }
+  SMDF_CHECK(threw);
+}
+
 } // namespace
 
 // The paths under a flat cone metric that lives on an intrinsic triangulation (the flow flipped
@@ -1388,7 +1496,7 @@ int main()
   l_shaped_polycube();
   folded_quads();
   const std::string dir = smdf_test::shared_data_dir();
-  if(!dir.empty()) { box_polycube(dir); ricci_flow_segments(dir); seam_relaxation(dir); flipped_flat_metric(dir); delaunay_refinement(dir); octahedron_polyhedron(dir); obelisk(dir); untangling(dir); }
+  if(!dir.empty()) { remeshing_cones(dir); box_polycube(dir); ricci_flow_segments(dir); seam_relaxation(dir); flipped_flat_metric(dir); delaunay_refinement(dir); octahedron_polyhedron(dir); obelisk(dir); untangling(dir); }
   else std::cout << "../shared/data not found: box polycube on shared meshes skipped" << std::endl;
   return smdf_test::finish();
 }

@@ -2037,6 +2037,35 @@ def test_cone_metric(smdf, c, torus, tmp, verts, faces):
         c.check(all(0 not in t for t in tfaces) and all(l[0] != "0" and l[1] != "0" for l in lines)
                 and all(math.isfinite(float(l[2])) for l in lines),
                 "cone-metric: the punched vertex has no face and no edge in the output files")
+    # --place-cones: cones chosen for a quad remesh, read back from the lengths file
+    spot = os.path.join(os.path.dirname(torus), "spot.off")
+    sverts, sfaces = read_off(spot)
+    lp = os.path.join(tmp, "spot_placed.lengths")
+    for grid, q in (("quad", math.pi / 2), ("triangle", math.pi / 3)):
+        r = smdf.json(["cone-metric", spot, "--place-cones", grid, "--lengths-out", lp], "cone-metric spot --place-cones " + grid)
+        p = r.get("placement", {}) if r else {}
+        placed = {x["vertex"]: x["curvature"] for x in p.get("placed_cones", [])}
+        c.check(r is not None and r.get("converged") is True and p.get("success") is True and
+                0 < p.get("scale_spread", 9) <= 2.0 and p.get("distortion_bound") == 2.0,
+                "cone-metric spot --place-cones %s: converged within the default bound (spread %r)" % (grid, p.get("scale_spread")))
+        c.check(len(placed) >= 4 and abs(sum(placed.values()) - 4 * math.pi) < 1e-9 and
+                all(abs(k / q - round(k / q)) < 1e-12 and round(k / q) != 0 for k in placed.values()),
+                "--place-cones %s: %d cones, multiples of 2pi/N summing to 4 pi" % (grid, len(placed)))
+        adjacent = any(f[a] in placed and f[b] in placed for f in sfaces for a, b in ((0, 1), (1, 2), (2, 0)))
+        c.check(not adjacent, "--place-cones %s: no two cones adjacent" % grid)
+        if r and r.get("triangulation_changed") is False:
+            lengths, _ = read_lengths(lp)
+            sums = angle_sums(sfaces, lengths)
+            worst = max(abs(TWO_PI - sums[v] - placed.get(v, 0)) for v in sums)
+            c.check(worst <= 1e-8, "--place-cones %s: curvatures recomputed from --lengths-out are the placed cones (max %.3g)" % (grid, worst))
+    rc, o, err = smdf.run(["cone-metric", spot, "--place-cones", "quad", "--distortion-bound", "0.3", "--max-cones", "6"])
+    r = json.loads(o.decode()) if o else None
+    c.check(rc == 3 and b"--place-cones" in err and r is not None and r.get("placement", {}).get("success") is False and r.get("converged") is True and
+            abs(sum(x["curvature"] for x in r["placement"]["placed_cones"]) - 4 * math.pi) < 1e-9,
+            "--place-cones with a bound out of reach: a valid cone set, success false, exit 3")
+    smdf.error(["cone-metric", spot, "--place-cones", "hex"], "--place-cones hex", 2, "quad")
+    smdf.error(["cone-metric", spot, "--place-cones", "quad", "--cones", "0:pi/2"], "--place-cones with --cones", 2, "--place-cones")
+    smdf.error(["cone-metric", spot, "--distortion-bound", "1"], "--distortion-bound without --place-cones", 2, "--place-cones")
     smdf.error(["cone-metric", torus, "--cones", "0:7,1:7,100:-14"], "two adjacent cones >= 2 pi", 1,
                ["cannot punch a hole", "vertex 0"])
     smdf.error(["cone-metric", torus, "--cones", "0:2pi"], "--cones 0:2pi", 1, "2*pi")

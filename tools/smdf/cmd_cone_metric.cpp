@@ -9,6 +9,7 @@
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/delaunay_refinement.h>
 #include <CGAL/Surface_mesh_direction_fields/parameters.h>
+#include <CGAL/Surface_mesh_direction_fields/remeshing_cones.h>
 #include <CGAL/Surface_mesh_direction_fields/topology.h>
 
 #include <algorithm>
@@ -39,6 +40,8 @@ struct Cone_metric_options
   double tolerance;
   Indexed_values cones, indices, kappa;
   bool want_uv;    // --uv-out or --svg
+  double distortion_bound = 0;   // --place-cones
+  long max_cones = 0;
   bool progress;
 };
 
@@ -58,6 +61,19 @@ Cone_metric_options cone_metric_options(const Args& args)
   o.indices = vertex_values("cone-indices", parse_number, "an index k, K = 2 pi k: integer, p/q or decimal");
   o.kappa = vertex_values("boundary-curvature", parse_angle, "radians: decimal, p/q, pi/2, -pi/4, ...");
   o.want_uv = args.has("uv-out") || args.has("svg");
+  if(args.has("place-cones")) {
+    const std::string g = args.value("place-cones");
+    if(g != "quad" && g != "triangle") throw Usage_error("option --place-cones expects 'quad' or 'triangle', got '" + shorten(g) + "'");
+    if(args.has("cones") || args.has("cone-indices") || args.has("boundary-curvature") || args.has("refine") || args.has("no-flips"))
+      throw Usage_error("--place-cones chooses the cones and boundary corners itself: give none of --cones, --cone-indices, "
+                        "--boundary-curvature, --refine and --no-flips");
+    o.distortion_bound = args.real("distortion-bound", 2.0);
+    if(!(o.distortion_bound > 0) || !std::isfinite(o.distortion_bound))
+      throw Usage_error("option --distortion-bound expects a positive number, got '" + args.value("distortion-bound") + "'");
+    o.max_cones = args.integer("max-cones", 500);
+    if(o.max_cones < 1 || o.max_cones > 100000) throw Usage_error("option --max-cones expects an integer in [1, 100000], got '" + args.value("max-cones") + "'");
+  } else if(args.has("distortion-bound") || args.has("max-cones"))
+    throw Usage_error("--distortion-bound and --max-cones apply to --place-cones");
   o.progress = args.has("progress") || isatty(2);
   return o;
 }
@@ -373,7 +389,36 @@ Json run_cone_metric(const Args& args)
   const Vertex_real_property targets = set_targets(mesh, opt);
   const Edge_length_property lengths = mesh.add_property_map<edge_descriptor, double>("e:smdf_cone_length", 0.).first;
   const Vertex_real_property ufac = mesh.add_property_map<vertex_descriptor, double>("v:smdf_conformal_factor", 0.).first;
-  const SMDF::Cone_metric_status st = compute_metric(args, file, opt, mesh, targets, lengths, ufac);
+  SMDF::Cone_metric_status st;
+  Json placement;
+  std::string placement_failure;
+  if(args.has("place-cones")) {
+    const int N = args.value("place-cones") == "quad" ? 4 : 6;
+    const auto ps = on_file(file, [&] {
+      return SMDF::place_remeshing_cones(mesh, lengths, SMDF::parameters::symmetry_order(N).distortion_bound(opt.distortion_bound)
+                                                            .maximum_number_of_cones(int(opt.max_cones)).conformal_factor_map(ufac));
+    });
+    placement = Json::object();
+    placement["success"] = ps.success;
+    placement["message"] = ps.message;
+    placement["distortion_bound"] = ps.distortion_bound;
+    placement["scale_spread"] = ps.scale_spread;
+    placement["linear_scale_spread"] = ps.linear_scale_spread;
+    placement["placement_rounds"] = ps.placement_rounds;
+    Json cones = Json::array();
+    for(const auto& c : ps.cones) {
+      Json o = Json::object();
+      o["vertex"] = index(c.first);
+      o["curvature"] = c.second;
+      cones.push_back(std::move(o));
+      put(targets, c.first, c.second);
+    }
+    placement["placed_cones"] = std::move(cones);
+    if(!ps.success && ps.metric.converged) placement_failure = ps.message;
+    st = ps.metric;
+    if(!st.converged && st.message.empty()) st.message = ps.message;
+  } else
+    st = compute_metric(args, file, opt, mesh, targets, lengths, ufac);
 
   // With flips the metric lives on the intrinsic triangulation: its edges (not the input's)
   // go to --lengths-out, its faces to --triangulation-out.
@@ -390,6 +435,7 @@ Json run_cone_metric(const Args& args)
 
   Json out = status_json(args, mesh, targets, st);
   if(args.has("refine")) out["delaunay_refinement"] = refinement;
+  if(args.has("place-cones")) out["placement"] = placement;
   if(!st.converged) {
     std::ostringstream os;
     os.imbue(std::locale::classic());
@@ -399,6 +445,7 @@ Json run_cone_metric(const Args& args)
     throw Failed_result{out, os.str(), 3};
   }
   if(opt.want_uv) out["uv_positively_oriented"] = write_layout(args, file, opt.tolerance, mesh, lengths, ufac, st);
+  if(!placement_failure.empty()) throw Failed_result{out, file + ": --place-cones: " + placement_failure, 3};
   return out;
 }
 
@@ -417,6 +464,9 @@ Command cone_metric_command()
            {"tolerance", "t", "max curvature error accepted, radians (default 1e-10)"},
            {"no-flips", "", "keep the input triangulation (no intrinsic edge flips)"},
            {"refine", "", "compute the metric without flips on the input's conforming Delaunay refinement (vertices added on the input's edges; the output files describe the refinement)"},
+           {"place-cones", "quad|triangle", "choose the cones for a quad or triangle remesh (multiples of pi/2 or pi/3) instead of --cones"},
+           {"distortion-bound", "B", "with --place-cones: lengths scaled within e^B of each other away from the cones (default 2)"},
+           {"max-cones", "n", "with --place-cones: at most n cones (default 500)"},
            {"progress", "", "print the error of every iteration to stderr (default: only on a terminal)"}},
           "flat cone metric with prescribed cone angles (discrete conformal map)",
           "Computes edge lengths, conformally equivalent to the Euclidean ones (l_ij = l0_ij\n"
@@ -470,7 +520,16 @@ Command cone_metric_command()
           "Not converged (tolerance not reached in --iterations, or, with --no-flips, the target\n"
           "metric does not exist on this triangulation): the JSON object is still printed on stdout,\n"
           "one error line goes to stderr and the exit code is 3; --lengths-out and\n"
-          "--triangulation-out then hold the last valid iterate and --uv-out/--svg are not written.\n",
+          "--triangulation-out then hold the last valid iterate and --uv-out/--svg are not written.\n"
+          "--place-cones quad|triangle places the cones itself (place_remeshing_cones()): few\n"
+          "vertices, no two adjacent, with curvatures that are multiples of pi/2 (quad) or pi/3\n"
+          "(triangle), boundary vertices as corners turning by such multiples, summing to 2 pi chi,\n"
+          "chosen greedily where the flat metric would stretch most until the metric's log scale u\n"
+          "varies by at most --distortion-bound away from the cones and their neighbours. The JSON\n"
+          "then has placement: {success, message, distortion_bound, scale_spread (max u - min u\n"
+          "read back from the metric), linear_scale_spread (the linear model's), placement_rounds,\n"
+          "placed_cones: [{vertex, curvature}]}, and the metric is that of the placed cones. Bound\n"
+          "not reached with --max-cones cones: the outputs are written, exit 3.\n",
           run_cone_metric};
 }
 

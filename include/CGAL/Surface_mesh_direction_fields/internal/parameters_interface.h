@@ -33,3 +33,5 @@ CGAL_SMDF_add_named_parameter(segment_flattening_t, segment_flattening, segment_
 CGAL_SMDF_add_named_parameter(alignment_weight_t, alignment_weight, alignment_weight)
 CGAL_SMDF_add_named_parameter(smoothing_steps_t, smoothing_steps, smoothing_steps)
 CGAL_SMDF_add_named_parameter(common_subdivision_t, common_subdivision, common_subdivision)
+CGAL_SMDF_add_named_parameter(distortion_bound_t, distortion_bound, distortion_bound)
+CGAL_SMDF_add_named_parameter(maximum_number_of_cones_t, maximum_number_of_cones, maximum_number_of_cones)
