@@ -24,6 +24,8 @@
 #include <CGAL/Surface_mesh_direction_fields/polyhedron_remeshing.h>
 #include <CGAL/Surface_mesh_direction_fields/remesh_untangling.h>
 #include <CGAL/Surface_mesh_direction_fields/remeshing_cones.h>
+#include <CGAL/Surface_mesh_direction_fields/integer_grid_map.h>
+#include <CGAL/Surface_mesh_direction_fields/compute_trivial_connection.h>
 #include <CGAL/Surface_mesh_direction_fields/Intrinsic_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/delaunay_refinement.h>
@@ -39,6 +41,7 @@
 #include <map>
 #include <set>
 #include <algorithm>
+#include <complex>
 #include <random>
 #include <string>
 #include <vector>
@@ -1064,6 +1067,118 @@ void remeshing_cones(const std::string& dir)
   SMDF_CHECK(threw);
 }
 
+// Integer-grid maps (integer_grid_map()) of every closed shared mesh of at most 40k faces whose
+// placed cones have a flat cone metric on its own triangulation, with the cross field of the
+// trivial connection on that metric (singularities: the cones). Read back from the map alone:
+// across every edge the two faces' images differ by a rotation by a multiple of pi/2 and an
+// integer translation; every singularity is an integer point; the angles of the images sum to
+// 2 pi at every vertex but the singularities, which are the cones (K = 2 pi - angle sum, a
+// multiple of pi/2); no triangle folded (the status and the images agree); on genus 0 the
+// seamless map is the metric's own development (relative energy ~0). Then every unfolded map is
+// tessellated; each remesh that succeeds is checked (quads, valence 4 except at the singularities,
+// on the input surface).
+void integer_grid_maps(const std::string& dir)
+{
+  typedef Surface_mesh::Vertex_index V;
+  typedef Surface_mesh::Halfedge_index H;
+  std::size_t runs = 0, unfolded = 0, skipped = 0, tessellated = 0;
+  smdf_test::for_each_shared_mesh<Surface_mesh>(dir, false, [&](const smdf_test::Manifest_entry& e, const Surface_mesh& input) {
+    if(e.F > 40000) return;
+    Surface_mesh mesh = input;
+    auto placed = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:placed", 0.).first;
+    const auto cs = SMDF::place_remeshing_cones(mesh, placed);
+    auto cone_target = mesh.add_property_map<V, double>("v:target", 0.).first;
+    std::vector<std::pair<V, double>> sing;
+    for(const auto& c : cs.cones) { cone_target[c.first] = c.second; sing.emplace_back(c.first, c.second / (2 * CGAL_PI)); }
+    auto cl = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:cone", 0.).first;
+    const auto cm = SMDF::compute_cone_metric(mesh, cone_target, cl, SMDF::parameters::intrinsic_edge_flips(false));
+    if(!cm.converged) { ++skipped; std::cout << e.file << ": the cone metric needs flips (skipped)" << std::endl; return; }
+    auto adj = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:adj", 0.).first;
+    auto fa = mesh.add_property_map<Surface_mesh::Face_index, double>("f:angle", 0.).first;
+    const auto tc = SMDF::compute_trivial_connection(mesh, sing, adj, SMDF::parameters::edge_length_map(cl).symmetry_order(4)
+                                                                      .smoothest_generator_turning_numbers(true).face_angle_map(fa));
+    SMDF_CHECK_MSG(tc.success, e.file);
+    double area = 0;
+    for(auto f : faces(mesh)) {
+      const H h = halfedge(f, mesh);
+      const double a = cl[edge(h, mesh)], b = cl[edge(next(h, mesh), mesh)], c = cl[edge(prev(h, mesh), mesh)], p = (a + b + c) / 2;
+      area += std::sqrt(std::max(0., p * (p - a) * (p - b) * (p - c)));
+    }
+    const double h = std::sqrt(area / 3000);
+    auto uv = mesh.add_property_map<H, std::array<double, 2>>("h:uv").first;
+    const SMDF::Integer_grid_map_status st = SMDF::integer_grid_map(mesh, fa, h, uv, SMDF::parameters::edge_length_map(cl));
+    ++runs;
+    const std::string what = e.file + " (genus " + e.genus + ", " + std::to_string(cs.cones.size()) + " cones)";
+    std::cout << what << ": " << (st.success ? "unfolded" : st.message) << ", " << st.arcs << " seams, " << st.rounded << " values rounded, "
+              << st.stiffening_rounds << " stiffening rounds, energy " << st.seamless_energy << " -> " << st.integer_energy
+              << ", min area ratio " << st.min_area_ratio << std::endl;
+    if(st.message.find("folded") == std::string::npos) SMDF_CHECK_MSG(st.success, what << ": " << st.message);
+    if(!st.success && st.folded_triangles == 0) return;
+    typedef std::complex<double> C;
+    auto at = [&](H x) { return C(uv[x][0], uv[x][1]); };   // target(x) in face(x)
+    // seams: rotation by i^k and an integer translation
+    double worst_rotation = 0, worst_translation = 0;
+    for(auto ed : edges(mesh)) {
+      const H x = halfedge(ed, mesh), o = opposite(x, mesh);
+      const C aL = at(prev(x, mesh)), bL = at(x), bR = at(prev(o, mesh)), aR = at(o);
+      const C ratio = (bR - aR) / (bL - aL);
+      const C rk(std::round(ratio.real()), std::round(ratio.imag()));
+      worst_rotation = std::max(worst_rotation, std::abs(ratio - rk) + std::abs(std::abs(rk) - 1));
+      const C t = aR - rk * aL;
+      worst_translation = std::max(worst_translation, std::abs(t - C(std::round(t.real()), std::round(t.imag()))));
+    }
+    SMDF_CHECK_MSG(worst_rotation < 1e-6 && worst_translation < 1e-6, what << ": seam motions off the grid's symmetries by " << worst_rotation
+                                                                        << " (rotation), " << worst_translation << " (translation)");
+    // singularities at integer points, and the images' angle sums
+    std::vector<double> angle_sum(num_vertices(mesh), 0.);
+    std::size_t folded = 0;
+    double worst_point = 0;
+    std::set<std::size_t> singular;
+    for(const auto& sv : st.singularities) singular.insert(sv.first);
+    for(auto f : faces(mesh)) {
+      for(H x : CGAL::halfedges_around_face(halfedge(f, mesh), mesh)) {
+        const C p = at(x), a = at(prev(x, mesh)), b = at(next(x, mesh));
+        angle_sum[target(x, mesh)] += std::abs(std::arg((b - p) / (a - p)));
+        if(singular.count(std::size_t(target(x, mesh))))
+          worst_point = std::max(worst_point, std::abs(p - C(std::round(p.real()), std::round(p.imag()))));
+      }
+      const H x = halfedge(f, mesh);
+      const C p0 = at(prev(x, mesh)), p1 = at(x), p2 = at(next(x, mesh));
+      folded += !((p1 - p0).real() * (p2 - p0).imag() - (p1 - p0).imag() * (p2 - p0).real() > 0);
+    }
+    SMDF_CHECK_MSG(worst_point < 1e-6, what << ": a singularity " << worst_point << " away from the lattice");
+    SMDF_CHECK_MSG(folded == st.folded_triangles, what << ": " << folded << " folded triangles, the status says " << st.folded_triangles);
+    if(folded == 0) {
+      ++unfolded;
+      std::map<std::size_t, double> K;
+      for(const auto& c : cs.cones) K[std::size_t(c.first)] = c.second;
+      double worst_k = 0;
+      for(auto v : vertices(mesh)) {
+        const auto it = K.find(std::size_t(v));
+        worst_k = std::max(worst_k, std::abs(2 * CGAL_PI - angle_sum[v] - (it == K.end() ? 0. : it->second)));
+      }
+      SMDF_CHECK_MSG(worst_k < 1e-6 && singular.size() == K.size(), what << ": the map's cones differ from the placed ones by " << worst_k);
+    }
+    if(e.genus == "0") SMDF_CHECK_MSG(st.seamless_energy < 1e-12, what << ": seamless energy " << st.seamless_energy);
+    if(st.success) {
+      auto gl = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:grid", 0.).first;
+      for(auto ed : edges(mesh)) gl[ed] = std::abs(at(halfedge(ed, mesh)) - at(prev(halfedge(ed, mesh), mesh)));
+      const auto dev = SMDF::develop_flat_metric(mesh, SMDF::parameters::edge_length_map(gl));
+      Surface_mesh out;
+      const auto ts = SMDF::tessellate_flat_metric(mesh, dev, SMDF::SQUARE_GRID, 1., out);
+      std::map<int, std::size_t> expected;
+      for(const auto& c : cs.cones) expected[4 - int(std::lround(c.second / (CGAL_PI / 2)))]++;
+      // (the tessellation of maps with cones fails on most meshes: being investigated)
+      if(ts.success) check_remesh(mesh, mesh, out, ts, 4, expected, double(ts.faces), what + ", tessellated");
+      else std::cout << what << ": not tessellated: " << ts.message << std::endl;
+      tessellated += ts.success;
+    }
+  });
+  std::cout << "integer-grid maps: " << unfolded << " of " << runs << " without a fold (" << skipped << " meshes whose cone metric needs flips skipped), "
+            << tessellated << " tessellated" << std::endl;
+  SMDF_CHECK(runs >= 8 && unfolded * 10 >= runs * 8 && tessellated >= 3);
+}
+
 } // namespace
 
 // The paths under a flat cone metric that lives on an intrinsic triangulation (the flow flipped
@@ -1496,7 +1611,7 @@ int main()
   l_shaped_polycube();
   folded_quads();
   const std::string dir = smdf_test::shared_data_dir();
-  if(!dir.empty()) { remeshing_cones(dir); box_polycube(dir); ricci_flow_segments(dir); seam_relaxation(dir); flipped_flat_metric(dir); delaunay_refinement(dir); octahedron_polyhedron(dir); obelisk(dir); untangling(dir); }
+  if(!dir.empty()) { remeshing_cones(dir); integer_grid_maps(dir); box_polycube(dir); ricci_flow_segments(dir); seam_relaxation(dir); flipped_flat_metric(dir); delaunay_refinement(dir); octahedron_polyhedron(dir); obelisk(dir); untangling(dir); }
   else std::cout << "../shared/data not found: box polycube on shared meshes skipped" << std::endl;
   return smdf_test::finish();
 }

@@ -1,0 +1,631 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTEGER_GRID_MAP_H
+#define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTEGER_GRID_MAP_H
+
+// An integer-grid map of a closed mesh of any genus from a cross field and a scale (mixed-
+// integer quadrangulation, Bommes, Zimmer and Kobbelt 2009): a seamless parametrisation whose
+// gradients follow the field, scaled by the flat cone metric's conformal factor, then the seam
+// translations and the singularities rounded to integers. Its edge lengths are a flat cone
+// metric that tessellate_flat_metric() grids exactly.
+
+#include <CGAL/Surface_mesh_direction_fields/Cholmod_cholesky.h>
+#include <CGAL/Surface_mesh_direction_fields/Intrinsic_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/errors.h>
+#include <CGAL/Surface_mesh_direction_fields/parameters.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/cotan_weights.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/development.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <complex>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_direction_fields {
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsRemeshing
+/// Outcome of integer_grid_map().
+struct Integer_grid_map_status
+{
+  bool success = false;   ///< the map was computed, with no triangle folded or degenerate
+  std::string message;    ///< why not
+  /// vertices where the field's rotation around them is not the identity (its singularities),
+  /// in vertex order (indices of `vertices(tm)`), with the quarter turns of that rotation
+  std::vector<std::pair<std::size_t, int>> singularities;
+  std::size_t cut_edges = 0;   ///< edges of the cut graph (seams)
+  std::size_t arcs = 0;        ///< seams between the cut graph's nodes, one translation each
+  std::size_t rounded = 0;     ///< integer values fixed (singularity and translation coordinates)
+  std::size_t implied = 0;     ///< integer values that the others already implied
+  /// triangles whose image is folded (clockwise) or degenerate; success requires none
+  std::size_t folded_triangles = 0;
+  std::size_t seamless_folded_triangles = 0;   ///< the same count for the seamless map, before rounding
+  int stiffening_rounds = 0;   ///< re-solves with the faces around folded ones weighted more
+  /// the smallest ratio, over the triangles, of the image's signed area to the area the target
+  /// scale asks for (1 where the map is exactly the target, negative for a folded triangle)
+  double min_area_ratio = 0;
+  /// \f$\sum_f A_f |\nabla P - s_f e^{-i\theta_f}|^2 / \sum_f A_f s_f^2\f$ of the continuous
+  /// (seamless) and of the integer map: how far each is from the target, relative
+  double seamless_energy = 0, integer_energy = 0;
+};
+
+namespace internal {
+
+typedef std::complex<double> Cplx;
+
+// i^k
+inline Cplx unit_power(int k)
+{
+  switch(((k % 4) + 4) % 4) {
+    case 0: return Cplx(1, 0);
+    case 1: return Cplx(0, 1);
+    case 2: return Cplx(-1, 0);
+    default: return Cplx(0, -1);
+  }
+}
+
+// A corner's image as an affine function of the unknowns: coefficient `a` times the vertex
+// unknown plus sum c_k s_k over small unknowns (seam translations, singularity positions).
+struct Corner_expression
+{
+  int vertex = -1;                    // big unknown (-1: none, e.g. a singularity's own corner)
+  Cplx a = Cplx(1, 0);
+  std::vector<std::pair<int, Cplx>> small;
+
+  void add(int k, Cplx c)
+  {
+    for(auto& s : small) if(s.first == k) { s.second += c; return; }
+    small.emplace_back(k, c);
+  }
+  // this expression mapped by P -> m P + t_k (t_k the small unknown k, scaled by tc)
+  Corner_expression mapped(Cplx m, int k, Cplx tc) const
+  {
+    Corner_expression e = *this;
+    e.a *= m;
+    for(auto& s : e.small) s.second *= m;
+    if(k >= 0) e.add(k, tc);
+    return e;
+  }
+};
+
+} // namespace internal
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsRemeshing
+/// Computes an integer-grid map of a closed triangle mesh (mixed-integer quadrangulation,
+/// Bommes, Zimmer and Kobbelt 2009): per corner, coordinates \f$P = U + iV\f$ such that
+/// - across every edge the two faces' images differ by a symmetry of the square grid: a rotation
+///   by a multiple of \f$\pi/2\f$ (the field's matching) and an integer translation;
+/// - every singularity of the field is an integer point;
+/// - in each face the map is as close as possible (least squares, cotan weights) to the face's
+///   shape under the metric, rotated so that the field's direction becomes the \f$U\f$ axis and
+///   scaled so that one grid unit measures \f$h\f$. Under a flat cone metric whose cones are the
+///   field's singularities (curvatures multiples of \f$\pi/2\f$), with the field parallel, that
+///   target is exactly a seamless map on genus 0; on higher genus the field's rotation around the
+///   handles differs from the metric's and the least squares spreads the difference.
+///
+/// <b>Method.</b> The field is combed along a breadth-first tree of the faces; the other edges,
+/// pruned of branches that end at regular vertices, form the cut graph, whose arcs (chains
+/// between nodes and singularities) each carry one rotation and one translation. Every corner is
+/// an affine function of one unknown per vertex and of the arcs' translations and the
+/// singularities' positions (the small unknowns), through the motions crossed around its vertex;
+/// closing each vertex's fan gives the linear conditions on the small unknowns (at a singularity
+/// of rotation \f$i^k\f$: \f$(1 - i^k) Z = T\f$; at a node: \f$T = 0\f$). One sparse Cholesky
+/// factorisation of the vertex block, one back-substitution per small unknown, and a dense
+/// system for the small unknowns (Schur complement) give the seamless map. Then the singularity
+/// coordinates, then the translations, are rounded one at a time, nearest to an integer first,
+/// each re-solving only the dense system (values the earlier ones already imply are checked,
+/// not fixed again). The read-back counts folded triangles: rounding can fold the map where
+/// singularities are closer than about one grid unit; the status then fails.
+///
+/// \param tm a closed triangle mesh of one component
+/// \param face_angles the cross field (\f$N = 4\f$): per face, the angle of one of its four
+///   directions, counterclockwise from `halfedge(f)` in the face's frame under the metric of `np`
+///   (as the package's field functions compute it with that `edge_length_map`)
+/// \param h the grid's edge length under the metric
+/// \param uv_map receives, for every halfedge `g` with a face, the image of `target(g)` in
+///   `face(g)` as `std::array<double, 2>` (grid units: the lattice is \f$\mathbb{Z}^2\f$)
+/// \param np `edge_length_map` (the metric, e.g. a flat cone metric on `tm`'s edges) or
+///   `vertex_point_map`, index maps
+///
+/// Throws `Input_error` for open meshes, several components, or \f$h \le 0\f$.
+template <typename TriangleMesh, typename FaceAngleMap, typename HalfedgeUVMap,
+          typename NamedParameters = parameters::Default_named_parameters>
+Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngleMap& face_angles, double h, HalfedgeUVMap uv_map,
+                                         const NamedParameters& np = parameters::default_values())
+{
+  using internal::Cplx;
+  using internal::unit_power;
+  typedef internal::Corner_expression Expr;
+  Integer_grid_map_status st;
+  if(!(h > 0) || !std::isfinite(h)) throw Input_error(Input_error::INVALID_ARGUMENT, "integer_grid_map(): the edge length must be positive");
+  const Intrinsic_mesh<TriangleMesh> im = internal::get_intrinsic_mesh(tm, np);
+  const internal::Mesh_arrays<TriangleMesh>& m = im.arrays();
+  const internal::Topology_arrays& topo = im.topology_arrays();
+  if(topo.components.size() != 1 || !topo.loops.empty())
+    throw Input_error(Input_error::INVALID_ARGUMENT, "integer_grid_map() needs a closed mesh of one component; this one has " +
+                                                     std::to_string(topo.components.size()) + " components and " +
+                                                     std::to_string(topo.loops.size()) + " boundary loops");
+  const std::size_t nv = m.number_of_vertices(), ne = m.number_of_edges(), nf = m.number_of_faces();
+  const double quarter = CGAL_PI / 2;
+
+  // 1. the field combed along a breadth-first tree of the faces: matching 0 across tree edges
+  std::vector<double> theta(nf);
+  for(std::size_t f = 0; f < nf; ++f) theta[f] = get(face_angles, m.faces[f]);
+  std::vector<char> tree_edge(ne, 0), seen(nf, 0);
+  std::vector<int> queue{0};
+  seen[0] = 1;
+  for(std::size_t q = 0; q < queue.size(); ++q) {
+    int x = m.face_halfedge[std::size_t(queue[q])];
+    for(int i = 0; i < 3; ++i, x = m.next[std::size_t(x)]) {
+      const int g = m.face[std::size_t(x ^ 1)];
+      if(g < 0 || seen[std::size_t(g)]) continue;
+      seen[std::size_t(g)] = 1;
+      tree_edge[std::size_t(x >> 1)] = 1;
+      // the field carried into g, and g's direction nearest to it
+      const double carried = theta[std::size_t(queue[q])] + internal::transport_increment(m, x ^ 1);
+      theta[std::size_t(g)] += quarter * std::round((carried - theta[std::size_t(g)]) / quarter);
+      queue.push_back(g);
+    }
+  }
+  // matching r_e: crossing from face(2e+1) into face(2e), theta_L = theta_R + transport + r pi/2
+  std::vector<int> r(ne, 0);
+  for(std::size_t e = 0; e < ne; ++e) {
+    if(tree_edge[e]) continue;
+    const double d = theta[std::size_t(m.face[2 * e])] - theta[std::size_t(m.face[2 * e + 1])] - internal::transport_increment(m, int(2 * e));
+    r[e] = int(std::lround(d / quarter));
+  }
+  // 2. the cut graph: the edges the tree does not cross, pruned of branches to regular vertices
+  std::vector<int> turns(nv, 0);   // quarter turns of the rotation around each vertex
+  for(std::size_t e = 0; e < ne; ++e) {
+    // around the source of halfedge 2e counterclockwise, the walk crosses from face(2e) ... the
+    // sign only matters modulo 4 for the test below; the exact rotation comes from the walk
+    turns[std::size_t(m.source(int(2 * e)))] += r[e];
+    turns[std::size_t(m.target[2 * e])] -= r[e];
+  }
+  std::vector<char> singular(nv, 0);
+  for(std::size_t v = 0; v < nv; ++v) singular[v] = !m.is_isolated(int(v)) && ((turns[v] % 4) + 4) % 4 != 0;
+  std::vector<char> cut(ne, 0);
+  std::vector<int> degree(nv, 0);
+  for(std::size_t e = 0; e < ne; ++e)
+    if(!tree_edge[e]) { cut[e] = 1; ++degree[std::size_t(m.source(int(2 * e)))]; ++degree[std::size_t(m.target[2 * e])]; }
+  {
+    std::vector<int> leaves;
+    for(std::size_t v = 0; v < nv; ++v) if(degree[v] == 1 && !singular[v]) leaves.push_back(int(v));
+    while(!leaves.empty()) {
+      const int v = leaves.back();
+      leaves.pop_back();
+      if(degree[std::size_t(v)] != 1) continue;
+      // its one cut edge
+      int x = m.vertex_out[std::size_t(v)], x0 = x;
+      do { if(cut[std::size_t(x >> 1)]) break; x = m.ccw_out(x); } while(x != x0);
+      cut[std::size_t(x >> 1)] = 0;
+      degree[std::size_t(v)] = 0;
+      const int w = m.target[std::size_t(x)];
+      if(--degree[std::size_t(w)] == 1 && !singular[std::size_t(w)]) leaves.push_back(w);
+    }
+  }
+  for(std::size_t e = 0; e < ne; ++e) st.cut_edges += cut[e];
+  // 3. arcs: chains of cut edges between nodes (degree != 2 or singular); one small unknown each
+  std::vector<int> arc(ne, -1);
+  std::vector<char> arc_forward(ne, 1);   // halfedge 2e runs along its arc
+  int narcs = 0;
+  auto is_node = [&](int v) { return degree[std::size_t(v)] != 2 || singular[std::size_t(v)]; };
+  auto next_cut_out = [&](int x) {   // at target(x), the other cut edge (degree-2 vertex)
+    const int v = m.target[std::size_t(x)];
+    int y = m.vertex_out[std::size_t(v)], y0 = y;
+    do { if(cut[std::size_t(y >> 1)] && (y >> 1) != (x >> 1)) return y; y = m.ccw_out(y); } while(y != y0);
+    return -1;
+  };
+  auto trace = [&](int x) {   // an arc from halfedge x
+    for(;;) {
+      arc[std::size_t(x >> 1)] = narcs;
+      arc_forward[std::size_t(x >> 1)] = (x & 1) == 0;
+      if(is_node(m.target[std::size_t(x)])) break;
+      x = next_cut_out(x);
+      if(x < 0 || arc[std::size_t(x >> 1)] >= 0) break;
+    }
+    ++narcs;
+  };
+  for(std::size_t v = 0; v < nv; ++v) {
+    if(!is_node(int(v)) || degree[v] == 0) continue;
+    int x = m.vertex_out[v], x0 = x;
+    do { if(cut[std::size_t(x >> 1)] && arc[std::size_t(x >> 1)] < 0) trace(x); x = m.ccw_out(x); } while(x != x0);
+  }
+  for(std::size_t e = 0; e < ne; ++e)   // closed loops without a node (a cut graph that is one circle)
+    if(cut[e] && arc[e] < 0) trace(int(2 * e));
+  st.arcs = std::size_t(narcs);
+  // per arc its rotation q: image on its left = i^q image on its right + t
+  std::vector<int> arc_q(std::size_t(narcs), 0);
+  std::vector<char> arc_q_set(std::size_t(narcs), 0);
+  for(std::size_t e = 0; e < ne; ++e) {
+    if(!cut[e]) continue;
+    // across e from face(2e+1) (R) into face(2e) (L): P_L = i^{-r} P_R + t
+    const int q = arc_forward[e] ? -r[e] : r[e];
+    const std::size_t a = std::size_t(arc[e]);
+    if(!arc_q_set[a]) { arc_q[a] = q; arc_q_set[a] = 1; }
+    else if(((arc_q[a] - q) % 4 + 4) % 4 != 0) {
+      st.message = "the field's matching changes along a seam between two regular vertices (a singularity the cut graph misses)";
+      return st;
+    }
+  }
+  // 4. corner expressions. Small unknowns: 0..narcs-1 the arcs' translations, then one position
+  // per singularity. Walking counterclockwise around v from a corner, crossing the edge of
+  // halfedge y (from face(y) into face of ccw_out... ) applies that edge's motion.
+  std::vector<int> sing_index(nv, -1);
+  int nsmall = narcs;
+  for(std::size_t v = 0; v < nv; ++v) if(singular[v]) sing_index[v] = nsmall++;
+  std::vector<int> big(nv, -1);
+  int nbig = 0;
+  for(std::size_t v = 0; v < nv; ++v) if(!singular[v] && !m.is_isolated(int(v))) big[v] = nbig++;
+  std::vector<Expr> corner(2 * ne);   // per halfedge x with a face: the corner at source(x)
+  struct Closing { std::vector<std::pair<int, Cplx>> t; };   // sum c_k s_k = 0
+  std::vector<Closing> closings;
+  for(std::size_t v = 0; v < nv; ++v) {
+    if(m.is_isolated(int(v))) continue;
+    // start right after a cut edge if there is one, so no wedge wraps around
+    int start = m.vertex_out[v];
+    {
+      int x = start;
+      do { if(cut[std::size_t(x >> 1)]) { start = x; break; } x = m.ccw_out(x); } while(x != start);
+    }
+    Expr e;
+    if(singular[v]) { e.vertex = -1; e.add(sing_index[v], Cplx(1, 0)); }
+    else e.vertex = big[v];
+    int x = start;
+    do {
+      corner[std::size_t(x)] = e;   // corner of face(x) at v = source(x)
+      // next corner counterclockwise: in the face of ccw_out(x) = opposite(prev(x)), across the
+      // edge of prev(x), from face(x) into face(prev(x) ^ 1)
+      const int y = m.prev(x);
+      const std::size_t ey = std::size_t(y >> 1);
+      if(cut[ey]) {
+        // crossing from face(y) into face(y ^ 1); y = 2e crosses L -> R, y = 2e + 1 crosses R -> L
+        const bool from_left_of_arc = ((y & 1) == 0) == bool(arc_forward[ey]);
+        const int q = arc_q[std::size_t(arc[ey])];
+        if(from_left_of_arc)   // P_R = i^{-q} (P_L - t)
+          e = e.mapped(unit_power(-q), arc[ey], -unit_power(-q));
+        else                   // P_L = i^{q} P_R + t
+          e = e.mapped(unit_power(q), arc[ey], Cplx(1, 0));
+      }
+      x = m.ccw_out(x);
+    } while(x != start);
+    // closing: the expression reached must equal the start one
+    const Expr& s0 = corner[std::size_t(start)];
+    Closing c;
+    // e = a Z + sum, s0 = Z (big) or the singularity's small unknown
+    if(!singular[v]) {
+      if(std::abs(e.a - Cplx(1, 0)) > 1e-9) {
+        st.message = "vertex " + std::to_string(v) + ": the field turns around it but it was not found singular";
+        return st;
+      }
+      for(const auto& s : e.small) if(std::abs(s.second) > 1e-9) c.t.push_back(s);
+      if(!c.t.empty()) closings.push_back(c);
+    } else {
+      // e.small holds (a) times the singularity's own unknown plus the translations: e - s0 = 0
+      Expr d = e;
+      d.add(sing_index[v], Cplx(-1, 0));
+      for(const auto& s : d.small) if(std::abs(s.second) > 1e-9) c.t.push_back(s);
+      closings.push_back(c);
+    }
+  }
+  for(std::size_t v = 0; v < nv; ++v)
+    if(singular[v]) {
+      int k = ((turns[v] % 4) + 4) % 4;
+      st.singularities.emplace_back(v, k > 2 ? k - 4 : k);
+    }
+  // 5. the energy: per face and side x (corner a = source(x), b = target(x)), the cotan weight of
+  // the opposite corner times |P_b - P_a - s_f e^{-i theta_f} (z_b - z_a)|^2, in real unknowns:
+  // big 2 per vertex, small 2 per small unknown
+  const bool pin = st.singularities.empty();   // no singularity: one vertex holds the translation
+  const int pinned = pin ? 0 : -1;
+  auto bigcol = [&](int b) { return pin ? (b == pinned ? -1 : (b > pinned ? b - 1 : b)) : b; };
+  const int nb = 2 * (pin ? nbig - 1 : nbig), ns = 2 * nsmall;
+  std::vector<Eigen::Triplet<double>> tbb, tbs;
+  Eigen::MatrixXd Hss;
+  Eigen::VectorXd gb, gs;
+  double target_norm = 0;
+  struct Term { std::vector<std::pair<int, double>> b, s; double rhs; };   // one real residual row
+  auto scale = [&](int) { return 1 / h; };
+  std::vector<double> area(nf);
+  auto add_row = [&](const Term& t, double w) {
+    for(const auto& p : t.b) {
+      for(const auto& q : t.b) if(q.first <= p.first) tbb.emplace_back(p.first, q.first, w * p.second * q.second);
+      for(const auto& q : t.s) tbs.emplace_back(p.first, q.first, w * p.second * q.second);
+      gb[p.first] += w * p.second * t.rhs;
+    }
+    for(const auto& p : t.s) {
+      for(const auto& q : t.s) Hss(p.first, q.first) += w * p.second * q.second;
+      gs[p.first] += w * p.second * t.rhs;
+    }
+  };
+  // the real rows of (expression difference) - target, for a complex coefficient c on the
+  // complex unknown (X, Y): Re = c_r X - c_i Y, Im = c_i X + c_r Y
+  auto rows_of = [&](const Expr& pa, const Expr& pb, Cplx target, Term& re, Term& imr) {
+    re = Term(); imr = Term();
+    auto put_big = [&](int v, Cplx c) {
+      if(v < 0) return;
+      const int col = bigcol(v);
+      if(col < 0) return;
+      re.b.emplace_back(2 * col, c.real()); re.b.emplace_back(2 * col + 1, -c.imag());
+      imr.b.emplace_back(2 * col, c.imag()); imr.b.emplace_back(2 * col + 1, c.real());
+    };
+    auto put_small = [&](int k, Cplx c) {
+      re.s.emplace_back(2 * k, c.real()); re.s.emplace_back(2 * k + 1, -c.imag());
+      imr.s.emplace_back(2 * k, c.imag()); imr.s.emplace_back(2 * k + 1, c.real());
+    };
+    if(pa.vertex == pb.vertex && pa.vertex >= 0) put_big(pa.vertex, pb.a - pa.a);
+    else { put_big(pb.vertex, pb.a); put_big(pa.vertex, -pa.a); }
+    Expr d = pb;
+    for(const auto& s : pa.small) d.add(s.first, -s.second);
+    for(const auto& s : d.small) if(std::abs(s.second) > 0) put_small(s.first, s.second);
+    re.rhs = target.real();
+    imr.rhs = target.imag();
+  };
+  // the normal equations with a stiffness per face (1, raised where the map folds: Bommes et
+  // al.'s local stiffening), factored, and their Schur complement S y = rs on the small unknowns
+  Eigen::MatrixXd X, S;   // X = Hbb^-1 Hbs
+  Eigen::VectorXd xg, rs; // xg = Hbb^-1 gb
+  std::vector<double> stiffness(nf, 1.);
+  auto assemble = [&]() -> bool {
+  tbb.clear(); tbs.clear();
+  Hss = Eigen::MatrixXd::Zero(ns, ns);
+  gb = Eigen::VectorXd::Zero(nb); gs = Eigen::VectorXd::Zero(ns);
+  target_norm = 0;
+  for(std::size_t f = 0; f < nf; ++f) {
+    const int x0 = m.face_halfedge[f];
+    const double l0 = m.edge_length(x0), l1 = m.edge_length(m.next[std::size_t(x0)]), l2 = m.edge_length(m.prev(x0));
+    area[f] = triangle_area(l0, l1, l2);
+    const double s = scale(int(f));
+    const Cplx rot = std::polar(s, -theta[f]);
+    target_norm += area[f] * s * s;
+    for(int x = x0, i = 0; i < 3; ++i, x = m.next[std::size_t(x)]) {
+      // cot of the corner opposite side x: at source(prev(x))
+      const int o = m.prev(x);
+      const double lo = m.edge_length(x), la = m.edge_length(m.next[std::size_t(x)]), lb = m.edge_length(o);
+      // the per-face sum over sides with these (possibly negative) weights is A_f |grad(P - target)|^2 >= 0
+      const double wpos = 0.5 * (la * la + lb * lb - lo * lo) / (4 * area[f]);
+      const Cplx edge = std::polar(lo, internal::halfedge_direction(m, x));
+      Term re, imr;
+      rows_of(corner[std::size_t(x)], corner[std::size_t(m.next[std::size_t(x)])], rot * edge, re, imr);
+      add_row(re, wpos * stiffness[f]);
+      add_row(imr, wpos * stiffness[f]);
+    }
+  }
+  // 6. the seamless map: Schur complement on the small unknowns
+  X = Eigen::MatrixXd::Zero(nb, ns);
+  xg = Eigen::VectorXd::Zero(nb);
+  Cholmod_cholesky chol;
+  Eigen::SparseMatrix<double> Hbs(nb, ns);
+  if(nb > 0) {
+    Cholmod_cholesky::Matrix Hbb(nb, nb);
+    Hbb.setFromTriplets(tbb.begin(), tbb.end());
+    Hbb.makeCompressed();
+    std::string msg;
+    if(!chol.factor(Hbb, msg)) { st.message = "the map's system could not be factored: " + msg; return false; }
+    Hbs.setFromTriplets(tbs.begin(), tbs.end());
+    xg = chol.solve(gb);
+    for(int k = 0; k < ns; ++k) {
+      const Eigen::VectorXd col = Eigen::VectorXd(Hbs.col(k));
+      if(col.squaredNorm() > 0) X.col(k) = chol.solve(col);
+    }
+  }
+  S = Hss - Eigen::MatrixXd(Hbs.transpose()) * X;
+  rs = gs - Eigen::VectorXd(Hbs.transpose() * xg);
+  return true;
+  };
+  if(!assemble()) return st;
+  // linear conditions on the small unknowns (the closings, the gauge, then the roundings), kept
+  // as an orthonormal basis Q y = delta of their span (Gram-Schmidt): a condition in that span is
+  // implied by the others and not added again
+  std::vector<Eigen::VectorXd> Q;
+  std::vector<double> delta;
+  auto add_condition = [&](Eigen::VectorXd row, double value) {   // false if implied by the others
+    for(std::size_t j = 0; j < Q.size(); ++j) {
+      const double c = Q[j].dot(row);
+      row -= c * Q[j];
+      value -= c * delta[j];
+    }
+    const double n = row.norm();
+    if(n < 1e-9) return false;
+    Q.push_back(row / n);
+    delta.push_back(value / n);
+    return true;
+  };
+  for(const Closing& c : closings) {
+    Eigen::VectorXd re = Eigen::VectorXd::Zero(ns), imr = Eigen::VectorXd::Zero(ns);
+    for(const auto& p : c.t) {
+      re[2 * p.first] += p.second.real(); re[2 * p.first + 1] -= p.second.imag();
+      imr[2 * p.first] += p.second.imag(); imr[2 * p.first + 1] += p.second.real();
+    }
+    add_condition(re, 0);
+    add_condition(imr, 0);
+  }
+  auto unit_row = [&](int k) { Eigen::VectorXd e = Eigen::VectorXd::Zero(ns); e[k] = 1; return e; };
+  if(!pin) {   // the first singularity at the origin
+    const int k = sing_index[st.singularities[0].first];
+    add_condition(unit_row(2 * k), 0);
+    add_condition(unit_row(2 * k + 1), 0);
+  }
+  // minimise y^T S y - 2 rs^T y subject to Q y = delta (independent rows): the KKT system
+  auto solve_small = [&](Eigen::VectorXd& y) {
+    const Eigen::Index mq = Eigen::Index(Q.size());
+    Eigen::MatrixXd K = Eigen::MatrixXd::Zero(ns + mq, ns + mq);
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(ns + mq);
+    K.topLeftCorner(ns, ns) = S;
+    rhs.head(ns) = rs;
+    for(Eigen::Index i = 0; i < mq; ++i) {
+      K.block(ns + i, 0, 1, ns) = Q[std::size_t(i)].transpose();
+      K.block(0, ns + i, ns, 1) = Q[std::size_t(i)];
+      rhs[ns + i] = delta[std::size_t(i)];
+    }
+    const Eigen::VectorXd sol = K.partialPivLu().solve(rhs);
+    y = sol.head(ns);
+    return sol.allFinite();
+  };
+  Eigen::VectorXd y, z;
+  auto value = [&](const Expr& e) {
+    Cplx p(0, 0);
+    if(e.vertex >= 0) {
+      const int col = bigcol(e.vertex);
+      if(col >= 0) p += e.a * Cplx(z[2 * col], z[2 * col + 1]);
+    }
+    for(const auto& s : e.small) p += s.second * Cplx(y[2 * s.first], y[2 * s.first + 1]);
+    return p;
+  };
+  auto folded = [&](std::size_t f) {
+    const int x0 = m.face_halfedge[f], x1 = m.next[std::size_t(x0)], x2 = m.next[std::size_t(x1)];
+    const Cplx p0 = value(corner[std::size_t(x0)]), p1 = value(corner[std::size_t(x1)]), p2 = value(corner[std::size_t(x2)]);
+    return !((p1 - p0).real() * (p2 - p0).imag() - (p1 - p0).imag() * (p2 - p0).real() > 0);
+  };
+  // local stiffening: the faces around a folded one weigh three times more, re-solved, up to
+  // eight times (each a new factorisation)
+  auto unfold = [&]() -> bool {
+    for(int round = 0; round < 8; ++round) {
+      z = nb > 0 ? Eigen::VectorXd(xg - X * y) : Eigen::VectorXd();
+      std::vector<char> stiffen(nf, 0);
+      bool any = false;
+      for(std::size_t f = 0; f < nf; ++f) {
+        if(!folded(f)) continue;
+        any = true;
+        int x = m.face_halfedge[f];
+        for(int i = 0; i < 3; ++i, x = m.next[std::size_t(x)]) {   // the faces around its corners
+          int g = m.vertex_out[std::size_t(m.source(x))], g0 = g;
+          do { if(m.face[std::size_t(g)] >= 0) stiffen[std::size_t(m.face[std::size_t(g)])] = 1; g = m.ccw_out(g); } while(g != g0);
+        }
+      }
+      if(!any) return true;
+      for(std::size_t f = 0; f < nf; ++f) if(stiffen[f]) stiffness[f] *= 3;
+      ++st.stiffening_rounds;
+      if(!assemble() || !solve_small(y)) return false;
+    }
+    z = nb > 0 ? Eigen::VectorXd(xg - X * y) : Eigen::VectorXd();
+    return true;
+  };
+  if(!solve_small(y)) { st.message = "the seams' conditions are inconsistent"; return st; }
+  if(!unfold()) { if(st.message.empty()) st.message = "the stiffened system could not be solved"; return st; }
+  const Eigen::VectorXd y_seamless = y;
+  // 7. rounding: singularity positions, then translations, the nearest to an integer first.
+  // Rounding one value can imply others through the closings with a non-unit coefficient (a seam
+  // that leaves and re-enters the same singularity: 1 - i^k); the value is then moved to the next
+  // integers until every implied value is an integer too.
+  auto implied_by = [&](int k) {   // e_k in the span of Q
+    double r2 = 1;
+    for(const Eigen::VectorXd& q : Q) r2 -= q[k] * q[k];
+    return r2 < 1e-12;
+  };
+  for(int phase = 0; phase < 2; ++phase) {
+    std::vector<int> todo;
+    for(int k = 0; k < nsmall; ++k)
+      if((phase == 0) == (k >= narcs)) { todo.push_back(2 * k); todo.push_back(2 * k + 1); }
+    while(!todo.empty()) {
+      // the implied ones first: checked, not fixed
+      bool any = false;
+      for(std::size_t i = 0; i < todo.size();) {
+        const int k = todo[i];
+        if(!implied_by(k)) { ++i; continue; }
+        if(std::abs(y[k] - std::round(y[k])) > 1e-6) {
+          st.message = "a seam translation implied by the others is not an integer (" + std::to_string(y[k]) + ")";
+          return st;
+        }
+        ++st.implied;
+        todo.erase(todo.begin() + std::ptrdiff_t(i));
+        any = true;
+      }
+      if(any) continue;
+      std::size_t best = 0;
+      for(std::size_t i = 1; i < todo.size(); ++i)
+        if(std::abs(y[todo[i]] - std::round(y[todo[i]])) < std::abs(y[todo[best]] - std::round(y[todo[best]]))) best = i;
+      const int k = todo[best];
+      todo.erase(todo.begin() + std::ptrdiff_t(best));
+      const double r0 = std::round(y[k]), dir = y[k] >= r0 ? 1 : -1;
+      const std::vector<Eigen::VectorXd> Q0 = Q;
+      const std::vector<double> delta0 = delta;
+      bool placed = false;
+      for(double v : {r0, r0 + dir, r0 - dir, r0 + 2 * dir, r0 - 2 * dir}) {
+        Q = Q0;
+        delta = delta0;
+        add_condition(unit_row(k), v);
+        Eigen::VectorXd yt;
+        if(!solve_small(yt)) continue;
+        bool integral = true;
+        for(int j : todo) if(implied_by(j) && std::abs(yt[j] - std::round(yt[j])) > 1e-6) { integral = false; break; }
+        if(!integral) continue;
+        y = yt;
+        placed = true;
+        break;
+      }
+      if(!placed) {
+        st.message = "no integer value near " + std::to_string(y[k]) + " keeps the seams' translations integers";
+        return st;
+      }
+      ++st.rounded;
+    }
+  }
+  if(!unfold()) { if(st.message.empty()) st.message = "the stiffened system could not be solved"; return st; }
+  // 8. the vertex unknowns, the corners' images and the read-back
+  auto folds = [&]() {
+    std::size_t n = 0;
+    for(std::size_t f = 0; f < nf; ++f) {
+      const int x0 = m.face_halfedge[f], x1 = m.next[std::size_t(x0)], x2 = m.next[std::size_t(x1)];
+      const Cplx p0 = value(corner[std::size_t(x0)]), p1 = value(corner[std::size_t(x1)]), p2 = value(corner[std::size_t(x2)]);
+      n += !((p1 - p0).real() * (p2 - p0).imag() - (p1 - p0).imag() * (p2 - p0).real() > 0);
+    }
+    return n;
+  };
+  auto map_energy = [&]() {
+    double energy = 0;
+    for(std::size_t f = 0; f < nf; ++f) {
+      const int x0 = m.face_halfedge[f];
+      const Cplx rot = std::polar(scale(int(f)), -theta[f]);
+      for(int x = x0, i = 0; i < 3; ++i, x = m.next[std::size_t(x)]) {
+        const double lo = m.edge_length(x), la = m.edge_length(m.next[std::size_t(x)]), lb = m.edge_length(m.prev(x));
+        const double w = 0.5 * (la * la + lb * lb - lo * lo) / (4 * area[f]);
+        const Cplx diff = value(corner[std::size_t(m.next[std::size_t(x)])]) - value(corner[std::size_t(x)]) -
+                          rot * std::polar(lo, internal::halfedge_direction(m, x));
+        energy += w * std::norm(diff);
+      }
+    }
+    return energy / target_norm;
+  };
+  {
+    Eigen::VectorXd yi = y;
+    y = y_seamless;
+    z = nb > 0 ? Eigen::VectorXd(xg - X * y) : Eigen::VectorXd();
+    st.seamless_energy = map_energy();
+    st.seamless_folded_triangles = folds();
+    y = yi;
+  }
+  z = nb > 0 ? Eigen::VectorXd(xg - X * y) : Eigen::VectorXd();
+  st.integer_energy = map_energy();
+  st.min_area_ratio = std::numeric_limits<double>::infinity();
+  for(std::size_t f = 0; f < nf; ++f) {
+    const int x0 = m.face_halfedge[f], x1 = m.next[std::size_t(x0)], x2 = m.next[std::size_t(x1)];
+    const Cplx p0 = value(corner[std::size_t(x0)]), p1 = value(corner[std::size_t(x1)]), p2 = value(corner[std::size_t(x2)]);
+    for(int x : {x0, x1, x2}) {
+      const Cplx p = value(corner[std::size_t(m.next[std::size_t(x)])]);   // target(x) = source(next(x))
+      put(uv_map, m.halfedge_descriptor_of(x, tm), std::array<double, 2>{{p.real(), p.imag()}});
+    }
+    const double a = 0.5 * ((p1 - p0).real() * (p2 - p0).imag() - (p1 - p0).imag() * (p2 - p0).real());
+    const double s = scale(int(f));
+    const double ratio = a / (area[f] * s * s);
+    st.min_area_ratio = (std::min)(st.min_area_ratio, ratio);
+    if(!(a > 0)) ++st.folded_triangles;
+  }
+  st.success = st.folded_triangles == 0;
+  if(!st.success)
+    st.message = std::to_string(st.folded_triangles) + " triangles are folded by the integer-grid map (singularities or seams "
+                 "closer than about one grid unit: try a smaller edge length)";
+  return st;
+}
+
+} // namespace Surface_mesh_direction_fields
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTEGER_GRID_MAP_H
