@@ -485,22 +485,27 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
     return !((p1 - p0).real() * (p2 - p0).imag() - (p1 - p0).imag() * (p2 - p0).real() > 0);
   };
   // local stiffening: the faces around a folded one weigh three times more, re-solved, up to
-  // eight times (each a new factorisation)
+  // eight times (each a new factorisation), or until two rounds in a row fold as many triangles
   auto unfold = [&]() -> bool {
+    std::size_t best = std::size_t(-1);
+    int stalled = 0;
     for(int round = 0; round < 8; ++round) {
       z = nb > 0 ? Eigen::VectorXd(xg - X * y) : Eigen::VectorXd();
       std::vector<char> stiffen(nf, 0);
-      bool any = false;
+      std::size_t count = 0;
+      for(std::size_t f = 0; f < nf; ++f) count += folded(f);
+      if(count == 0) return true;
+      stalled = count < best ? 0 : stalled + 1;
+      best = (std::min)(best, count);
+      if(stalled >= 2) return true;
       for(std::size_t f = 0; f < nf; ++f) {
         if(!folded(f)) continue;
-        any = true;
         int x = m.face_halfedge[f];
         for(int i = 0; i < 3; ++i, x = m.next[std::size_t(x)]) {   // the faces around its corners
           int g = m.vertex_out[std::size_t(m.source(x))], g0 = g;
           do { if(m.face[std::size_t(g)] >= 0) stiffen[std::size_t(m.face[std::size_t(g)])] = 1; g = m.ccw_out(g); } while(g != g0);
         }
       }
-      if(!any) return true;
       for(std::size_t f = 0; f < nf; ++f) if(stiffen[f]) stiffness[f] *= 3;
       ++st.stiffening_rounds;
       if(!assemble() || !solve_small(y)) return false;
