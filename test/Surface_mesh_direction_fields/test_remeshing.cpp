@@ -1168,7 +1168,7 @@ void integer_grid_maps(const std::string& dir)
       const auto ts = SMDF::tessellate_flat_metric(mesh, dev, SMDF::SQUARE_GRID, 1., out);
       std::map<int, std::size_t> expected;
       for(const auto& c : cs.cones) expected[4 - int(std::lround(c.second / (CGAL_PI / 2)))]++;
-      // (the tessellation of maps with cones fails on most meshes: being investigated)
+      // (2 of the 11 unfolded maps are not tessellated yet: faces at a cone found twice or missed)
       if(ts.success) check_remesh(mesh, mesh, out, ts, 4, expected, double(ts.faces), what + ", tessellated");
       else std::cout << what << ": not tessellated: " << ts.message << std::endl;
       tessellated += ts.success;
@@ -1176,7 +1176,7 @@ void integer_grid_maps(const std::string& dir)
   });
   std::cout << "integer-grid maps: " << unfolded << " of " << runs << " without a fold (" << skipped << " meshes whose cone metric needs flips skipped), "
             << tessellated << " tessellated" << std::endl;
-  SMDF_CHECK(runs >= 8 && unfolded * 10 >= runs * 8 && tessellated >= 3);
+  SMDF_CHECK(runs >= 8 && unfolded * 10 >= runs * 8 && tessellated >= 7);   // measured: 8 of 11
 }
 
 } // namespace

@@ -415,26 +415,37 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
     return next_face;
   };
   auto walk = [&](int f, Point_2 from, Point_2 to, internal::Lattice_motion& carried, int& where) -> bool {
-    // Starting at a boundary vertex: first turn around it to the face whose angle holds the
-    // direction, counterclockwise, or clockwise where the boundary stops that way (a straight
-    // walk from the wrong face would leave the surface; inside, the walk turns by itself).
+    // Starting at a boundary vertex or a cone: first turn around it to the face whose angle holds
+    // the direction, counterclockwise, or clockwise where the boundary stops that way (a straight
+    // walk from the wrong face would leave the surface, or go round a cone the long way, whose
+    // angle is not 2 pi; at a regular interior vertex the walk turns by itself).
     const int g0 = corner_at(f, from);
-    if(g0 >= 0 && m.is_boundary_vertex(m.source(g0)) && !in_angle(f, g0, to)) {
+    const bool at_cone = g0 >= 0 && dev.cone_index_[std::size_t(m.source(g0))] >= 0;
+    if(g0 >= 0 && (m.is_boundary_vertex(m.source(g0)) || at_cone) && !in_angle(f, g0, to)) {
+      // around a cone both ways reach a face holding the direction, at different angles: the
+      // one reached by the smaller turn is the grid's
       bool turned = false;
-      for(int way = 0; way < 2 && !turned; ++way) {
+      double best_turn = 1e300;
+      int bf = f; Point_2 bfrom = from, bto = to; internal::Lattice_motion bc = carried;
+      for(int way = 0; way < 2 && (!turned || at_cone); ++way) {
         int ff = f, g = g0;
         Point_2 fr = from, tt = to;
         internal::Lattice_motion c = carried;
-        for(std::size_t step = 0; step <= nf && !turned; ++step) {
+        double turn = 0;
+        bool found = false;
+        for(std::size_t step = 0; step <= nf && !found; ++step) {
           const int cross = way == 0 ? m.next[std::size_t(m.next[std::size_t(g)])] : g;   // into the corner, or out of it
+          turn += m.angle[std::size_t(g)];
           const int nf2 = cross_edge(cross, fr, tt, c);
           if(nf2 < 0) break;
           ff = nf2;
           g = corner_at(ff, fr);
           if(g < 0) break;
-          if(in_angle(ff, g, tt)) { f = ff; from = fr; to = tt; carried = c; turned = true; }
+          if(in_angle(ff, g, tt)) found = true;
         }
+        if(found && turn < best_turn) { best_turn = turn; bf = ff; bfrom = fr; bto = tt; bc = c; turned = true; }
       }
+      if(turned) { f = bf; from = bfrom; to = bto; carried = bc; }
     }
     for(std::size_t it = 0; it < 4 * nf + 16; ++it) {
       int exit = -1, any = -1;
