@@ -542,6 +542,33 @@ def test_remesh(smdf, c, torus, tmp):
                "polyhedron")
     rc, o, err = smdf.run(["remesh", torus, "--edge-length", "0.1", "--out", out])
     c.check(rc == 3 and b"not symmetries" in err, "remesh torus (curved metric): exit 3, the cut graph's motions fail")
+    # --place-cones: cones placed, their metric, the trivial connection's cross field and an
+    # integer-grid map, any genus; read back from the remesh (valences at the placed cones)
+    for name, path, quads in (("torus", torus, 1500), ("spot", spot, 2500)):
+        auto = os.path.join(tmp, "auto_%s.obj" % name)
+        r = smdf.json(["remesh", path, "--place-cones", "--faces", str(quads), "--out", auto], "remesh %s --place-cones" % name)
+        if not r:
+            continue
+        placed = {x["vertex"]: x["curvature"] for x in r.get("placed_cones", [])}
+        irregular = r.get("irregular_vertices", [])
+        want = sorted(int(round(4 - k / (math.pi / 2))) for k in placed.values())
+        got = sorted(x["valence"] for x in irregular)
+        q = r.get("quality", {})
+        d = r.get("distance_over_edge_length", {})
+        c.check(r.get("success") is True and list(r.get("faces_by_size", {})) == ["4"] and got == want and
+                all(x.get("cone") is not None for x in irregular) and r.get("inverted_faces") == 0,
+                "remesh %s --place-cones: pure quads, irregular vertices exactly the %d placed cones with valence 4 - K/(pi/2) (%r vs %r)"
+                % (name, len(placed), got, want))
+        c.check(q.get("min_scaled_jacobian", -1) > 0 and d.get("vertices_to_input", 1) < 1e-9 and d.get("remesh_to_input", 9) <= 1.0 and
+                abs(r.get("area_ratio", 0) - 1) < 0.03 and abs(r.get("faces_by_size", {}).get("4", 0) - quads) < 0.2 * quads,
+                "remesh %s --place-cones: min scaled Jacobian %r > 0, on the input, distance %r, area ratio %r, %r quads for %d"
+                % (name, q.get("min_scaled_jacobian"), d.get("remesh_to_input"), r.get("area_ratio"), r.get("faces_by_size"), quads))
+        g = r.get("integer_grid_map", {})
+        c.check(g.get("success") is True and g.get("folded_triangles") == 0 and g.get("singularities") == len(placed),
+                "remesh %s --place-cones: integer-grid map without folds, its singularities the placed cones (%r)" % (name, g))
+    smdf.error(["remesh", spot, "--place-cones", "--cones", "2202:pi/2", "--faces", "500", "--out", out], "remesh --place-cones with --cones", 2, "--place-cones")
+    smdf.error(["remesh", spot, "--place-cones", "--grid", "triangle", "--faces", "500", "--out", out], "remesh --place-cones triangles", 2, "quad")
+    smdf.error(["remesh", spot, "--distortion-bound", "1", "--faces", "500", "--out", out], "remesh --distortion-bound alone", 2, "--place-cones")
     smdf.error(["remesh", cube, "--edge-length", "0.25"], "remesh without --out", 2, "--out")
     smdf.error(["remesh", cube, "--edge-length", "0.25", "--faces", "10", "--out", out], "remesh: both sizes", 2, "one of")
     smdf.error(["remesh", cube, "--grid", "hex", "--edge-length", "0.25", "--out", out], "remesh: bad grid", 2, "quad")

@@ -19,6 +19,9 @@
 #include <CGAL/Surface_mesh_direction_fields/topology.h>
 #include <CGAL/Surface_mesh_direction_fields/polycube_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/polyhedron_remeshing.h>
+#include <CGAL/Surface_mesh_direction_fields/remeshing_cones.h>
+#include <CGAL/Surface_mesh_direction_fields/integer_grid_map.h>
+#include <CGAL/Surface_mesh_direction_fields/compute_trivial_connection.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
@@ -44,6 +47,16 @@ double metric_area(const Mesh& mesh, const Edge_length_property& l)
     const double x = l[edge(h, mesh)], y = l[edge(next(h, mesh), mesh)], z = l[edge(prev(h, mesh), mesh)];
     const double s = 0.5 * (x + y + z);
     a += std::sqrt((std::max)(0., s * (s - x) * (s - y) * (s - z)));
+  }
+  return a;
+}
+
+double surface_area_of(const Mesh& mesh)
+{
+  double a = 0;
+  for(face_descriptor f : faces(mesh)) {
+    const halfedge_descriptor h = halfedge(f, mesh);
+    a += std::sqrt(CGAL::squared_area(mesh.point(source(h, mesh)), mesh.point(target(h, mesh)), mesh.point(target(next(h, mesh), mesh))));
   }
   return a;
 }
@@ -102,6 +115,18 @@ Json run_remesh(const Args& args)
     throw Usage_error("give at most one of --cones and --lengths (the lengths file is the metric)");
   if((args.has("cones") || args.has("cone-indices")) && polycube == "obelisk")
     throw Usage_error("--polycube obelisk places its own nine cones; with --cones give the polyhedron as a file");
+  const bool place = args.has("place-cones");
+  if(place && (args.has("cones") || args.has("cone-indices") || args.has("lengths") || args.has("polycube")))
+    throw Usage_error("--place-cones chooses the cones itself: give none of --cones, --cone-indices, --lengths and --polycube");
+  if(place && grid_name != "quad") throw Usage_error("--place-cones makes an integer-grid map for --grid quad");
+  if(!place && (args.has("distortion-bound") || args.has("max-cones")))
+    throw Usage_error("--distortion-bound and --max-cones apply to --place-cones");
+  const double distortion_bound = place ? args.real("distortion-bound", 2.0) : 0;
+  if(place && !(distortion_bound > 0 && std::isfinite(distortion_bound)))
+    throw Usage_error("option --distortion-bound expects a positive number, got '" + args.value("distortion-bound") + "'");
+  const long max_cones = place ? args.integer("max-cones", 500) : 0;
+  if(place && (max_cones < 1 || max_cones > 100000))
+    throw Usage_error("option --max-cones expects an integer in [1, 100000], got '" + args.value("max-cones") + "'");
   const SMDF::Svg_options svg_check = svg_options(args);   // usage errors of --view and --width
   (void)svg_check;
 
@@ -183,6 +208,94 @@ Json run_remesh(const Args& args)
       throw Failed_result{out, file + ": the flat cone metric with these cones does not converge on the input triangulation" +
                                    std::string(surface == &refined ? " nor on its Delaunay refinement: " : ": ") + cm.message, 3};
     }
+  } else if(place) {
+    // cones placed for low distortion, their flat cone metric on the input's edges, the cross
+    // field of the trivial connection on it, and the integer-grid map (grid units) whose edge
+    // lengths are the metric to tessellate
+    const SMDF::Mesh_topology<Mesh> topo = SMDF::mesh_topology(mesh);
+    if(topo.components.size() != 1 || !topo.is_closed())
+      throw Error(file + ": --place-cones needs a closed mesh of one component; this one has " + std::to_string(topo.components.size()) +
+                  " component(s) and " + std::to_string(topo.boundary_loops.size()) + " boundary loop(s) [invalid_input]");
+    stage("cone placement");
+    Edge_length_property placed = mesh.add_property_map<edge_descriptor, double>("e:smdf_placed_length", 0.).first;
+    const auto ps = on_file(file, [&] {
+      return SMDF::place_remeshing_cones(mesh, placed, SMDF::parameters::symmetry_order(4).distortion_bound(distortion_bound)
+                                                           .maximum_number_of_cones(int(max_cones)));
+    });
+    Json pl = Json::object(), pc = Json::array();
+    for(const auto& c : ps.cones) {
+      Json o = Json::object();
+      o["vertex"] = index(c.first);
+      o["curvature"] = c.second;
+      pc.push_back(std::move(o));
+    }
+    out["placed_cones"] = std::move(pc);
+    pl["success"] = ps.success;
+    pl["message"] = ps.message;
+    pl["distortion_bound"] = ps.distortion_bound;
+    pl["scale_spread"] = ps.scale_spread;
+    out["placement"] = std::move(pl);
+    metric["source"] = "placed cones";
+    if(!ps.metric.converged) {
+      out["metric"] = metric;
+      out["success"] = false;
+      throw Failed_result{out, file + ": --place-cones: " + ps.message, 3};
+    }
+    stage("flat cone metric on the input's edges");
+    auto targets = mesh.add_property_map<vertex_descriptor, double>("v:smdf_remesh_target", 0.).first;
+    std::vector<std::pair<vertex_descriptor, double>> indices;
+    for(const auto& c : ps.cones) { targets[c.first] = c.second; indices.emplace_back(c.first, c.second / (2 * CGAL_PI)); }
+    lengths = mesh.add_property_map<edge_descriptor, double>("e:smdf_remesh_length", 0.).first;
+    const SMDF::Cone_metric_status cm = on_file(file, [&] {
+      return SMDF::compute_cone_metric(mesh, targets, lengths, SMDF::parameters::intrinsic_edge_flips(false));
+    });
+    metric["converged"] = cm.converged;
+    metric["max_curvature_error"] = cm.max_curvature_error;
+    if(!cm.converged) {
+      out["metric"] = metric;
+      out["success"] = false;
+      throw Failed_result{out, file + ": the flat cone metric of the placed cones needs intrinsic edge flips on this mesh (" + cm.message +
+                                   "); the integer-grid map needs it on the input's edges, which is not supported yet", 3};
+    }
+    stage("cross field and integer-grid map");
+    auto adjustment = mesh.add_property_map<edge_descriptor, double>("e:smdf_remesh_adjustment", 0.).first;
+    auto field = mesh.add_property_map<face_descriptor, double>("f:smdf_remesh_field", 0.).first;
+    const SMDF::Trivial_connection_status ts = on_file(file, [&] {
+      return SMDF::compute_trivial_connection(mesh, indices, adjustment, SMDF::parameters::edge_length_map(lengths).symmetry_order(4)
+                                                                           .smoothest_generator_turning_numbers(true).face_angle_map(field));
+    });
+    if(!ts.success) {
+      out["metric"] = metric;
+      out["success"] = false;
+      throw Failed_result{out, file + ": the cross field of the placed cones failed: " + ts.message, 3};
+    }
+    const double hm = requested_h > 0 ? requested_h : std::sqrt(metric_area(mesh, lengths) / double(requested_faces));
+    auto uv = mesh.add_property_map<halfedge_descriptor, std::array<double, 2>>("h:smdf_remesh_uv").first;
+    const SMDF::Integer_grid_map_status gs = on_file(file, [&] {
+      return SMDF::integer_grid_map(mesh, field, hm, uv, SMDF::parameters::edge_length_map(lengths));
+    });
+    Json ig = Json::object();
+    ig["success"] = gs.success;
+    ig["message"] = gs.message;
+    ig["singularities"] = gs.singularities.size();
+    ig["seams"] = gs.arcs;
+    ig["rounded_values"] = gs.rounded;
+    ig["folded_triangles"] = gs.folded_triangles;
+    ig["stiffening_rounds"] = gs.stiffening_rounds;
+    ig["seamless_energy"] = gs.seamless_energy;
+    ig["integer_energy"] = gs.integer_energy;
+    ig["min_area_ratio"] = gs.min_area_ratio;
+    out["integer_grid_map"] = std::move(ig);
+    if(!gs.success) {
+      out["metric"] = metric;
+      out["success"] = false;
+      throw Failed_result{out, file + ": integer-grid map: " + gs.message, 3};
+    }
+    for(edge_descriptor e : edges(mesh)) {   // the map's lengths, in grid units
+      const halfedge_descriptor x = halfedge(e, mesh);
+      const std::array<double, 2> a = uv[prev(x, mesh)], b = uv[x];
+      lengths[e] = std::hypot(b[0] - a[0], b[1] - a[1]);
+    }
   } else {
     lengths = mesh.add_property_map<edge_descriptor, double>("e:smdf_remesh_length", 0.).first;
     for(edge_descriptor e : edges(mesh)) lengths[e] = std::sqrt(CGAL::squared_distance(mesh.point(source(e, mesh)), mesh.point(target(e, mesh))));
@@ -205,7 +318,7 @@ Json run_remesh(const Args& args)
     if(!cm.converged) for(vertex_descriptor v : vertices(mesh)) u[v] = 0;
     metric_s += clock.lap();   // the flat cone metric is the metric; compensation_s is P's
   };
-  double h = requested_h > 0 ? requested_h : std::sqrt(metric_area(*surface, lengths) / (double(requested_faces) * unit_area));
+  double h = place ? 1. : requested_h > 0 ? requested_h : std::sqrt(metric_area(*surface, lengths) / (double(requested_faces) * unit_area));
   // A file that describes a box (six quadrilaterals glued as a cube's) gets the box's own
   // metric, scaled along its three axes, instead of six equal squares.
   bool file_box = false;
@@ -417,7 +530,7 @@ Json run_remesh(const Args& args)
   const auto dev = on_file(file, [&] { return SMDF::develop_flat_metric(*surface, SMDF::parameters::edge_length_map(lengths)); });
   Mesh remesh;
   SMDF::Grid_tessellation_status st = SMDF::tessellate_flat_metric(*surface, dev, grid, h, remesh);
-  if(!st.success && requested_faces > 0 && st.compatibility.compatible && st.compatibility.spacing > 0 &&
+  if(!st.success && !place && requested_faces > 0 && st.compatibility.compatible && st.compatibility.spacing > 0 &&
      st.message.find("does not divide") != std::string::npos) {
     const double s = st.compatibility.spacing, wx = grid == SMDF::SQUARE_GRID ? 0. : 0.5, wy = grid == SMDF::SQUARE_GRID ? 1. : std::sqrt(3.) / 2;
     double best = 0;
@@ -482,7 +595,8 @@ Json run_remesh(const Args& args)
     out["irregular_vertices"] = std::move(irr);
     out["inverted_faces"] = inverted;
     out["quality"] = remesh_quality(remesh);
-    out["distance_over_edge_length"] = remesh_distances(mesh, remesh, h);
+    // (the integer-grid map's grid edge is 1 in its own units: on the surface, the mean quad's side)
+    out["distance_over_edge_length"] = remesh_distances(mesh, remesh, place ? std::sqrt(surface_area_of(mesh) / double(num_faces(remesh))) : h);
     out["area_ratio"] = remesh_area_ratio(mesh, remesh);
     if(!CGAL::IO::write_polygon_mesh(out_file, remesh, CGAL::parameters::stream_precision(17)))
       throw file_error(out_file, "cannot write the remesh (the extension must be .off or .obj)", "output");
@@ -514,6 +628,9 @@ Command remesh_command()
            {"segments", "relaxed|ricci", "with --polycube: how the pieces between the polyhedron's edges are mapped onto its faces: relaxed (default: stretch-minimising Tutte embedding relaxed as rigidly as possible, grid cells of even size) or ricci (Lai et al.: each piece flattened by Ricci flow to its polygon, conformal; the two pieces beside an edge path disagree on its vertices, whose mean is taken: max_side_parameter_gap)"},
            {"relaxation", "K", "with --polycube: one round of stretch-minimising reweighting, then at most K steps of as-rigid-as-possible relaxation of the polyhedron's charts (fewer once a triangle about to fold throttles a step below 1 %) and 3K sweeps across its edges near the paths (default 10; 0: the plain Tutte embedding)"},
            {"no-untangle", "", "keep the grid's faces that come out inverted on the surface (default: their vertices are moved along the input until none is, the cones held, or slid along the surface where holding them leaves faces inverted, then quads folded at a corner unfolded as far as such moves can; reported as untangle)"},
+           {"place-cones", "", "closed meshes, quads: place the cones (cone-metric --place-cones), compute their flat cone metric on the input's edges, the cross field of the trivial connection on it and an integer-grid map, and tessellate that (any genus; see the manual)"},
+           {"distortion-bound", "B", "with --place-cones: the cone metric's log scale within B (default 2)"},
+           {"max-cones", "n", "with --place-cones: at most n cones (default 500)"},
            {"progress", "", "report each stage on stderr with the elapsed time"}},
           "regular quad or triangle remesh from a flat cone metric",
           "Lai et al. 2010, section 5: develops a flat cone metric of the mesh (its own edge lengths,\n"
@@ -575,7 +692,17 @@ Command remesh_command()
           "Exit code 3 (JSON printed) when the metric is\n"
           "incompatible with the grid, the edge length does not fit its lattice, or the read-back\n"
           "fails (valences, inverted faces, the polyhedron test); the remesh is still written when its\n"
-          "faces exist.\n",
+          "faces exist.\n"
+          "--place-cones (closed meshes of any genus, quads): the cones are placed as by\n"
+          "cone-metric --place-cones, their flat cone metric is computed on the input's edges\n"
+          "(exit 3 if it needs flips), the trivial connection's cross field with those singularities\n"
+          "(smoothest turning around the handles) is integrated into an integer-grid map (seams:\n"
+          "rotations by multiples of pi/2 and integer translations; singularities on grid points;\n"
+          "exit 3 if a triangle folds), whose edge lengths are the metric tessellated with edge length\n"
+          "1 (edge_length 1 in grid units). The JSON adds placed_cones: [{vertex, curvature}],\n"
+          "placement: {success, message, distortion_bound, scale_spread} and integer_grid_map:\n"
+          "{success, message, singularities, seams, rounded_values, folded_triangles,\n"
+          "stiffening_rounds, seamless_energy, integer_energy, min_area_ratio}.\n",
           run_remesh};
 }
 
