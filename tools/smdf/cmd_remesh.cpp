@@ -242,37 +242,56 @@ Json run_remesh(const Args& args)
       throw Failed_result{out, file + ": --place-cones: " + ps.message, 3};
     }
     stage("flat cone metric on the input's edges");
-    auto targets = mesh.add_property_map<vertex_descriptor, double>("v:smdf_remesh_target", 0.).first;
     std::vector<std::pair<vertex_descriptor, double>> indices;
-    for(const auto& c : ps.cones) { targets[c.first] = c.second; indices.emplace_back(c.first, c.second / (2 * CGAL_PI)); }
-    lengths = mesh.add_property_map<edge_descriptor, double>("e:smdf_remesh_length", 0.).first;
-    const SMDF::Cone_metric_status cm = on_file(file, [&] {
-      return SMDF::compute_cone_metric(mesh, targets, lengths, SMDF::parameters::intrinsic_edge_flips(false));
-    });
+    for(const auto& c : ps.cones) indices.emplace_back(c.first, c.second / (2 * CGAL_PI));
+    // the metric without flips on a triangulation `on` of the surface (the input, or its
+    // conforming Delaunay refinement, which keeps the input's vertex indices)
+    auto metric_on = [&](Mesh& on) {
+      auto targets = on.add_property_map<vertex_descriptor, double>("v:smdf_remesh_target", 0.).first;
+      for(const auto& c : indices) targets[c.first] = c.second * 2 * CGAL_PI;
+      lengths = on.add_property_map<edge_descriptor, double>("e:smdf_remesh_length", 0.).first;
+      return on_file(file, [&] { return SMDF::compute_cone_metric(on, targets, lengths, SMDF::parameters::intrinsic_edge_flips(false)); });
+    };
+    SMDF::Cone_metric_status cm = metric_on(mesh);
+    if(!cm.converged) {
+      stage("flat cone metric on the Delaunay refinement");
+      const SMDF::Delaunay_refinement_status rs = on_file(file, [&] { return SMDF::conforming_delaunay_refinement(mesh, refined); });
+      Json r = Json::object();
+      r["input_triangulation_message"] = cm.message;
+      r["success"] = rs.success;
+      r["faces"] = rs.faces;
+      r["inserted_vertices"] = rs.inserted.size();
+      metric["delaunay_refinement"] = std::move(r);
+      if(rs.success) {
+        cm = metric_on(refined);
+        surface = &refined;
+      }
+    }
+    Mesh& on = *surface;
     metric["converged"] = cm.converged;
     metric["max_curvature_error"] = cm.max_curvature_error;
     if(!cm.converged) {
       out["metric"] = metric;
       out["success"] = false;
-      throw Failed_result{out, file + ": the flat cone metric of the placed cones needs intrinsic edge flips on this mesh (" + cm.message +
-                                   "); the integer-grid map needs it on the input's edges, which is not supported yet", 3};
+      throw Failed_result{out, file + ": the flat cone metric of the placed cones converges neither on the input's edges nor on its Delaunay "
+                                   "refinement (" + cm.message + "); the integer-grid map needs it without intrinsic flips", 3};
     }
     stage("cross field and integer-grid map");
-    auto adjustment = mesh.add_property_map<edge_descriptor, double>("e:smdf_remesh_adjustment", 0.).first;
-    auto field = mesh.add_property_map<face_descriptor, double>("f:smdf_remesh_field", 0.).first;
+    auto adjustment = on.add_property_map<edge_descriptor, double>("e:smdf_remesh_adjustment", 0.).first;
+    auto field = on.add_property_map<face_descriptor, double>("f:smdf_remesh_field", 0.).first;
     const SMDF::Trivial_connection_status ts = on_file(file, [&] {
-      return SMDF::compute_trivial_connection(mesh, indices, adjustment, SMDF::parameters::edge_length_map(lengths).symmetry_order(4)
-                                                                           .smoothest_generator_turning_numbers(true).face_angle_map(field));
+      return SMDF::compute_trivial_connection(on, indices, adjustment, SMDF::parameters::edge_length_map(lengths).symmetry_order(4)
+                                                                         .smoothest_generator_turning_numbers(true).face_angle_map(field));
     });
     if(!ts.success) {
       out["metric"] = metric;
       out["success"] = false;
       throw Failed_result{out, file + ": the cross field of the placed cones failed: " + ts.message, 3};
     }
-    const double hm = requested_h > 0 ? requested_h : std::sqrt(metric_area(mesh, lengths) / double(requested_faces));
-    auto uv = mesh.add_property_map<halfedge_descriptor, std::array<double, 2>>("h:smdf_remesh_uv").first;
+    const double hm = requested_h > 0 ? requested_h : std::sqrt(metric_area(on, lengths) / double(requested_faces));
+    auto uv = on.add_property_map<halfedge_descriptor, std::array<double, 2>>("h:smdf_remesh_uv").first;
     const SMDF::Integer_grid_map_status gs = on_file(file, [&] {
-      return SMDF::integer_grid_map(mesh, field, hm, uv, SMDF::parameters::edge_length_map(lengths));
+      return SMDF::integer_grid_map(on, field, hm, uv, SMDF::parameters::edge_length_map(lengths));
     });
     Json ig = Json::object();
     ig["success"] = gs.success;
@@ -291,9 +310,9 @@ Json run_remesh(const Args& args)
       out["success"] = false;
       throw Failed_result{out, file + ": integer-grid map: " + gs.message, 3};
     }
-    for(edge_descriptor e : edges(mesh)) {   // the map's lengths, in grid units
-      const halfedge_descriptor x = halfedge(e, mesh);
-      const std::array<double, 2> a = uv[prev(x, mesh)], b = uv[x];
+    for(edge_descriptor e : edges(on)) {   // the map's lengths, in grid units
+      const halfedge_descriptor x = halfedge(e, on);
+      const std::array<double, 2> a = uv[prev(x, on)], b = uv[x];
       lengths[e] = std::hypot(b[0] - a[0], b[1] - a[1]);
     }
   } else {
@@ -694,8 +713,8 @@ Command remesh_command()
           "fails (valences, inverted faces, the polyhedron test); the remesh is still written when its\n"
           "faces exist.\n"
           "--place-cones (closed meshes of any genus, quads): the cones are placed as by\n"
-          "cone-metric --place-cones, their flat cone metric is computed on the input's edges\n"
-          "(exit 3 if it needs flips), the trivial connection's cross field with those singularities\n"
+          "cone-metric --place-cones, their flat cone metric is computed on the input's edges or,\n"
+          "where they cannot carry it, on the conforming Delaunay refinement (as with --cones), the trivial connection's cross field with those singularities\n"
           "(smoothest turning around the handles) is integrated into an integer-grid map (seams:\n"
           "rotations by multiples of pi/2 and integer translations; singularities on grid points;\n"
           "exit 3 if a triangle folds), whose edge lengths are the metric tessellated with edge length\n"
