@@ -51,6 +51,18 @@ double metric_area(const Mesh& mesh, const Edge_length_property& l)
   return a;
 }
 
+// The JSON of a conforming Delaunay refinement made because the input's edges could not carry
+// a metric (`message`: why not).
+Json refinement_json(const std::string& message, const SMDF::Delaunay_refinement_status& rs)
+{
+  Json r = Json::object();
+  r["input_triangulation_message"] = message;
+  r["success"] = rs.success;
+  r["faces"] = rs.faces;
+  r["inserted_vertices"] = rs.inserted.size();
+  return r;
+}
+
 double surface_area_of(const Mesh& mesh)
 {
   double a = 0;
@@ -184,12 +196,7 @@ Json run_remesh(const Args& args)
     if(!cm.converged) {
       stage("flat cone metric on the Delaunay refinement");
       const SMDF::Delaunay_refinement_status rs = on_file(file, [&] { return SMDF::conforming_delaunay_refinement(mesh, refined); });
-      Json r = Json::object();
-      r["input_triangulation_message"] = cm.message;
-      r["success"] = rs.success;
-      r["faces"] = rs.faces;
-      r["inserted_vertices"] = rs.inserted.size();
-      metric["delaunay_refinement"] = std::move(r);
+      metric["delaunay_refinement"] = refinement_json(cm.message, rs);
       if(!rs.success) {
         out["metric"] = metric;
         out["success"] = false;
@@ -256,12 +263,7 @@ Json run_remesh(const Args& args)
     if(!cm.converged) {
       stage("flat cone metric on the Delaunay refinement");
       const SMDF::Delaunay_refinement_status rs = on_file(file, [&] { return SMDF::conforming_delaunay_refinement(mesh, refined); });
-      Json r = Json::object();
-      r["input_triangulation_message"] = cm.message;
-      r["success"] = rs.success;
-      r["faces"] = rs.faces;
-      r["inserted_vertices"] = rs.inserted.size();
-      metric["delaunay_refinement"] = std::move(r);
+      metric["delaunay_refinement"] = refinement_json(cm.message, rs);
       if(rs.success) {
         cm = metric_on(refined);
         surface = &refined;
