@@ -7,6 +7,7 @@
 #include "commands.h"
 #include "common.h"
 #include "remesh_measures.h"
+#include "remesh_placed_cones.h"
 #include "remesh_pictures.h"
 #include "remesh_polyhedra.h"
 #include "remesh_untangle.h"
@@ -19,11 +20,9 @@
 #include <CGAL/Surface_mesh_direction_fields/topology.h>
 #include <CGAL/Surface_mesh_direction_fields/polycube_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/polyhedron_remeshing.h>
-#include <CGAL/Surface_mesh_direction_fields/remeshing_cones.h>
-#include <CGAL/Surface_mesh_direction_fields/integer_grid_map.h>
-#include <CGAL/Surface_mesh_direction_fields/compute_trivial_connection.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 
 #include <array>
 #include <iomanip>
@@ -39,39 +38,8 @@ namespace smdf_cli {
 
 namespace {
 
-double metric_area(const Mesh& mesh, const Edge_length_property& l)
-{
-  double a = 0;
-  for(face_descriptor f : faces(mesh)) {
-    const halfedge_descriptor h = halfedge(f, mesh);
-    const double x = l[edge(h, mesh)], y = l[edge(next(h, mesh), mesh)], z = l[edge(prev(h, mesh), mesh)];
-    const double s = 0.5 * (x + y + z);
-    a += std::sqrt((std::max)(0., s * (s - x) * (s - y) * (s - z)));
-  }
-  return a;
-}
 
-// The JSON of a conforming Delaunay refinement made because the input's edges could not carry
-// a metric (`message`: why not).
-Json refinement_json(const std::string& message, const SMDF::Delaunay_refinement_status& rs)
-{
-  Json r = Json::object();
-  r["input_triangulation_message"] = message;
-  r["success"] = rs.success;
-  r["faces"] = rs.faces;
-  r["inserted_vertices"] = rs.inserted.size();
-  return r;
-}
 
-double surface_area_of(const Mesh& mesh)
-{
-  double a = 0;
-  for(face_descriptor f : faces(mesh)) {
-    const halfedge_descriptor h = halfedge(f, mesh);
-    a += std::sqrt(CGAL::squared_area(mesh.point(source(h, mesh)), mesh.point(target(h, mesh)), mesh.point(target(next(h, mesh), mesh))));
-  }
-  return a;
-}
 
 } // namespace
 
@@ -216,107 +184,7 @@ Json run_remesh(const Args& args)
                                    std::string(surface == &refined ? " nor on its Delaunay refinement: " : ": ") + cm.message, 3};
     }
   } else if(place) {
-    // cones placed for low distortion, their flat cone metric on the input's edges, the cross
-    // field of the trivial connection on it, and the integer-grid map (grid units) whose edge
-    // lengths are the metric to tessellate
-    const SMDF::Mesh_topology<Mesh> topo = SMDF::mesh_topology(mesh);
-    if(topo.components.size() != 1 || !topo.is_closed())
-      throw Error(file + ": --place-cones needs a closed mesh of one component; this one has " + std::to_string(topo.components.size()) +
-                  " component(s) and " + std::to_string(topo.boundary_loops.size()) + " boundary loop(s) [invalid_input]");
-    stage("cone placement");
-    Edge_length_property placed = mesh.add_property_map<edge_descriptor, double>("e:smdf_placed_length", 0.).first;
-    const auto ps = on_file(file, [&] {
-      return SMDF::place_remeshing_cones(mesh, placed, SMDF::parameters::symmetry_order(4).distortion_bound(distortion_bound)
-                                                           .maximum_number_of_cones(int(max_cones)));
-    });
-    Json pl = Json::object(), pc = Json::array();
-    for(const auto& c : ps.cones) {
-      Json o = Json::object();
-      o["vertex"] = index(c.first);
-      o["curvature"] = c.second;
-      pc.push_back(std::move(o));
-    }
-    out["placed_cones"] = std::move(pc);
-    pl["success"] = ps.success;
-    pl["message"] = ps.message;
-    pl["distortion_bound"] = ps.distortion_bound;
-    pl["scale_spread"] = ps.scale_spread;
-    out["placement"] = std::move(pl);
-    metric["source"] = "placed cones";
-    if(!ps.metric.converged) {
-      out["metric"] = metric;
-      out["success"] = false;
-      throw Failed_result{out, file + ": --place-cones: " + ps.message, 3};
-    }
-    stage("flat cone metric on the input's edges");
-    std::vector<std::pair<vertex_descriptor, double>> indices;
-    for(const auto& c : ps.cones) indices.emplace_back(c.first, c.second / (2 * CGAL_PI));
-    // the metric without flips on a triangulation `on` of the surface (the input, or its
-    // conforming Delaunay refinement, which keeps the input's vertex indices)
-    auto metric_on = [&](Mesh& on) {
-      auto targets = on.add_property_map<vertex_descriptor, double>("v:smdf_remesh_target", 0.).first;
-      for(const auto& c : indices) targets[c.first] = c.second * 2 * CGAL_PI;
-      lengths = on.add_property_map<edge_descriptor, double>("e:smdf_remesh_length", 0.).first;
-      return on_file(file, [&] { return SMDF::compute_cone_metric(on, targets, lengths, SMDF::parameters::intrinsic_edge_flips(false)); });
-    };
-    SMDF::Cone_metric_status cm = metric_on(mesh);
-    if(!cm.converged) {
-      stage("flat cone metric on the Delaunay refinement");
-      const SMDF::Delaunay_refinement_status rs = on_file(file, [&] { return SMDF::conforming_delaunay_refinement(mesh, refined); });
-      metric["delaunay_refinement"] = refinement_json(cm.message, rs);
-      if(rs.success) {
-        cm = metric_on(refined);
-        surface = &refined;
-      }
-    }
-    Mesh& on = *surface;
-    metric["converged"] = cm.converged;
-    metric["max_curvature_error"] = cm.max_curvature_error;
-    if(!cm.converged) {
-      out["metric"] = metric;
-      out["success"] = false;
-      throw Failed_result{out, file + ": the flat cone metric of the placed cones converges neither on the input's edges nor on its Delaunay "
-                                   "refinement (" + cm.message + "); the integer-grid map needs it without intrinsic flips", 3};
-    }
-    stage("cross field and integer-grid map");
-    auto adjustment = on.add_property_map<edge_descriptor, double>("e:smdf_remesh_adjustment", 0.).first;
-    auto field = on.add_property_map<face_descriptor, double>("f:smdf_remesh_field", 0.).first;
-    const SMDF::Trivial_connection_status ts = on_file(file, [&] {
-      return SMDF::compute_trivial_connection(on, indices, adjustment, SMDF::parameters::edge_length_map(lengths).symmetry_order(4)
-                                                                         .smoothest_generator_turning_numbers(true).face_angle_map(field));
-    });
-    if(!ts.success) {
-      out["metric"] = metric;
-      out["success"] = false;
-      throw Failed_result{out, file + ": the cross field of the placed cones failed: " + ts.message, 3};
-    }
-    const double hm = requested_h > 0 ? requested_h : std::sqrt(metric_area(on, lengths) / double(requested_faces));
-    auto uv = on.add_property_map<halfedge_descriptor, std::array<double, 2>>("h:smdf_remesh_uv").first;
-    const SMDF::Integer_grid_map_status gs = on_file(file, [&] {
-      return SMDF::integer_grid_map(on, field, hm, uv, SMDF::parameters::edge_length_map(lengths));
-    });
-    Json ig = Json::object();
-    ig["success"] = gs.success;
-    ig["message"] = gs.message;
-    ig["singularities"] = gs.singularities.size();
-    ig["seams"] = gs.arcs;
-    ig["rounded_values"] = gs.rounded;
-    ig["folded_triangles"] = gs.folded_triangles;
-    ig["stiffening_rounds"] = gs.stiffening_rounds;
-    ig["seamless_energy"] = gs.seamless_energy;
-    ig["integer_energy"] = gs.integer_energy;
-    ig["min_area_ratio"] = gs.min_area_ratio;
-    out["integer_grid_map"] = std::move(ig);
-    if(!gs.success) {
-      out["metric"] = metric;
-      out["success"] = false;
-      throw Failed_result{out, file + ": integer-grid map: " + gs.message, 3};
-    }
-    for(edge_descriptor e : edges(on)) {   // the map's lengths, in grid units
-      const halfedge_descriptor x = halfedge(e, on);
-      const std::array<double, 2> a = uv[prev(x, on)], b = uv[x];
-      lengths[e] = std::hypot(b[0] - a[0], b[1] - a[1]);
-    }
+    lengths = placed_cones_metric(file, mesh, refined, surface, requested_h, requested_faces, distortion_bound, max_cones, out, metric, stage);
   } else {
     lengths = mesh.add_property_map<edge_descriptor, double>("e:smdf_remesh_length", 0.).first;
     for(edge_descriptor e : edges(mesh)) lengths[e] = std::sqrt(CGAL::squared_distance(mesh.point(source(e, mesh)), mesh.point(target(e, mesh))));
@@ -617,7 +485,7 @@ Json run_remesh(const Args& args)
     out["inverted_faces"] = inverted;
     out["quality"] = remesh_quality(remesh);
     // (the integer-grid map's grid edge is 1 in its own units: on the surface, the mean quad's side)
-    out["distance_over_edge_length"] = remesh_distances(mesh, remesh, place ? std::sqrt(surface_area_of(mesh) / double(num_faces(remesh))) : h);
+    out["distance_over_edge_length"] = remesh_distances(mesh, remesh, place ? std::sqrt(CGAL::Polygon_mesh_processing::area(mesh) / double(num_faces(remesh))) : h);
     out["area_ratio"] = remesh_area_ratio(mesh, remesh);
     if(!CGAL::IO::write_polygon_mesh(out_file, remesh, CGAL::parameters::stream_precision(17)))
       throw file_error(out_file, "cannot write the remesh (the extension must be .off or .obj)", "output");

@@ -154,4 +154,16 @@ std::vector<double> grid_curvatures(const Mesh& remesh)
   return K;
 }
 
+double metric_area(const Mesh& mesh, const Edge_length_property& l)
+{
+  double a = 0;
+  for(face_descriptor f : faces(mesh)) {
+    const halfedge_descriptor h = halfedge(f, mesh);
+    const double x = l[edge(h, mesh)], y = l[edge(next(h, mesh), mesh)], z = l[edge(prev(h, mesh), mesh)];
+    const double s = 0.5 * (x + y + z);
+    a += std::sqrt((std::max)(0., s * (s - x) * (s - y) * (s - z)));
+  }
+  return a;
+}
+
 } // namespace smdf_cli

@@ -28,6 +28,9 @@ Json remesh_distances(const Mesh& input, const Mesh& out, double h);
 // Area of the remesh (its faces fanned into triangles) over that of the input.
 double remesh_area_ratio(const Mesh& input, const Mesh& out);
 
+// The area of a mesh under the metric `l` (Heron's formula per face).
+double metric_area(const Mesh& mesh, const Edge_length_property& l);
+
 // Per vertex of a quad / triangle / mixed remesh: 2 pi minus the grid's angles of its faces
 // (pi/2 per quad, pi/3 per triangle): 0 at regular vertices, the cone's curvature elsewhere.
 std::vector<double> grid_curvatures(const Mesh& remesh);

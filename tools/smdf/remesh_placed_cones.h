@@ -1,0 +1,37 @@
+// Copyright (c) 2026 The Surface_mesh_direction_fields authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// smdf remesh --place-cones: the metric of an automatic quad remesh of a closed mesh of any
+// genus (placed cones, their flat cone metric, the trivial connection's cross field on it, an
+// integer-grid map), and the JSON of a conforming Delaunay refinement.
+
+#ifndef SMDF_CLI_REMESH_PLACED_CONES_H
+#define SMDF_CLI_REMESH_PLACED_CONES_H
+
+#include "common.h"
+
+#include <CGAL/Surface_mesh_direction_fields/delaunay_refinement.h>
+
+#include <functional>
+#include <string>
+
+namespace smdf_cli {
+
+// The JSON of a conforming Delaunay refinement made because the input's edges could not carry
+// a metric (`message`: why not).
+Json refinement_json(const std::string& message, const SMDF::Delaunay_refinement_status& rs);
+
+// Places the cones (place_remeshing_cones()), computes their flat cone metric without flips on
+// `mesh` or, where its edges cannot carry it, on its conforming Delaunay refinement `refined`
+// (then `surface` points to it), the trivial connection's cross field with those singularities,
+// and the integer-grid map for about `requested_faces` quads (or grid edges of `requested_h`
+// under the metric). Returns the map's edge lengths (grid units) on `*surface`; adds
+// placed_cones, placement and integer_grid_map to `out` and the metric's fields to `metric`.
+// Throws Failed_result (exit 3) when a step fails, Error for an open mesh.
+Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Mesh& refined, Mesh*& surface, double requested_h,
+                                         long requested_faces, double distortion_bound, long max_cones, Json& out, Json& metric,
+                                         const std::function<void(const char*)>& stage);
+
+} // namespace smdf_cli
+
+#endif // SMDF_CLI_REMESH_PLACED_CONES_H
