@@ -577,11 +577,7 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   // 8. the vertex unknowns, the corners' images and the read-back
   auto folds = [&]() {
     std::size_t n = 0;
-    for(std::size_t f = 0; f < nf; ++f) {
-      const int x0 = m.face_halfedge[f], x1 = m.next[std::size_t(x0)], x2 = m.next[std::size_t(x1)];
-      const Cplx p0 = value(corner[std::size_t(x0)]), p1 = value(corner[std::size_t(x1)]), p2 = value(corner[std::size_t(x2)]);
-      n += !((p1 - p0).real() * (p2 - p0).imag() - (p1 - p0).imag() * (p2 - p0).real() > 0);
-    }
+    for(std::size_t f = 0; f < nf; ++f) n += folded(f);
     return n;
   };
   auto map_energy = [&]() {
