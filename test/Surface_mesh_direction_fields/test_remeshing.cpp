@@ -1049,7 +1049,8 @@ void remeshing_cones(const std::string& dir)
       within += check_remeshing_cones(mesh, N, bound, e.file + " (N = " + std::to_string(N) + ")", n);
     });
   std::cout << "remeshing cones: " << within << " of " << runs << " meshes (" << open << " open) within the bound" << std::endl;
-  SMDF_CHECK(runs >= 20 && open >= 5);
+  const bool reduced = std::getenv("SMDF_TEST_MAX_FACES") != nullptr;   // the sanitizer run's meshes of at most 15k faces: 16, 4 open
+  SMDF_CHECK(runs >= (reduced ? 12u : 20u) && open >= (reduced ? 4u : 5u));
   SMDF_CHECK(within * 10 >= runs * 8);   // measured: the beetle and the feline miss it at 2
   // Polyhedron_3: the same cones as on the Surface_mesh
   Polyhedron p;
@@ -1168,7 +1169,6 @@ void integer_grid_maps(const std::string& dir)
       const auto ts = SMDF::tessellate_flat_metric(mesh, dev, SMDF::SQUARE_GRID, 1., out);
       std::map<int, std::size_t> expected;
       for(const auto& c : cs.cones) expected[4 - int(std::lround(c.second / (CGAL_PI / 2)))]++;
-      // (2 of the 11 unfolded maps are not tessellated yet: faces at a cone found twice or missed)
       if(ts.success) check_remesh(mesh, mesh, out, ts, 4, expected, double(ts.faces), what + ", tessellated");
       else std::cout << what << ": not tessellated: " << ts.message << std::endl;
       tessellated += ts.success;
@@ -1176,7 +1176,8 @@ void integer_grid_maps(const std::string& dir)
   });
   std::cout << "integer-grid maps: " << unfolded << " of " << runs << " without a fold (" << skipped << " meshes whose cone metric needs flips skipped), "
             << tessellated << " tessellated" << std::endl;
-  SMDF_CHECK(runs >= 8 && unfolded * 10 >= runs * 8 && tessellated >= 7);   // measured: 8 of 11
+  // measured: 10 of 11 unfolded maps tessellated (the rotor's grid has faces inverted in space at this size)
+  SMDF_CHECK(runs >= 8 && unfolded * 10 >= runs * 8 && tessellated + 1 >= unfolded);
 }
 
 } // namespace

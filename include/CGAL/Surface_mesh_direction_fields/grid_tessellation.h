@@ -470,8 +470,8 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
   // having arrived at point j from i, the face's next edge leaves j in the direction before the
   // one that leads back to i (directions counterclockwise). So each face costs no walk of its
   // own, and each edge is walked twice (once from each end) instead of twice per face corner.
-  // Faces at a cone (whose directions are not the grid's) or where the edges are ambiguous are
-  // walked edge after edge from their start, across the frames met on the way.
+  // Faces with a cone at a corner the reading would turn at (whose directions are not the grid's),
+  // or where the edges are ambiguous, are taken from their first corner's own edges and diagonal.
   const int dirs = square ? 4 : 6;
   const std::size_t none = std::size_t(-1), off = std::size_t(-2);   // across the boundary; ends off the grid points
   auto is_cone = [&](std::size_t i) { return points[i].kind == 2 && dev.cone_index_[std::size_t(points[i].id)] >= 0; };
@@ -508,28 +508,26 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
   const std::size_t half = points.size() / 2;
   const bool concurrent = points.size() >= 20000;
   internal::run_on_two_threads([&](int part) { walk_edges(part == 0 ? 0 : half, part == 0 ? half : points.size(), part); }, concurrent);
-  // the face at point i left of its edge in direction dir, walked edge after edge
+  // The face at point i left of its edge in direction dir, from i's own edges: a triangle is i
+  // and the ends of its edges in directions dir and dir + 1; a square adds the corner diagonal to
+  // i, reached by a straight walk from i through the square. Point i is no cone, and no cone lies
+  // inside a face, so no walk turns at a cone (where two ways round would give two faces).
   typedef std::array<std::size_t, 5> Found;   // the corners (unused ones -1), then their count
-  auto walk_face = [&](std::size_t i, int dir, Found& corners) -> std::size_t {   // none, off, or the corner count
-    int f = seat[i].first;
-    Point_2 at = seat[i].second;
-    internal::Lattice_motion carried;   // from the start frame to the current one
-    for(int k = 1; k < sides; ++k) {   // along d, then d rotated by the grid's angle at each corner
-      // square: d, then +rot90(d), then -d; triangle: d, then rot120(d)
-      std::array<double, 2> d = rotation_of[std::size_t(dir)].rotate(1, 0);
-      if(square) { for(int j = 1; j < k; ++j) d = step_rotation.rotate(d[0], d[1]); }
-      else if(k == 2) { d = step_rotation.rotate(d[0], d[1]); d = step_rotation.rotate(d[0], d[1]); }
-      const std::array<double, 2> dc = carried.rotate(d[0], d[1]);
-      const Point_2 to(at.x() + dc[0], at.y() + dc[1]);
-      int where = -1;
-      Point_2 target;
-      const std::size_t j = reach(f, at, to, carried, where, target);
-      if(j == none || j == off) return j;
-      corners[std::size_t(k)] = j;
-      f = where;
-      at = target;
-    }
-    return std::size_t(sides);
+  auto face_by_diagonal = [&](std::size_t i, int dir, Found& corners) -> std::size_t {   // none, off, or the corner count
+    const std::size_t a = neighbour[i * std::size_t(dirs) + std::size_t(dir)], b = neighbour[i * std::size_t(dirs) + std::size_t((dir + 1) % dirs)];
+    if(a == none || b == none) return none;
+    corners[1] = a;
+    if(!square) { corners[2] = b; return 3; }
+    const std::array<double, 2> d = rotation_of[std::size_t(dir)].rotate(1, 0), e = rotation_of[std::size_t((dir + 1) % dirs)].rotate(1, 0);
+    const Point_2 at = seat[i].second, to(at.x() + d[0] + e[0], at.y() + d[1] + e[1]);
+    internal::Lattice_motion carried;
+    int where = -1;
+    Point_2 target;
+    const std::size_t j = reach(seat[i].first, at, to, carried, where, target);
+    if(j == none || j == off) return j;
+    corners[2] = j;
+    corners[3] = b;
+    return 4;
   };
   // the same face read off the edges: none when it crosses the boundary, off when it must be walked
   auto read_face = [&](std::size_t i, int dir, Found& corners) -> std::size_t {
@@ -570,7 +568,7 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
         corners.fill(none);
         corners[0] = i;
         std::size_t count = read_face(i, dir, corners);
-        if(count == off) count = walk_face(i, dir, corners);
+        if(count == off) count = face_by_diagonal(i, dir, corners);
         if(count == off) { off_grid[part] = true; break; }
         if(count == none) continue;   // a face across the boundary: none there
         bool first = true;
