@@ -540,13 +540,14 @@ def test_remesh(smdf, c, torus, tmp):
             "remesh spot --polycube obelisk: the metric built reads back as P's faces, whole grid polygons (%r)" % pc)
     smdf.error(["remesh", cube, "--grid", "mixed", "--edge-length", "0.25", "--out", out], "remesh --grid mixed without a polyhedron", 2,
                "polyhedron")
-    rc, o, err = smdf.run(["remesh", torus, "--edge-length", "0.1", "--out", out])
-    c.check(rc == 3 and b"not symmetries" in err, "remesh torus (curved metric): exit 3, the cut graph's motions fail")
-    # --place-cones: cones placed, their metric, the trivial connection's cross field and an
-    # integer-grid map, any genus; read back from the remesh (valences at the placed cones)
-    for name, path, quads in (("torus", torus, 1500), ("spot", spot, 2500)):
+    rc, o, err = smdf.run(["remesh", torus, "--grid", "triangle", "--edge-length", "0.1", "--out", out])
+    c.check(rc == 3 and b"not symmetries" in err, "remesh torus --grid triangle (its own curved metric): exit 3, the cut graph's motions fail")
+    # automatic cones (the default for quads without a metric; --place-cones): cones placed,
+    # their metric, the trivial connection's cross field and an integer-grid map, any genus; read
+    # back from the remesh (valences at the placed cones)
+    for name, path, quads, flag in (("torus", torus, 1500, []), ("spot", spot, 2500, ["--place-cones"])):
         auto = os.path.join(tmp, "auto_%s.obj" % name)
-        r = smdf.json(["remesh", path, "--place-cones", "--faces", str(quads), "--out", auto], "remesh %s --place-cones" % name)
+        r = smdf.json(["remesh", path, "--faces", str(quads), "--out", auto] + flag, "remesh %s %s" % (name, " ".join(flag)))
         if not r:
             continue
         placed = {x["vertex"]: x["curvature"] for x in r.get("placed_cones", [])}
@@ -568,7 +569,27 @@ def test_remesh(smdf, c, torus, tmp):
                 "remesh %s --place-cones: integer-grid map without folds, its singularities the placed cones (%r)" % (name, g))
     smdf.error(["remesh", spot, "--place-cones", "--cones", "2202:pi/2", "--faces", "500", "--out", out], "remesh --place-cones with --cones", 2, "--place-cones")
     smdf.error(["remesh", spot, "--place-cones", "--grid", "triangle", "--faces", "500", "--out", out], "remesh --place-cones triangles", 2, "quad")
-    smdf.error(["remesh", spot, "--distortion-bound", "1", "--faces", "500", "--out", out], "remesh --distortion-bound alone", 2, "--place-cones")
+    smdf.error(["remesh", spot, "--polycube", "box", "--distortion-bound", "1", "--faces", "500", "--out", out], "remesh --distortion-bound with a polycube", 2,
+               "automatic cones")
+    smdf.error(["remesh", spot, "--cone-spacing", "-1", "--faces", "500", "--out", out], "remesh --cone-spacing negative", 2, "--cone-spacing")
+    r = smdf.json(["remesh", torus, "--edge-length", "0.1", "--cone-spacing", "2", "--out", out], "remesh torus --edge-length 0.1 --cone-spacing 2")
+    if r:
+        c.check(r.get("placed_cones") == [] and list(r.get("valences", {})) == ["4"] and r.get("placement_attempts", [{}])[0].get("cone_spacing") == 2,
+                "remesh torus, automatic: no cone on a torus, every vertex of valence 4, one attempt at the spacing given (%r, %r)"
+                % (r.get("valences"), r.get("placement_attempts")))
+    # an open surface that is not flat: automatic cones need a closed mesh (exit 1, one line);
+    # a flat square's own metric (corners of pi/2) is tessellated as it is
+    open_tet = os.path.join(tmp, "open_tet.off")
+    with open(open_tet, "w") as fh:
+        fh.write("OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 2\n3 0 2 1\n3 0 1 3\n3 0 3 2\n")
+    smdf.error(["remesh", open_tet, "--faces", "100", "--out", out], "remesh an open curved mesh (automatic cones)", 1, "closed")
+    square = os.path.join(tmp, "square.off")
+    with open(square, "w") as fh:
+        fh.write("OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n")
+    r = smdf.json(["remesh", square, "--edge-length", "0.25", "--out", out], "remesh a flat square (its own metric)")
+    if r:
+        c.check(r.get("metric", {}).get("source") == "embedding" and r.get("faces_by_size") == {"4": 16} and "placed_cones" not in r,
+                "remesh a flat square: its own metric, 16 quads (%r, %r)" % (r.get("metric"), r.get("faces_by_size")))
     smdf.error(["remesh", cube, "--edge-length", "0.25"], "remesh without --out", 2, "--out")
     smdf.error(["remesh", cube, "--edge-length", "0.25", "--faces", "10", "--out", out], "remesh: both sizes", 2, "one of")
     smdf.error(["remesh", cube, "--grid", "hex", "--edge-length", "0.25", "--out", out], "remesh: bad grid", 2, "quad")
@@ -1543,7 +1564,8 @@ def test_shared_robustness(smdf, c, meshes, tmp):
         if small:
             runs.append(["cone-metric", path])
             runs.append(["rosy", path])
-            runs.append(["remesh", path, "--faces", "500", "--out", os.path.join(tmp, "robust_remesh.off")])
+            # automatic cones (quads, no metric given), one attempt and few cones: bounded time
+            runs.append(["remesh", path, "--faces", "500", "--cone-spacing", "0", "--max-cones", "40", "--out", os.path.join(tmp, "robust_remesh.off")])
             runs.append(["remesh", path, "--polycube", "box", "--faces", "500", "--out", os.path.join(tmp, "robust_remesh.obj")])
         for args in runs:
             rc, out, err = smdf.run(args)

@@ -44,6 +44,19 @@ namespace {
 } // namespace
 
 // The JSON of polyhedron_compatibility(): the face-by-face test of a metric against P.
+// Whether the input's own metric may already be one to tessellate with quads: every vertex's
+// curvature (angle defect, or boundary turning) a multiple of pi/2 (a cube, an L-shaped plate).
+bool embedding_fits_quads(const Mesh& mesh)
+{
+  auto k = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+  SMDF::compute_vertex_curvatures(mesh, k);
+  for(vertex_descriptor v : vertices(mesh)) {
+    const double q = get(k, v) / (CGAL_PI / 2);
+    if(std::abs(q - std::round(q)) > 1e-6) return false;
+  }
+  return true;
+}
+
 Json compatibility_json(const SMDF::Polyhedron_compatibility& pc)
 {
   Json c = Json::object(), failing = Json::array();
@@ -95,23 +108,31 @@ Json run_remesh(const Args& args)
     throw Usage_error("give at most one of --cones and --lengths (the lengths file is the metric)");
   if((args.has("cones") || args.has("cone-indices")) && polycube == "obelisk")
     throw Usage_error("--polycube obelisk places its own nine cones; with --cones give the polyhedron as a file");
-  const bool place = args.has("place-cones");
-  if(place && (args.has("cones") || args.has("cone-indices") || args.has("lengths") || args.has("polycube")))
+  // Automatic cones (placed, then an integer-grid map): with --place-cones, and by default for
+  // quads when no metric is given (--cones, --lengths, --polycube) and the input's own metric is
+  // not already one to tessellate (every curvature a multiple of pi/2, as on a cube).
+  const bool given_metric = args.has("cones") || args.has("cone-indices") || args.has("lengths") || args.has("polycube");
+  const bool may_place = !given_metric && grid_name == "quad";
+  if(args.has("place-cones") && given_metric)
     throw Usage_error("--place-cones chooses the cones itself: give none of --cones, --cone-indices, --lengths and --polycube");
-  if(place && grid_name != "quad") throw Usage_error("--place-cones makes an integer-grid map for --grid quad");
-  if(!place && (args.has("distortion-bound") || args.has("max-cones")))
-    throw Usage_error("--distortion-bound and --max-cones apply to --place-cones");
-  const double distortion_bound = place ? args.real("distortion-bound", 2.0) : 0;
-  if(place && !(distortion_bound > 0 && std::isfinite(distortion_bound)))
+  if(args.has("place-cones") && grid_name != "quad") throw Usage_error("--place-cones makes an integer-grid map for --grid quad");
+  if(!may_place && (args.has("distortion-bound") || args.has("max-cones") || args.has("cone-spacing")))
+    throw Usage_error("--distortion-bound, --max-cones and --cone-spacing apply to automatic cones (quads, no --cones, --lengths or --polycube)");
+  const double distortion_bound = may_place ? args.real("distortion-bound", 2.0) : 0;
+  if(may_place && !(distortion_bound > 0 && std::isfinite(distortion_bound)))
     throw Usage_error("option --distortion-bound expects a positive number, got '" + args.value("distortion-bound") + "'");
-  const long max_cones = place ? args.integer("max-cones", 500) : 0;
-  if(place && (max_cones < 1 || max_cones > 100000))
+  const double cone_spacing = may_place && args.has("cone-spacing") ? args.real("cone-spacing", 0) : -1;   // -1: automatic
+  if(may_place && args.has("cone-spacing") && !(cone_spacing >= 0 && cone_spacing <= 1000))
+    throw Usage_error("option --cone-spacing expects a number from 0 to 1000, got '" + args.value("cone-spacing") + "'");
+  const long max_cones = may_place ? args.integer("max-cones", 500) : 0;
+  if(may_place && (max_cones < 1 || max_cones > 100000))
     throw Usage_error("option --max-cones expects an integer in [1, 100000], got '" + args.value("max-cones") + "'");
   const SMDF::Svg_options svg_check = svg_options(args);   // usage errors of --view and --width
   (void)svg_check;
 
   Mesh mesh;
   load_mesh(file, mesh);
+  const bool place = args.has("place-cones") || (may_place && !embedding_fits_quads(mesh));
   Stopwatch clock;
   const bool progress = args.has("progress");
   const bool untangle = !args.has("no-untangle");
@@ -184,7 +205,7 @@ Json run_remesh(const Args& args)
                                    std::string(surface == &refined ? " nor on its Delaunay refinement: " : ": ") + cm.message, 3};
     }
   } else if(place) {
-    lengths = placed_cones_metric(file, mesh, refined, surface, requested_h, requested_faces, distortion_bound, max_cones, out, metric, stage);
+    lengths = placed_cones_metric(file, mesh, refined, surface, requested_h, requested_faces, distortion_bound, max_cones, cone_spacing, out, metric, stage);
   } else {
     lengths = mesh.add_property_map<edge_descriptor, double>("e:smdf_remesh_length", 0.).first;
     for(edge_descriptor e : edges(mesh)) lengths[e] = std::sqrt(CGAL::squared_distance(mesh.point(source(e, mesh)), mesh.point(target(e, mesh))));
@@ -517,9 +538,10 @@ Command remesh_command()
            {"segments", "relaxed|ricci", "with --polycube: how the pieces between the polyhedron's edges are mapped onto its faces: relaxed (default: stretch-minimising Tutte embedding relaxed as rigidly as possible, grid cells of even size) or ricci (Lai et al.: each piece flattened by Ricci flow to its polygon, conformal; the two pieces beside an edge path disagree on its vertices, whose mean is taken: max_side_parameter_gap)"},
            {"relaxation", "K", "with --polycube: one round of stretch-minimising reweighting, then at most K steps of as-rigid-as-possible relaxation of the polyhedron's charts (fewer once a triangle about to fold throttles a step below 1 %) and 3K sweeps across its edges near the paths (default 10; 0: the plain Tutte embedding)"},
            {"no-untangle", "", "keep the grid's faces that come out inverted on the surface (default: their vertices are moved along the input until none is, the cones held, or slid along the surface where holding them leaves faces inverted, then quads folded at a corner unfolded as far as such moves can; reported as untangle)"},
-           {"place-cones", "", "closed meshes, quads: place the cones (cone-metric --place-cones), compute their flat cone metric on the input's edges, the cross field of the trivial connection on it and an integer-grid map, and tessellate that (any genus; see the manual)"},
-           {"distortion-bound", "B", "with --place-cones: the cone metric's log scale within B (default 2)"},
-           {"max-cones", "n", "with --place-cones: at most n cones (default 500)"},
+           {"place-cones", "", "automatic cones (the default for quads without --cones, --lengths or --polycube, unless every curvature of the input is a multiple of pi/2): closed meshes of any genus; place the cones (cone-metric --place-cones), compute their flat cone metric on the input's edges, the cross field of the trivial connection on it and an integer-grid map, and tessellate that (see the manual)"},
+           {"distortion-bound", "B", "automatic cones: the cone metric's log scale within B (default 2)"},
+           {"max-cones", "n", "automatic cones: at most n cones (default 500)"},
+           {"cone-spacing", "S", "automatic cones: at least S grid edges apart (along the input's edges) where the placement can; default: 0 (never adjacent), then 2 if the map folds"},
            {"progress", "", "report each stage on stderr with the elapsed time"}},
           "regular quad or triangle remesh from a flat cone metric",
           "Lai et al. 2010, section 5: develops a flat cone metric of the mesh (its own edge lengths,\n"
@@ -582,14 +604,18 @@ Command remesh_command()
           "incompatible with the grid, the edge length does not fit its lattice, or the read-back\n"
           "fails (valences, inverted faces, the polyhedron test); the remesh is still written when its\n"
           "faces exist.\n"
-          "--place-cones (closed meshes of any genus, quads): the cones are placed as by\n"
+          "Automatic cones (--place-cones; the default for --grid quad without --cones, --lengths or\n"
+          "--polycube unless every curvature of the input is a multiple of pi/2, as on a cube, whose\n"
+          "own metric is then tessellated; closed meshes of any genus): the cones are placed as by\n"
           "cone-metric --place-cones, their flat cone metric is computed on the input's edges or,\n"
           "where they cannot carry it, on the conforming Delaunay refinement (as with --cones), the trivial connection's cross field with those singularities\n"
           "(smoothest turning around the handles) is integrated into an integer-grid map (seams:\n"
           "rotations by multiples of pi/2 and integer translations; singularities on grid points;\n"
           "exit 3 if a triangle folds), whose edge lengths are the metric tessellated with edge length\n"
           "1 (edge_length 1 in grid units). The JSON adds placed_cones: [{vertex, curvature}],\n"
-          "placement: {success, message, distortion_bound, scale_spread} and integer_grid_map:\n"
+          "placement: {success, message, distortion_bound, scale_spread}, placement_attempts:\n"
+          "[{cone_spacing, cones, message}] (a map that folds is tried again with the cones 2 grid\n"
+          "edges apart, unless --cone-spacing is given) and integer_grid_map:\n"
           "{success, message, singularities, seams, rounded_values, folded_triangles,\n"
           "stiffening_rounds, seamless_energy, integer_energy, min_area_ratio}.\n",
           run_remesh};

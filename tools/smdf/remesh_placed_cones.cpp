@@ -10,6 +10,8 @@
 #include <CGAL/Surface_mesh_direction_fields/remeshing_cones.h>
 #include <CGAL/Surface_mesh_direction_fields/topology.h>
 
+#include <CGAL/Polygon_mesh_processing/measure.h>
+
 #include <array>
 #include <cmath>
 #include <utility>
@@ -29,23 +31,25 @@ Json refinement_json(const std::string& message, const SMDF::Delaunay_refinement
   return r;
 }
 
-Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Mesh& refined, Mesh*& surface, double requested_h,
-                                         long requested_faces, double distortion_bound, long max_cones, Json& out, Json& metric,
-                                         const std::function<void(const char*)>& stage)
+namespace {
+
+// One attempt with cones `cone_spacing` grid edges apart where the placement can.
+Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, Mesh& refined, Mesh*& surface, double requested_h,
+                                          long requested_faces, double distortion_bound, long max_cones, double cone_spacing, Json& out,
+                                          Json& metric, const std::function<void(const char*)>& stage, std::size_t& cones, bool& folded)
 {
   Edge_length_property lengths;
   // cones placed for low distortion, their flat cone metric on the input's edges, the cross
   // field of the trivial connection on it, and the integer-grid map (grid units) whose edge
   // lengths are the metric to tessellate
-  const SMDF::Mesh_topology<Mesh> topo = SMDF::mesh_topology(mesh);
-  if(topo.components.size() != 1 || !topo.is_closed())
-    throw Error(file + ": --place-cones needs a closed mesh of one component; this one has " + std::to_string(topo.components.size()) +
-                " component(s) and " + std::to_string(topo.boundary_loops.size()) + " boundary loop(s) [invalid_input]");
   stage("cone placement");
   Edge_length_property placed = mesh.add_property_map<edge_descriptor, double>("e:smdf_placed_length", 0.).first;
+  // the grid's edge length on the input, roughly (the metric scales it by e^u, u within the bound)
+  const double h_input = requested_h > 0 ? requested_h : std::sqrt(CGAL::Polygon_mesh_processing::area(mesh) / double(requested_faces));
   const auto ps = on_file(file, [&] {
     return SMDF::place_remeshing_cones(mesh, placed, SMDF::parameters::symmetry_order(4).distortion_bound(distortion_bound)
-                                                         .maximum_number_of_cones(int(max_cones)));
+                                                         .maximum_number_of_cones(int(max_cones))
+                                                         .minimum_cone_distance(cone_spacing * h_input));
   });
   Json pl = Json::object(), pc = Json::array();
   for(const auto& c : ps.cones) {
@@ -55,6 +59,7 @@ Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Me
     pc.push_back(std::move(o));
   }
   out["placed_cones"] = std::move(pc);
+  cones = ps.cones.size();
   pl["success"] = ps.success;
   pl["message"] = ps.message;
   pl["distortion_bound"] = ps.distortion_bound;
@@ -73,6 +78,7 @@ Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Me
   // conforming Delaunay refinement, which keeps the input's vertex indices)
   auto metric_on = [&](Mesh& on) {
     auto targets = on.add_property_map<vertex_descriptor, double>("v:smdf_remesh_target", 0.).first;
+    for(vertex_descriptor v : vertices(on)) targets[v] = 0;   // a second attempt finds the first one's map
     for(const auto& c : indices) targets[c.first] = c.second * 2 * CGAL_PI;
     lengths = on.add_property_map<edge_descriptor, double>("e:smdf_remesh_length", 0.).first;
     return on_file(file, [&] { return SMDF::compute_cone_metric(on, targets, lengths, SMDF::parameters::intrinsic_edge_flips(false)); });
@@ -126,6 +132,7 @@ Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Me
   ig["min_area_ratio"] = gs.min_area_ratio;
   out["integer_grid_map"] = std::move(ig);
   if(!gs.success) {
+    folded = true;
     out["metric"] = metric;
     out["success"] = false;
     throw Failed_result{out, file + ": integer-grid map: " + gs.message, 3};
@@ -136,6 +143,49 @@ Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Me
     lengths[e] = std::hypot(b[0] - a[0], b[1] - a[1]);
   }
   return lengths;
+}
+
+} // namespace
+
+Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Mesh& refined, Mesh*& surface, double requested_h,
+                                         long requested_faces, double distortion_bound, long max_cones, double cone_spacing, Json& out, Json& metric,
+                                         const std::function<void(const char*)>& stage)
+{
+  const SMDF::Mesh_topology<Mesh> topo = SMDF::mesh_topology(mesh);
+  if(topo.components.size() != 1 || !topo.is_closed())
+    throw Error(file + ": automatic cones need a closed mesh of one component; this one has " + std::to_string(topo.components.size()) +
+                " component(s) and " + std::to_string(topo.boundary_loops.size()) + " boundary loop(s) [invalid_input]");
+  // Automatic spacing: cones only kept apart (0) first, then 2 grid edges apart if the map folds
+  // (measured at 4,000 quads: the casting and the botijo unfold at 2, the fertility folds at 2
+  // and not at 0; at 500 quads the bunny and the triple torus need 2).
+  const std::vector<double> spacings = cone_spacing >= 0 ? std::vector<double>{cone_spacing} : std::vector<double>{0., 2.};
+  Json attempts = Json::array();
+  for(std::size_t i = 0;; ++i) {
+    Json a = Json::object();
+    a["cone_spacing"] = spacings[i];
+    std::size_t cones = 0;
+    bool folded = false;
+    try {
+      surface = &mesh;
+      CGAL::clear(refined);   // the refinement of a previous attempt, made for other cones
+      Edge_length_property l = placed_cones_attempt(file, mesh, refined, surface, requested_h, requested_faces, distortion_bound, max_cones,
+                                                    spacings[i], out, metric, stage, cones, folded);
+      a["cones"] = cones;
+      a["message"] = "";
+      attempts.push_back(std::move(a));
+      out["placement_attempts"] = std::move(attempts);
+      return l;
+    } catch(Failed_result& f) {
+      a["cones"] = cones;
+      a["message"] = f.message;
+      attempts.push_back(std::move(a));
+      if(!folded || i + 1 == spacings.size()) {
+        f.json["placement_attempts"] = std::move(attempts);
+        throw;
+      }
+      stage("the map folds: cones placed further apart");
+    }
+  }
 }
 
 } // namespace smdf_cli

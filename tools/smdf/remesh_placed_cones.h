@@ -27,9 +27,10 @@ Json refinement_json(const std::string& message, const SMDF::Delaunay_refinement
 // and the integer-grid map for about `requested_faces` quads (or grid edges of `requested_h`
 // under the metric). Returns the map's edge lengths (grid units) on `*surface`; adds
 // placed_cones, placement and integer_grid_map to `out` and the metric's fields to `metric`.
+// Cones are kept `cone_spacing` grid edges apart where the placement can (measured on the input).
 // Throws Failed_result (exit 3) when a step fails, Error for an open mesh.
 Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Mesh& refined, Mesh*& surface, double requested_h,
-                                         long requested_faces, double distortion_bound, long max_cones, Json& out, Json& metric,
+                                         long requested_faces, double distortion_bound, long max_cones, double cone_spacing, Json& out, Json& metric,
                                          const std::function<void(const char*)>& stage);
 
 } // namespace smdf_cli

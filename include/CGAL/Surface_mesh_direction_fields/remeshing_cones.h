@@ -20,7 +20,9 @@
 #include <Eigen/Sparse>
 
 #include <algorithm>
+#include <functional>
 #include <limits>
+#include <queue>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -187,7 +189,11 @@ inline double spread(const std::vector<double>& u, const std::vector<char>& near
 ///   `metric.intrinsic_triangulation` and these lengths are those of the input's edges there)
 /// \param np `symmetry_order` (\f$N\f$, default 4), `distortion_bound` (\f$B\f$, default 2:
 ///   lengths within a factor \f$e^2 \approx 7.4\f$ of each other; the manual tabulates the cones
-///   this takes on the shared meshes), `maximum_number_of_cones` (default 500), `edge_length_map` or
+///   this takes on the shared meshes), `maximum_number_of_cones` (default 500),
+///   `minimum_cone_distance` (default 0: only adjacent cones are excluded; a length of the input
+///   metric, along edges: a new cone goes closer than that to another only when no other vertex
+///   of the sign needed is left; a remesh of edge length \f$h\f$ wants its cones a few \f$h\f$
+///   apart), `edge_length_map` or
 ///   `vertex_point_map` (the input metric), `conformal_factor_map` (receives \f$u\f$) and the
 ///   index maps.
 ///
@@ -207,6 +213,9 @@ Remeshing_cones_status<TriangleMesh> place_remeshing_cones(const TriangleMesh& t
     throw Input_error(Input_error::INVALID_ARGUMENT, "distortion_bound must be positive and finite");
   const int max_cones = choose_parameter(get_parameter(np, internal_np::maximum_number_of_cones), 500);
   if(max_cones < 1) throw Input_error(Input_error::INVALID_ARGUMENT, "maximum_number_of_cones must be at least 1");
+  const double min_distance = choose_parameter(get_parameter(np, internal_np::minimum_cone_distance), 0.);
+  if(!(min_distance >= 0) || !std::isfinite(min_distance))
+    throw Input_error(Input_error::INVALID_ARGUMENT, "minimum_cone_distance must be finite and not negative");
   st.N = N;
   st.distortion_bound = bound;
   const Intrinsic_mesh<TriangleMesh> im = internal::get_intrinsic_mesh(tm, np);
@@ -228,17 +237,46 @@ Remeshing_cones_status<TriangleMesh> place_remeshing_cones(const TriangleMesh& t
   // cones, their neighbours and isolated vertices: no new cone there, left out of the spread
   std::vector<char> near_cone(nv, 0);
   for(std::size_t v = 0; v < nv; ++v) near_cone[v] = m.is_isolated(int(v));
+  // vertices closer than minimum_cone_distance to a cone (along edges): taken only when no
+  // other vertex of the right sign is left
+  std::vector<char> crowded(nv, 0);
+  std::vector<double> reach(nv, std::numeric_limits<double>::infinity());
+  auto crowd = [&](std::size_t c) {   // Dijkstra from c, bounded by the distance
+    typedef std::pair<double, std::size_t> Item;
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+    std::vector<std::size_t> touched;
+    reach[c] = 0;
+    touched.push_back(c);
+    queue.emplace(0., c);
+    while(!queue.empty()) {
+      const Item it = queue.top();
+      queue.pop();
+      if(it.first > reach[it.second]) continue;
+      crowded[it.second] = 1;
+      for(int h = m.vertex_out[it.second], h0 = h;;) {
+        const std::size_t w = std::size_t(m.target[std::size_t(h)]);
+        const double dw = it.first + m.length[std::size_t(h >> 1)];
+        if(dw < min_distance && dw < reach[w]) { reach[w] = dw; touched.push_back(w); queue.emplace(dw, w); }
+        if(m.face[std::size_t(h)] < 0) break;
+        h = m.ccw_out(h);
+        if(h == h0) break;
+      }
+    }
+    for(std::size_t w : touched) reach[w] = std::numeric_limits<double>::infinity();
+  };
   long ksum = 0;
   auto step = [&](const std::vector<double>& u, int s) {
     // s = 0: either sign, by the farthest vertex's side of the mean
     const double mean = greedy.mean(u);
     std::size_t best = nv;
-    double best_d = 0;
-    for(std::size_t v = 0; v < nv; ++v) {
-      const double d = u[v] - mean;
-      const int sv = s != 0 ? s : (d > 0 ? 1 : -1);
-      if(d * sv <= 0 || near_cone[v]) continue;   // one quantum per cone, none adjacent
-      if(std::abs(d) > best_d) { best = v; best_d = std::abs(d); }
+    for(int pass = 0; pass < 2 && best == nv; ++pass) {
+      double best_d = 0;
+      for(std::size_t v = 0; v < nv; ++v) {
+        const double d = u[v] - mean;
+        const int sv = s != 0 ? s : (d > 0 ? 1 : -1);
+        if(d * sv <= 0 || near_cone[v] || (pass == 0 && crowded[v])) continue;   // one quantum per cone, none adjacent
+        if(std::abs(d) > best_d) { best = v; best_d = std::abs(d); }
+      }
     }
     if(best == nv) return false;
     const int sv = s != 0 ? s : (u[best] > mean ? 1 : -1);
@@ -252,6 +290,7 @@ Remeshing_cones_status<TriangleMesh> place_remeshing_cones(const TriangleMesh& t
       h = m.ccw_out(h);
       if(h == h0) break;
     }
+    if(min_distance > 0) crowd(best);
     return true;
   };
   auto cone_count = [&] { std::size_t c = 0; for(int x : k) c += x != 0; return c; };

@@ -35,3 +35,4 @@ CGAL_SMDF_add_named_parameter(smoothing_steps_t, smoothing_steps, smoothing_step
 CGAL_SMDF_add_named_parameter(common_subdivision_t, common_subdivision, common_subdivision)
 CGAL_SMDF_add_named_parameter(distortion_bound_t, distortion_bound, distortion_bound)
 CGAL_SMDF_add_named_parameter(maximum_number_of_cones_t, maximum_number_of_cones, maximum_number_of_cones)
+CGAL_SMDF_add_named_parameter(minimum_cone_distance_t, minimum_cone_distance, minimum_cone_distance)
