@@ -38,7 +38,10 @@
 #include <cmath>
 #include <sstream>
 #include <iostream>
+#include <functional>
+#include <limits>
 #include <map>
+#include <queue>
 #include <set>
 #include <algorithm>
 #include <complex>
@@ -1061,9 +1064,51 @@ void remeshing_cones(const std::string& dir)
   check_remeshing_cones(p, 4, 2., "double torus (Polyhedron_3)", np);
   check_remeshing_cones(sm, 4, 2., "double torus (Surface_mesh)", ns);
   SMDF_CHECK(np == ns && np >= 4);
+  // minimum_cone_distance, read back by Dijkstra along the edges from every cone: a pair closer
+  // than d only if the status counts a crowded cone; more room costs no read-back check
+  std::size_t spaced = 0;
+  for(const char* name : {"double-torus_jnd.off", "spot_c3d.obj", "bob_small_gc.off", "genus3_vhacd.off"}) {
+    Surface_mesh m;
+    if(!SMDF::read_triangle_mesh(dir + "/meshes/" + name, m)) continue;
+    double mean = 0;
+    for(auto e : edges(m)) mean += std::sqrt(CGAL::squared_distance(m.point(source(e, m)), m.point(target(e, m))));
+    mean /= double(num_edges(m));
+    const double d = std::uniform_real_distribution<double>(4, 10)(rng) * mean;
+    auto lengths = m.add_property_map<Surface_mesh::Edge_index, double>("e:l", 0.).first;
+    const auto st = SMDF::place_remeshing_cones(m, lengths, SMDF::parameters::minimum_cone_distance(d));
+    std::vector<double> dist;
+    double closest = std::numeric_limits<double>::infinity();
+    for(const auto& c : st.cones) {
+      dist.assign(num_vertices(m), std::numeric_limits<double>::infinity());
+      typedef std::pair<double, Surface_mesh::Vertex_index> Item;
+      std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+      dist[c.first] = 0;
+      queue.emplace(0., c.first);
+      while(!queue.empty()) {
+        const Item it = queue.top();
+        queue.pop();
+        if(it.first > dist[it.second]) continue;
+        for(auto h : CGAL::halfedges_around_source(it.second, m)) {
+          const auto w = target(h, m);
+          const double dw = it.first + std::sqrt(CGAL::squared_distance(m.point(it.second), m.point(w)));
+          if(dw < dist[w]) { dist[w] = dw; queue.emplace(dw, w); }
+        }
+      }
+      for(const auto& o : st.cones) if(o.first != c.first) closest = (std::min)(closest, dist[o.first]);
+    }
+    std::cout << name << ", cones at least " << d << " apart: " << st.cones.size() << " cones, closest pair " << closest << ", "
+              << st.crowded_cones << " crowded, spread " << st.scale_spread << (st.success ? "" : " (" + st.message + ")") << std::endl;
+    SMDF_CHECK_MSG(st.crowded_cones > 0 || closest >= d * (1 - 1e-12), name << ": cones " << closest << " apart, fewer than " << d);
+    spaced += st.crowded_cones == 0 && st.success;
+  }
+  SMDF_CHECK(spaced >= 3);
   // bad input
   bool threw = false;
   try { SMDF::place_remeshing_cones(sm, get(CGAL::dynamic_edge_property_t<double>(), sm), SMDF::parameters::distortion_bound(-1.)); }
+  catch(const SMDF::Input_error&) { threw = true; }
+  SMDF_CHECK(threw);
+  threw = false;
+  try { SMDF::place_remeshing_cones(sm, get(CGAL::dynamic_edge_property_t<double>(), sm), SMDF::parameters::minimum_cone_distance(-1.)); }
   catch(const SMDF::Input_error&) { threw = true; }
   SMDF_CHECK(threw);
 }

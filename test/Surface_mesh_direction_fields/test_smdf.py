@@ -577,6 +577,54 @@ def test_remesh(smdf, c, torus, tmp):
         c.check(r.get("placed_cones") == [] and list(r.get("valences", {})) == ["4"] and r.get("placement_attempts", [{}])[0].get("cone_spacing") == 2,
                 "remesh torus, automatic: no cone on a torus, every vertex of valence 4, one attempt at the spacing given (%r, %r)"
                 % (r.get("valences"), r.get("placement_attempts")))
+    # --uv-out: the integer-grid map read back from the file alone: every face's image is
+    # counterclockwise, and across every edge the two faces' images differ by a rotation by a
+    # multiple of 90 degrees and an integer translation
+    for name, path in (("torus", torus), ("spot", spot)):
+        uvf = os.path.join(tmp, "uv_%s.obj" % name)
+        r = smdf.json(["remesh", path, "--faces", "1200", "--uv-out", uvf, "--out", out], "remesh %s --uv-out" % name)
+        if not r:
+            continue
+        vts, fcs = [], []
+        for line in open(uvf):
+            w = line.split()
+            if w and w[0] == "vt":
+                vts.append((float(w[1]), float(w[2])))
+            elif w and w[0] == "f":
+                fcs.append([tuple(int(x) for x in c.split("/")) for c in w[1:]])
+        corner = {}
+        flipped = 0
+        for k, f in enumerate(fcs):
+            p = [vts[t - 1] for _, t in f]
+            area = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[2][0] - p[0][0]) * (p[1][1] - p[0][1])
+            flipped += area <= 0
+            for i in range(3):
+                corner[(k, f[i][0])] = p[i]
+        edge_faces = {}
+        for k, f in enumerate(fcs):
+            for i in range(3):
+                a, b = f[i][0], f[(i + 1) % 3][0]
+                edge_faces.setdefault((min(a, b), max(a, b)), []).append(k)
+        worst = 0.0
+        for (a, b), ks in edge_faces.items():
+            if len(ks) != 2:
+                worst = float("inf")
+                continue
+            pa, pb = corner[(ks[0], a)], corner[(ks[0], b)]
+            qa, qb = corner[(ks[1], a)], corner[(ks[1], b)]
+            best = float("inf")
+            for turn in range(4):
+                rot = lambda x, y: [(x, y), (-y, x), (-x, -y), (y, -x)][turn]
+                ra, rb = rot(*pa), rot(*pb)
+                t = (qa[0] - ra[0], qa[1] - ra[1])
+                off = max(abs(rb[0] + t[0] - qb[0]), abs(rb[1] + t[1] - qb[1]), abs(t[0] - round(t[0])), abs(t[1] - round(t[1])))
+                best = min(best, off)
+            worst = max(worst, best)
+        c.check(len(fcs) > 0 and flipped == 0 and worst < 1e-6,
+                "remesh %s --uv-out: %d faces, none flipped (%d), every edge's two images a grid symmetry apart (off by %g)"
+                % (name, len(fcs), flipped, worst))
+    smdf.error(["remesh", cube, "--uv-out", os.path.join(tmp, "cube_uv.obj"), "--faces", "100", "--out", out], "remesh cube --uv-out (its own metric)", 1, "--uv-out")
+    smdf.error(["remesh", spot, "--polycube", "box", "--uv-out", os.path.join(tmp, "x.obj"), "--faces", "100", "--out", out], "remesh --uv-out with a polycube", 2, "--uv-out")
     # an open surface that is not flat: automatic cones need a closed mesh (exit 1, one line);
     # a flat square's own metric (corners of pi/2) is tessellated as it is
     open_tet = os.path.join(tmp, "open_tet.off")

@@ -116,8 +116,8 @@ Json run_remesh(const Args& args)
   if(args.has("place-cones") && given_metric)
     throw Usage_error("--place-cones chooses the cones itself: give none of --cones, --cone-indices, --lengths and --polycube");
   if(args.has("place-cones") && grid_name != "quad") throw Usage_error("--place-cones makes an integer-grid map for --grid quad");
-  if(!may_place && (args.has("distortion-bound") || args.has("max-cones") || args.has("cone-spacing")))
-    throw Usage_error("--distortion-bound, --max-cones and --cone-spacing apply to automatic cones (quads, no --cones, --lengths or --polycube)");
+  if(!may_place && (args.has("distortion-bound") || args.has("max-cones") || args.has("cone-spacing") || args.has("uv-out")))
+    throw Usage_error("--distortion-bound, --max-cones, --cone-spacing and --uv-out apply to automatic cones (quads, no --cones, --lengths or --polycube)");
   const double distortion_bound = may_place ? args.real("distortion-bound", 2.0) : 0;
   if(may_place && !(distortion_bound > 0 && std::isfinite(distortion_bound)))
     throw Usage_error("option --distortion-bound expects a positive number, got '" + args.value("distortion-bound") + "'");
@@ -133,6 +133,9 @@ Json run_remesh(const Args& args)
   Mesh mesh;
   load_mesh(file, mesh);
   const bool place = args.has("place-cones") || (may_place && !embedding_fits_quads(mesh));
+  if(args.has("uv-out") && !place)
+    throw Error(file + ": --uv-out writes the integer-grid map of automatic cones, but this mesh's curvatures are all multiples of pi/2: "
+                       "its own metric is tessellated (give --place-cones for the map) [invalid_input]");
   Stopwatch clock;
   const bool progress = args.has("progress");
   const bool untangle = !args.has("no-untangle");
@@ -206,6 +209,7 @@ Json run_remesh(const Args& args)
     }
   } else if(place) {
     lengths = placed_cones_metric(file, mesh, refined, surface, requested_h, requested_faces, distortion_bound, max_cones, cone_spacing, out, metric, stage);
+    if(args.has("uv-out")) write_uv_obj(args.value("uv-out"), *surface);
   } else {
     lengths = mesh.add_property_map<edge_descriptor, double>("e:smdf_remesh_length", 0.).first;
     for(edge_descriptor e : edges(mesh)) lengths[e] = std::sqrt(CGAL::squared_distance(mesh.point(source(e, mesh)), mesh.point(target(e, mesh))));
@@ -541,6 +545,7 @@ Command remesh_command()
            {"place-cones", "", "automatic cones (the default for quads without --cones, --lengths or --polycube, unless every curvature of the input is a multiple of pi/2): closed meshes of any genus; place the cones (cone-metric --place-cones), compute their flat cone metric on the input's edges, the cross field of the trivial connection on it and an integer-grid map, and tessellate that (see the manual)"},
            {"distortion-bound", "B", "automatic cones: the cone metric's log scale within B (default 2)"},
            {"max-cones", "n", "automatic cones: at most n cones (default 500)"},
+           {"uv-out", "FILE", "automatic cones: write the integer-grid map as OBJ, one vt per face corner (a seamless parametrization in grid units; the triangulation is the Delaunay refinement's when the metric needed it)"},
            {"cone-spacing", "S", "automatic cones: at least S grid edges apart (along the input's edges) where the placement can; default: 0 (never adjacent), then 2 if the map folds"},
            {"progress", "", "report each stage on stderr with the elapsed time"}},
           "regular quad or triangle remesh from a flat cone metric",

@@ -188,4 +188,30 @@ Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Me
   }
 }
 
+void write_uv_obj(const std::string& path, const Mesh& on)
+{
+  const auto found = on.property_map<halfedge_descriptor, std::array<double, 2>>("h:smdf_remesh_uv");
+  if(!found.second) throw Error(path + ": no integer-grid map was made [internal]");
+  const auto& uv = found.first;
+  std::ostringstream os = number_stream();
+  os << "# integer-grid map (smdf remesh): a seamless parametrization, grid units; across every seam the two\n"
+        "# sides differ by a rotation by a multiple of 90 degrees and an integer translation\n";
+  std::vector<std::size_t> index(num_vertices(on), 0);
+  std::size_t n = 0;
+  for(vertex_descriptor v : vertices(on)) {
+    index[std::size_t(v)] = ++n;
+    const auto& p = on.point(v);
+    os << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+  }
+  for(face_descriptor f : faces(on))
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, on), on)) os << "vt " << uv[h][0] << ' ' << uv[h][1] << '\n';
+  std::size_t t = 0;
+  for(face_descriptor f : faces(on)) {
+    os << 'f';
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, on), on)) os << ' ' << index[std::size_t(target(h, on))] << '/' << ++t;
+    os << '\n';
+  }
+  write_lines_file(path, os.str());
+}
+
 } // namespace smdf_cli

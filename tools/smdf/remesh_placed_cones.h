@@ -33,6 +33,10 @@ Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Me
                                          long requested_faces, double distortion_bound, long max_cones, double cone_spacing, Json& out, Json& metric,
                                          const std::function<void(const char*)>& stage);
 
+// Writes the integer-grid map made by placed_cones_metric() on `on` (the input, or its
+// refinement) as OBJ: the vertices, one `vt` per face corner (grid units), faces `v/vt`.
+void write_uv_obj(const std::string& path, const Mesh& on);
+
 } // namespace smdf_cli
 
 #endif // SMDF_CLI_REMESH_PLACED_CONES_H

@@ -54,6 +54,9 @@ struct Remeshing_cones_status
   /// the same spread predicted by the linearised placement, before the curvatures were rounded
   double linear_scale_spread = 0;
   int greedy_steps = 0;       ///< quanta placed by the greedy steps (one per cone)
+  /// cones placed closer than `minimum_cone_distance` to an earlier one, for want of any other
+  /// vertex of the sign needed (0 when every pair of cones is at least that far apart)
+  int crowded_cones = 0;
   int placement_rounds = 0;   ///< rounds of placement and read-back (the linear bound is tightened after each miss)
   Cone_metric_status metric;       ///< the flat cone metric with `cones` (its intrinsic triangulation when it flipped)
 };
@@ -279,6 +282,7 @@ Remeshing_cones_status<TriangleMesh> place_remeshing_cones(const TriangleMesh& t
       }
     }
     if(best == nv) return false;
+    st.crowded_cones += crowded[best];
     const int sv = s != 0 ? s : (u[best] > mean ? 1 : -1);
     k[best] += sv;
     ksum += sv;
