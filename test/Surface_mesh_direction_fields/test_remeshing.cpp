@@ -1069,7 +1069,7 @@ void remeshing_cones(const std::string& dir)
   std::size_t spaced = 0;
   for(const char* name : {"double-torus_jnd.off", "spot_c3d.obj", "bob_small_gc.off", "genus3_vhacd.off"}) {
     Surface_mesh m;
-    if(!SMDF::read_triangle_mesh(dir + "/meshes/" + name, m)) continue;
+    SMDF::read_triangle_mesh(dir + "/meshes/" + name, m);
     double mean = 0;
     for(auto e : edges(m)) mean += std::sqrt(CGAL::squared_distance(m.point(source(e, m)), m.point(target(e, m))));
     mean /= double(num_edges(m));

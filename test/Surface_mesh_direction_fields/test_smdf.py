@@ -515,11 +515,13 @@ def test_remesh(smdf, c, torus, tmp):
     rc, o, err = smdf.run(["remesh", spot, "--polycube", "obelisk", "--faces", "1500", "--out", os.path.join(tmp, "spot_obelisk.obj")])
     doc = json.loads(o.decode()) if o else {}
     n = doc.get("subdivisions", 0)
-    c.check(rc == 0 and doc.get("grid") == "mixed" and doc.get("faces_by_size") == {"4": 5 * n * n, "3": 4 * n * n}
+    # (at 1,500 faces one face's normal opposes the input's at the input point nearest its
+    # centroid: exit 3 with the remesh still described; at 3,000 none)
+    c.check(rc in (0, 3) and doc.get("grid") == "mixed" and doc.get("faces_by_size") == {"4": 5 * n * n, "3": 4 * n * n}
             and doc.get("unexpected_valences") == 0 and doc.get("valences", {}).get("5") == 4 * (n - 1)
-            and doc.get("inverted_faces") == 0,
+            and doc.get("inverted_faces") == 0 and (rc == 0) == (doc.get("flipped_faces") == 0),
             "remesh spot --polycube obelisk: quads on the box, triangles on the pyramid, valence 5 along the ring, "
-            "none inverted (rc=%s, %r)" % (rc, {k: doc.get(k) for k in ("faces_by_size", "inverted_faces")}))
+            "none inverted, exit 0 exactly when no face is flipped (rc=%s, %r)" % (rc, {k: doc.get(k) for k in ("faces_by_size", "inverted_faces", "flipped_faces")}))
     # the grid's one inverted triangle sits next to the apex, on a horn's tip: holding the cones
     # leaves it, so the second pass lets the apex slide along the surface (valences kept)
     u = doc.get("untangle", {})
@@ -557,7 +559,7 @@ def test_remesh(smdf, c, torus, tmp):
         q = r.get("quality", {})
         d = r.get("distance_over_edge_length", {})
         c.check(r.get("success") is True and list(r.get("faces_by_size", {})) == ["4"] and got == want and
-                all(x.get("cone") is not None for x in irregular) and r.get("inverted_faces") == 0,
+                all(x.get("cone") is not None for x in irregular) and r.get("inverted_faces") == 0 and r.get("flipped_faces") == 0,
                 "remesh %s --place-cones: pure quads, irregular vertices exactly the %d placed cones with valence 4 - K/(pi/2) (%r vs %r)"
                 % (name, len(placed), got, want))
         c.check(q.get("min_scaled_jacobian", -1) > 0 and d.get("vertices_to_input", 1) < 1e-9 and d.get("remesh_to_input", 9) <= 1.0 and
@@ -582,7 +584,7 @@ def test_remesh(smdf, c, torus, tmp):
     # multiple of 90 degrees and an integer translation
     for name, path in (("torus", torus), ("spot", spot)):
         uvf = os.path.join(tmp, "uv_%s.obj" % name)
-        r = smdf.json(["remesh", path, "--faces", "1200", "--uv-out", uvf, "--out", out], "remesh %s --uv-out" % name)
+        r = smdf.json(["remesh", path, "--faces", "2500", "--uv-out", uvf, "--out", out], "remesh %s --uv-out" % name)
         if not r:
             continue
         vts, fcs = [], []

@@ -375,6 +375,12 @@ Json run_remesh(const Args& args)
         out["unexpected_valences"] = rs.unexpected_valences;
         out["irregular_vertices"] = std::move(irr);
         out["inverted_faces"] = inverted;
+        const std::size_t flipped = faces_flipped_at_closest_point(mesh, remesh);   // as below
+        out["flipped_faces"] = flipped;
+        if(flipped > 0 && success) {
+          success = false;
+          failure = std::to_string(flipped) + " faces point against the input's normal at the input point nearest their centroid (flipped)";
+        }
         out["quality"] = remesh_quality(remesh);
         out["distance_over_edge_length"] = remesh_distances(mesh, remesh, side / n);
         out["area_ratio"] = remesh_area_ratio(mesh, remesh);
@@ -508,6 +514,15 @@ Json run_remesh(const Args& args)
     }
     out["irregular_vertices"] = std::move(irr);
     out["inverted_faces"] = inverted;
+    // the rule, stricter than the read-back's normals under the corners: no face's normal
+    // against the input's at the input point nearest its centroid
+    const std::size_t flipped = faces_flipped_at_closest_point(mesh, remesh);
+    out["flipped_faces"] = flipped;
+    if(flipped > 0 && success) {
+      success = false;
+      failure = std::to_string(flipped) + " faces point against the input's normal at the input point nearest their centroid "
+                "(flipped; the metric stretches too much for this edge length, or the grid folds near a cone)";
+    }
     out["quality"] = remesh_quality(remesh);
     // (the integer-grid map's grid edge is 1 in its own units: on the surface, the mean quad's side)
     out["distance_over_edge_length"] = remesh_distances(mesh, remesh, place ? std::sqrt(CGAL::Polygon_mesh_processing::area(mesh) / double(num_faces(remesh))) : h);
@@ -575,6 +590,8 @@ Command remesh_command()
           "refinement's when delaunay_refinement is present), vertices, faces_by_size, valences\n"
           "(interior vertices),\n"
           "irregular_vertices: [{vertex, cone, valence}], inverted_faces (after untangling),\n"
+          "flipped_faces (faces whose normal opposes the input's at the input point nearest their\n"
+          "centroid; exit 3 if any),\n"
           "untangle (when the grid had inverted faces or nonconvex quads: {grid_inverted_faces, inverted_before,\n"
           "inverted_after (by the normals of the input faces nearest the corners), moved_vertices,\n"
           "cones_moved (0 unless holding the cones left faces inverted: then a second pass lets them\n"

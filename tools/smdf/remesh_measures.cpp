@@ -76,6 +76,32 @@ std::size_t nonconvex_quads(const Mesh& out)
 
 // Two-sided distance between input and remesh, over the edge length: output vertices to the
 // input surface, input vertices to the remesh (its faces fanned into triangles).
+std::size_t faces_flipped_at_closest_point(const Mesh& input, const Mesh& out)
+{
+  typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> Tree;
+  if(num_faces(input) == 0) return 0;
+  const Tree tree(faces(input).first, faces(input).second, input);
+  std::size_t flipped = 0;
+  std::vector<K::Point_3> corners;
+  for(face_descriptor f : faces(out)) {
+    corners.clear();
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, out), out)) corners.push_back(out.point(target(h, out)));
+    double c[3] = {0, 0, 0};
+    for(const K::Point_3& p : corners) { c[0] += p.x(); c[1] += p.y(); c[2] += p.z(); }
+    const double k = double(corners.size());
+    const K::Point_3 centroid(c[0] / k, c[1] / k, c[2] / k);
+    K::Vector_3 area(0, 0, 0);   // the polygon's area vector (fan from its first corner)
+    for(std::size_t i = 1; i + 1 < corners.size(); ++i) area = area + CGAL::cross_product(corners[i] - corners[0], corners[i + 1] - corners[0]);
+    const face_descriptor near = tree.closest_point_and_primitive(centroid).second;
+    const halfedge_descriptor g = halfedge(near, input);
+    const K::Vector_3 n = CGAL::cross_product(input.point(target(g, input)) - input.point(source(g, input)),
+                                              input.point(target(next(g, input), input)) - input.point(source(g, input)));
+    flipped += area * n < 0;
+  }
+  return flipped;
+}
+
 Json remesh_distances(const Mesh& input, const Mesh& out, double h)
 {
   typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;

@@ -25,6 +25,10 @@ std::size_t nonconvex_quads(const Mesh& out);
 // to the input, over the edge length h.
 Json remesh_distances(const Mesh& input, const Mesh& out, double h);
 
+// The remesh's faces whose area vector points against the normal of the input face nearest to
+// their centroid (flipped against the input).
+std::size_t faces_flipped_at_closest_point(const Mesh& input, const Mesh& out);
+
 // Area of the remesh (its faces fanned into triangles) over that of the input.
 double remesh_area_ratio(const Mesh& input, const Mesh& out);
 
