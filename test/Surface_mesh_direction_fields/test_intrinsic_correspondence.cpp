@@ -463,7 +463,7 @@ void boundary_aligned_tests(const std::string& dir, std::mt19937& rng)
     with_handles += genus > 0 ? 1 : 0;
   });
   std::cout << meshes << " open meshes, " << with_handles << " with handles, " << with_flips << " needed flips" << std::endl;
-  // (the sanitizer run's reduced mesh set, at most 15k faces, has no open mesh that needs flips)
+  // (the sanitizer run's reduced mesh set, at most 10k faces, has no open mesh that needs flips)
   const bool reduced = std::getenv("SMDF_TEST_MAX_FACES") != nullptr;
   SMDF_CHECK(meshes >= 4 && with_handles >= 1 && (with_flips >= 1 || reduced));
 }
