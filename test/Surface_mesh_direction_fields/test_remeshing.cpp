@@ -30,6 +30,7 @@
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/delaunay_refinement.h>
 #include <CGAL/Surface_mesh_direction_fields/topology.h>
+#include <CGAL/Surface_mesh_direction_fields/homotopy_basis.h>
 #include <CGAL/Surface_mesh_direction_fields/IO/read_triangle_mesh.h>
 
 #include <CGAL/boost/graph/IO/OFF.h>
@@ -1209,6 +1210,16 @@ void integer_grid_maps(const std::string& dir)
     if(st.success) {
       auto gl = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:grid", 0.).first;
       for(auto ed : edges(mesh)) gl[ed] = std::abs(at(halfedge(ed, mesh)) - at(prev(halfedge(ed, mesh), mesh)));
+      // the package's own holonomy-group test (Theorem 3.5) on the map's metric: every loop of a
+      // homotopy basis around the cones and the handles moves by a symmetry of the unit grid
+      std::vector<Surface_mesh::Vertex_index> cone_vertices;
+      for(const auto& c : cs.cones) cone_vertices.push_back(c.first);
+      const auto basis = SMDF::homotopy_basis(mesh, cone_vertices);
+      const SMDF::Holonomy_group group = SMDF::holonomy_group(mesh, basis, SMDF::parameters::edge_length_map(gl));
+      const SMDF::Tessellation_compatibility tc = SMDF::tessellation_compatibility_at(group, SMDF::SQUARE_GRID, 1., 1e-6);
+      SMDF_CHECK_MSG(tc.compatible && group.motions.size() == basis.loops.size(),
+                     what << ": the map's metric fails the holonomy-group test: " << tc.failing_loops.size() << " of " << group.motions.size()
+                          << " loops, rotation off by " << tc.max_rotation_deviation << ", translation by " << tc.max_translation_deviation);
       const auto dev = SMDF::develop_flat_metric(mesh, SMDF::parameters::edge_length_map(gl));
       Surface_mesh out;
       const auto ts = SMDF::tessellate_flat_metric(mesh, dev, SMDF::SQUARE_GRID, 1., out);
