@@ -44,19 +44,6 @@ namespace {
 } // namespace
 
 // The JSON of polyhedron_compatibility(): the face-by-face test of a metric against P.
-// Whether the input's own metric may already be one to tessellate with quads: every vertex's
-// curvature (angle defect, or boundary turning) a multiple of pi/2 (a cube, an L-shaped plate).
-bool embedding_fits_quads(const Mesh& mesh)
-{
-  auto k = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
-  SMDF::compute_vertex_curvatures(mesh, k);
-  for(vertex_descriptor v : vertices(mesh)) {
-    const double q = get(k, v) / (CGAL_PI / 2);
-    if(std::abs(q - std::round(q)) > 1e-6) return false;
-  }
-  return true;
-}
-
 Json compatibility_json(const SMDF::Polyhedron_compatibility& pc)
 {
   Json c = Json::object(), failing = Json::array();

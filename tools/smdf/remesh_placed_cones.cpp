@@ -7,6 +7,7 @@
 #include <CGAL/Surface_mesh_direction_fields/compute_trivial_connection.h>
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/integer_grid_map.h>
+#include <CGAL/Surface_mesh_direction_fields/intrinsic_geometry.h>
 #include <CGAL/Surface_mesh_direction_fields/remeshing_cones.h>
 #include <CGAL/Surface_mesh_direction_fields/topology.h>
 
@@ -29,6 +30,17 @@ Json refinement_json(const std::string& message, const SMDF::Delaunay_refinement
   r["faces"] = rs.faces;
   r["inserted_vertices"] = rs.inserted.size();
   return r;
+}
+
+bool embedding_fits_quads(const Mesh& mesh)
+{
+  auto k = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+  SMDF::compute_vertex_curvatures(mesh, k);
+  for(vertex_descriptor v : vertices(mesh)) {
+    const double q = get(k, v) / (CGAL_PI / 2);
+    if(std::abs(q - std::round(q)) > 1e-6) return false;
+  }
+  return true;
 }
 
 namespace {

@@ -17,6 +17,11 @@
 
 namespace smdf_cli {
 
+// Whether the input's own metric may already be one to tessellate with quads: every vertex's
+// curvature (angle defect, or boundary turning) a multiple of pi/2 (a cube, an L-shaped plate).
+// Otherwise `remesh` places cones for quads when no metric is given.
+bool embedding_fits_quads(const Mesh& mesh);
+
 // The JSON of a conforming Delaunay refinement made because the input's edges could not carry
 // a metric (`message`: why not).
 Json refinement_json(const std::string& message, const SMDF::Delaunay_refinement_status& rs);
