@@ -150,6 +150,17 @@ Json run_remesh(const Args& args)
                   " and " + std::to_string(topo.boundary_loops.size()) + " boundary loop(s) [invalid_input]");
   }
   Json out = Json::object();
+  // Every route's last read-back, stricter than the library's normals under the corners: no face
+  // whose normal opposes the input's at the input point nearest its centroid.
+  auto check_flipped_faces = [&](const Mesh& remesh, bool& success, std::string& failure) {
+    const std::size_t flipped = faces_flipped_at_closest_point(mesh, remesh);
+    out["flipped_faces"] = flipped;
+    if(flipped > 0 && success) {
+      success = false;
+      failure = std::to_string(flipped) + " faces point against the input's normal at the input point nearest their centroid "
+                "(flipped; the metric stretches too much for this edge length, or the grid folds near a cone)";
+    }
+  };
   out["grid"] = grid_name;
   const double unit_area = grid == SMDF::SQUARE_GRID ? 1. : std::sqrt(3.) / 4;
   // 1. the metric
@@ -362,12 +373,7 @@ Json run_remesh(const Args& args)
         out["unexpected_valences"] = rs.unexpected_valences;
         out["irregular_vertices"] = std::move(irr);
         out["inverted_faces"] = inverted;
-        const std::size_t flipped = faces_flipped_at_closest_point(mesh, remesh);   // as below
-        out["flipped_faces"] = flipped;
-        if(flipped > 0 && success) {
-          success = false;
-          failure = std::to_string(flipped) + " faces point against the input's normal at the input point nearest their centroid (flipped)";
-        }
+        check_flipped_faces(remesh, success, failure);
         out["quality"] = remesh_quality(remesh);
         out["distance_over_edge_length"] = remesh_distances(mesh, remesh, side / n);
         out["area_ratio"] = remesh_area_ratio(mesh, remesh);
@@ -501,15 +507,7 @@ Json run_remesh(const Args& args)
     }
     out["irregular_vertices"] = std::move(irr);
     out["inverted_faces"] = inverted;
-    // the rule, stricter than the read-back's normals under the corners: no face's normal
-    // against the input's at the input point nearest its centroid
-    const std::size_t flipped = faces_flipped_at_closest_point(mesh, remesh);
-    out["flipped_faces"] = flipped;
-    if(flipped > 0 && success) {
-      success = false;
-      failure = std::to_string(flipped) + " faces point against the input's normal at the input point nearest their centroid "
-                "(flipped; the metric stretches too much for this edge length, or the grid folds near a cone)";
-    }
+    check_flipped_faces(remesh, success, failure);
     out["quality"] = remesh_quality(remesh);
     // (the integer-grid map's grid edge is 1 in its own units: on the surface, the mean quad's side)
     out["distance_over_edge_length"] = remesh_distances(mesh, remesh, place ? std::sqrt(CGAL::Polygon_mesh_processing::area(mesh) / double(num_faces(remesh))) : h);
