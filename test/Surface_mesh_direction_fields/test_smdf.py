@@ -28,6 +28,7 @@ Prints one line per check and "N passed, N failed"; exits 1 on failure.
 import argparse
 import csv
 import json
+import re
 import math
 import os
 import random
@@ -675,8 +676,12 @@ def test_remesh_cones_and_files(smdf, c, torus, tmp, cube, spot):
     if os.path.isfile(svg):
         with open(svg) as f:
             text = f.read()
-        c.check(text.count("<line") > 2000 and text.count("<circle") >= 5 and "+1/4" in text,
-                "remesh --svg: the remesh's edges and its visible cones of index 1/4 drawn")
+        polygons = re.findall(r'<polygon[^>]*points="([^"]*)"', text)
+        quads = sum(1 for p in polygons if len(p.split()) == 4)
+        faces = sum(int(n) for n in doc.get("faces_by_size", {}).values())
+        c.check(quads == len(polygons) and 0.3 * faces < quads < 0.7 * faces and text.count("<circle") >= 5 and "+1/4" in text,
+                "remesh --svg: the remesh's own quads drawn, the visible ones (%d of %d), and its visible cones of index 1/4"
+                % (quads, faces))
     else:
         c.check(False, "remesh --svg written")
     knot = os.path.join(tmp, "spot_knot.svg")

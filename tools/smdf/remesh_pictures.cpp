@@ -6,9 +6,6 @@
 #include "remesh_pictures.h"
 #include "remesh_measures.h"
 
-#include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
 
 #include <algorithm>
 #include <array>
@@ -20,48 +17,22 @@ namespace smdf_cli {
 
 void write_remesh_svg(const Args& args, const Mesh& input, const Mesh& remesh, int N)
 {
-  typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
-  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> Tree;
-  // The input is the surface drawn; every edge of the remesh is cut into pieces about half an
-  // input edge long, each drawn with the input face nearest to it, so that the painter's order
-  // of the input's faces hides exactly what lies behind.
-  Tree tree(faces(input).first, faces(input).second, input);
-  double mean_edge = 0;
-  for(edge_descriptor e : edges(input))
-    mean_edge += std::sqrt(CGAL::squared_distance(input.point(source(halfedge(e, input), input)), input.point(target(halfedge(e, input), input))));
-  mean_edge /= (std::max)(std::size_t(1), std::size_t(num_edges(input)));
-  auto arr = [](const K::Point_3& p) { return std::array<double, 3>{{p.x(), p.y(), p.z()}}; };
-  std::vector<SMDF::Svg_stroke<Mesh>> strokes;
-  for(edge_descriptor e : edges(remesh)) {
-    const K::Point_3 a = remesh.point(source(halfedge(e, remesh), remesh)), b = remesh.point(target(halfedge(e, remesh), remesh));
-    const int pieces = (std::max)(1, int(std::ceil(std::sqrt(CGAL::squared_distance(a, b)) / (0.5 * mean_edge))));
-    for(int k = 0; k < pieces; ++k) {
-      const K::Point_3 x = CGAL::barycenter(a, 1 - double(k) / pieces, b, double(k) / pieces);
-      const K::Point_3 y = CGAL::barycenter(a, 1 - double(k + 1) / pieces, b, double(k + 1) / pieces);
-      strokes.push_back(SMDF::Svg_stroke<Mesh>{tree.closest_point_and_primitive(CGAL::midpoint(x, y)).second, arr(x), arr(y)});
-    }
-  }
-  // the cones: the remesh's vertices whose faces do not fill 2 pi in the grid's angles, marked at
-  // the nearest corner of the input face they lie in
+  // The remesh itself: its faces shaded and painted back to front, back faces culled, its edges
+  // stroked, and its cones (vertices whose faces do not fill 2 pi in the grid's angles) marked
+  // by their index K / 2 pi.
   const std::vector<double> K = grid_curvatures(remesh);
   std::vector<std::pair<vertex_descriptor, double>> marks;
   for(vertex_descriptor v : vertices(remesh)) {
     if(CGAL::is_border(v, remesh) || !(std::abs(K[index(v)]) > 1e-9)) continue;
-    const face_descriptor f = tree.closest_point_and_primitive(remesh.point(v)).second;
-    vertex_descriptor nearest = Mesh::null_vertex();
-    double best = 1e300;
-    for(vertex_descriptor w : CGAL::vertices_around_face(halfedge(f, input), input)) {
-      const double d = CGAL::squared_distance(input.point(w), remesh.point(v));
-      if(d < best) { best = d; nearest = w; }
-    }
-    marks.emplace_back(nearest, std::round(K[index(v)] / (2 * CGAL_PI) * N) / N);
+    marks.emplace_back(v, std::round(K[index(v)] / (2 * CGAL_PI) * N) / N);
   }
   SMDF::Svg_options view = svg_options(args);
   if(!args.has("view")) view.up_axis = default_up_axis(input);
-  view.edge_stroke_width = 0;
-  view.glyph_stroke_width = 0.6;
+  view.edge_stroke_width = 0.5;
+  view.edge_color = "#303030";
+  view.singularity_radius = 4;
   std::ostringstream os;
-  SMDF::write_strokes_svg(os, input, strokes, N, marks, view);
+  SMDF::write_field_svg(os, remesh, N, marks, view);
   write_lines_file(args.value("svg"), os.str());
 }
 

@@ -10,10 +10,9 @@
 
 namespace smdf_cli {
 
-// --svg: the remesh drawn (its faces fanned into triangles for the shading, its own edges as
-// strokes, each with the triangle it bounds, so that nearer faces hide it) and its cones marked:
-// the vertices whose faces' corner angles of the grid (pi/2 in a quad, pi/3 in a triangle) do not
-// sum to 2 pi, with index K / 2 pi. Its vertices lie on the input surface.
+// --svg: the remesh itself, its faces shaded and painted back to front (back faces culled), its
+// edges stroked, its cones marked: the vertices whose faces' corner angles of the grid (pi/2 in a
+// quad, pi/3 in a triangle) do not sum to 2 pi, with index K / 2 pi.
 void write_remesh_svg(const Args& args, const Mesh& input, const Mesh& remesh, int N);
 
 // --knot-svg: a woven Celtic knot on a quad remesh (Lai et al. Fig. 13): the strands follow the

@@ -585,6 +585,88 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
     st.message = "a grid edge ends off the grid points (inconsistent development)";
     return st;
   }
+  // Faces whose corners are all cones (cones at the four corners of a unit square: valid, if
+  // crowded) have no corner to be read from above. A cone's grid edges are walked from the corner
+  // of its fan whose angle holds their direction (half-open: a direction along a mesh edge belongs
+  // to the corner that starts there), counterclockwise: its rotation system, with which such a
+  // face is read like any other, and kept by its first corner.
+  if(!off_grid[0] && !off_grid[1]) {
+    std::vector<int> cone_slot(points.size(), -1);
+    std::vector<std::vector<std::size_t>> cone_edges;
+    for(std::size_t i = 0; i < points.size(); ++i) {
+      if(!is_cone(i) || m.is_boundary_vertex(points[i].id)) continue;
+      cone_slot[i] = int(cone_edges.size());
+      cone_edges.emplace_back();
+      const int v = points[i].id;
+      int g = m.vertex_out[std::size_t(v)];
+      const int g0 = g;
+      do {
+        const int f = m.face[std::size_t(g)];
+        int k = 0;
+        for(int x = m.face_halfedge[std::size_t(f)]; x != g; x = m.next[std::size_t(x)]) ++k;
+        const Point_2 &p = uv[std::size_t(f)][std::size_t(k)], &a = uv[std::size_t(f)][std::size_t((k + 1) % 3)],
+                      &b = uv[std::size_t(f)][std::size_t((k + 2) % 3)];
+        std::vector<std::pair<double, int>> in_corner;   // (angle from p->a, direction)
+        for(int dir = 0; dir < dirs; ++dir) {
+          const std::array<double, 2> d = rotation_of[std::size_t(dir)].rotate(1, 0);
+          const Point_2 to(p.x() + d[0], p.y() + d[1]);
+          const CGAL::Orientation oa = CGAL::orientation(ep(p), ep(a), ep(to));
+          const double ax = a.x() - p.x(), ay = a.y() - p.y();
+          const bool from_a = oa == CGAL::LEFT_TURN || (oa == CGAL::COLLINEAR && ax * d[0] + ay * d[1] > 0);
+          if(!from_a || CGAL::orientation(ep(p), ep(b), ep(to)) != CGAL::RIGHT_TURN) continue;
+          in_corner.emplace_back(std::atan2(ax * d[1] - ay * d[0], ax * d[0] + ay * d[1]), dir);
+        }
+        std::sort(in_corner.begin(), in_corner.end());
+        for(const auto& c : in_corner) {
+          const std::array<double, 2> d = rotation_of[std::size_t(c.second)].rotate(1, 0);
+          internal::Lattice_motion carried;
+          int where = -1;
+          Point_2 target;
+          const std::size_t j = reach(f, p, Point_2(p.x() + d[0], p.y() + d[1]), carried, where, target);
+          if(j == off || j == none) { off_grid[0] = true; break; }
+          cone_edges.back().push_back(j);
+        }
+        g = m.ccw_out(g);
+      } while(g != g0 && !off_grid[0]);
+      if(off_grid[0]) break;
+    }
+    // the edges at point p counterclockwise, as (first, count)
+    auto edges_at = [&](std::size_t p) -> std::pair<const std::size_t*, int> {
+      if(cone_slot[p] >= 0) return {cone_edges[std::size_t(cone_slot[p])].data(), int(cone_edges[std::size_t(cone_slot[p])].size())};
+      if(is_cone(p)) return {nullptr, 0};
+      return {neighbour.data() + p * std::size_t(dirs), dirs};
+    };
+    for(std::size_t i = 0; i < points.size() && !off_grid[0]; ++i) {
+      if(cone_slot[i] < 0) continue;
+      const auto own = edges_at(i);
+      for(int t = 0; t < own.second; ++t) {
+        Found corners;
+        corners.fill(none);
+        corners[0] = i;
+        std::size_t from = i, at = own.first[t];
+        bool keep = true;
+        for(int k = 1; k <= sides && keep; ++k) {   // the sides corners, then back at i
+          if(at == none || !is_cone(at) || (k < sides && at < i)) { keep = false; break; }
+          if(k == sides) { keep = at == i; break; }
+          corners[std::size_t(k)] = at;
+          const auto e = edges_at(at);
+          int back = -1;
+          for(int q = 0; q < e.second; ++q)
+            if(e.first[q] == from) { if(back >= 0) keep = false; back = q; }
+          if(back < 0 || !keep) { keep = false; break; }
+          from = at;
+          at = e.first[(back + e.second - 1) % e.second];
+        }
+        if(!keep) continue;
+        corners[4] = std::size_t(sides);
+        found[0].push_back(corners);
+      }
+    }
+    if(off_grid[0]) {
+      st.message = "a grid edge from a cone ends off the grid points (inconsistent development)";
+      return st;
+    }
+  }
   std::vector<std::vector<std::size_t>> out_faces;
   for(const std::vector<Found>& part : found)
     for(const Found& corners : part) out_faces.emplace_back(corners.begin(), corners.begin() + std::ptrdiff_t(corners[4]));

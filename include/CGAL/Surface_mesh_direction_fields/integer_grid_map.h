@@ -370,8 +370,10 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   };
   // the normal equations with a stiffness per face (1, raised where the map folds: Bommes et
   // al.'s local stiffening), factored, and their Schur complement S y = rs on the small unknowns
-  Eigen::MatrixXd X, S;   // X = Hbb^-1 Hbs
+  Eigen::MatrixXd S;
   Eigen::VectorXd xg, rs; // xg = Hbb^-1 gb
+  Cholmod_cholesky chol;  // of Hbb
+  Eigen::SparseMatrix<double> Hbs;
   std::vector<double> stiffness(nf, 1.);
   auto assemble = [&]() -> bool {
   tbb.clear(); tbs.clear();
@@ -398,11 +400,12 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
       add_row(imr, wpos * stiffness[f]);
     }
   }
-  // 6. the seamless map: Schur complement on the small unknowns
-  X = Eigen::MatrixXd::Zero(nb, ns);
+  // 6. the seamless map: Schur complement on the small unknowns, S = Hss - Hbs^T Hbb^-1 Hbs, one
+  // back-substitution per column of Hbs, none kept (a dense Hbb^-1 Hbs took 1.4 GB on armadillo):
+  // the vertex unknowns are solved again from y where needed
   xg = Eigen::VectorXd::Zero(nb);
-  Cholmod_cholesky chol;
-  Eigen::SparseMatrix<double> Hbs(nb, ns);
+  Hbs = Eigen::SparseMatrix<double>(nb, ns);
+  S = Hss;
   if(nb > 0) {
     Cholmod_cholesky::Matrix Hbb(nb, nb);
     Hbb.setFromTriplets(tbb.begin(), tbb.end());
@@ -413,14 +416,17 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
     xg = chol.solve(gb);
     for(int k = 0; k < ns; ++k) {
       const Eigen::VectorXd col = Eigen::VectorXd(Hbs.col(k));
-      if(col.squaredNorm() > 0) X.col(k) = chol.solve(col);
+      if(col.squaredNorm() > 0) S.col(k).noalias() -= Hbs.transpose() * chol.solve(col);   // sparse times dense
     }
   }
-  S = Hss - Eigen::MatrixXd(Hbs.transpose()) * X;
-  rs = gs - Eigen::VectorXd(Hbs.transpose() * xg);
+  rs = gs;
+  rs.noalias() -= Hbs.transpose() * xg;
   return true;
   };
   if(!assemble()) return st;
+  auto big_of = [&](const Eigen::VectorXd& small) {   // the vertex unknowns given the small ones
+    return nb > 0 ? Eigen::VectorXd(chol.solve(gb - Hbs * small)) : Eigen::VectorXd();
+  };
   // linear conditions on the small unknowns (the closings, the gauge, then the roundings), kept
   // as an orthonormal basis Q y = delta of their span (Gram-Schmidt): a condition in that span is
   // implied by the others and not added again
@@ -490,7 +496,7 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
     std::size_t best = std::size_t(-1);
     int stalled = 0;
     for(int round = 0; round < 8; ++round) {
-      z = nb > 0 ? Eigen::VectorXd(xg - X * y) : Eigen::VectorXd();
+      z = big_of(y);
       std::vector<char> stiffen(nf, 0);
       std::size_t count = 0;
       for(std::size_t f = 0; f < nf; ++f) count += folded(f);
@@ -510,7 +516,7 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
       ++st.stiffening_rounds;
       if(!assemble() || !solve_small(y)) return false;
     }
-    z = nb > 0 ? Eigen::VectorXd(xg - X * y) : Eigen::VectorXd();
+    z = big_of(y);
     return true;
   };
   if(!solve_small(y)) { st.message = "the seams' conditions are inconsistent"; return st; }
@@ -525,6 +531,26 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
     for(const Eigen::VectorXd& q : Q) r2 -= q[k] * q[k];
     return r2 < 1e-12;
   };
+  // M = N (N^T S N)^-1 N^T, N a basis of the conditions' null space (the top-left block of the
+  // KKT matrix's inverse): a new condition a.y = v moves y by M a (v - a.y) / (a.M a) and takes
+  // the rank one (M a)(M a)^T / (a.M a) off M, O(ns^2) per rounding instead of a dense solve
+  Eigen::MatrixXd M;
+  auto constrained_inverse = [&]() -> bool {
+    const Eigen::Index mq = Eigen::Index(Q.size());
+    Eigen::MatrixXd K = Eigen::MatrixXd::Zero(ns + mq, ns + mq);
+    K.topLeftCorner(ns, ns) = S;
+    for(Eigen::Index i = 0; i < mq; ++i) {
+      K.block(ns + i, 0, 1, ns) = Q[std::size_t(i)].transpose();
+      K.block(0, ns + i, ns, 1) = Q[std::size_t(i)];
+    }
+    Eigen::MatrixXd E = Eigen::MatrixXd::Zero(ns + mq, ns);
+    E.topRows(ns).setIdentity();
+    M = K.partialPivLu().solve(E).topRows(ns);
+    M = 0.5 * (M + M.transpose()).eval();
+    return M.allFinite();
+  };
+  if(!constrained_inverse()) { st.message = "the seams' conditions are inconsistent"; return st; }
+  const double m_scale = ns > 0 ? (std::max)(M.diagonal().cwiseAbs().maxCoeff(), 1e-300) : 1.;
   for(int phase = 0; phase < 2; ++phase) {
     std::vector<int> todo;
     for(int k = 0; k < nsmall; ++k)
@@ -553,18 +579,26 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
       const std::vector<Eigen::VectorXd> Q0 = Q;
       const std::vector<double> delta0 = delta;
       bool placed = false;
+      const Eigen::VectorXd Ma = M.col(k);
+      const double aMa = Ma[k];
+      const bool update = aMa > 1e-10 * m_scale;   // else (round-off on a nearly implied value) a full solve
       for(double v : {r0, r0 + dir, r0 - dir, r0 + 2 * dir, r0 - 2 * dir}) {
         Q = Q0;
         delta = delta0;
         add_condition(unit_row(k), v);
         Eigen::VectorXd yt;
-        if(!solve_small(yt)) continue;
+        if(update) yt = y + Ma * ((v - y[k]) / aMa);
+        else if(!solve_small(yt)) continue;
         bool integral = true;
         for(int j : todo) if(implied_by(j) && std::abs(yt[j] - std::round(yt[j])) > 1e-6) { integral = false; break; }
         if(!integral) continue;
         y = yt;
         placed = true;
         break;
+      }
+      if(placed) {
+        if(update) M.noalias() -= (Ma / aMa) * Ma.transpose();
+        else if(!constrained_inverse()) { st.message = "the seams' conditions are inconsistent"; return st; }
       }
       if(!placed) {
         st.message = "no integer value near " + std::to_string(y[k]) + " keeps the seams' translations integers";
@@ -573,6 +607,8 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
       ++st.rounded;
     }
   }
+  // every small unknown is now fixed by the conditions: solved once more, free of the updates' round-off
+  if(!solve_small(y)) { st.message = "the seams' conditions are inconsistent"; return st; }
   if(!unfold()) { if(st.message.empty()) st.message = "the stiffened system could not be solved"; return st; }
   // 8. the vertex unknowns, the corners' images and the read-back
   auto folds = [&]() {
@@ -598,12 +634,12 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   {
     Eigen::VectorXd yi = y;
     y = y_seamless;
-    z = nb > 0 ? Eigen::VectorXd(xg - X * y) : Eigen::VectorXd();
+    z = big_of(y);
     st.seamless_energy = map_energy();
     st.seamless_folded_triangles = folds();
     y = yi;
   }
-  z = nb > 0 ? Eigen::VectorXd(xg - X * y) : Eigen::VectorXd();
+  z = big_of(y);
   st.integer_energy = map_energy();
   st.min_area_ratio = std::numeric_limits<double>::infinity();
   for(std::size_t f = 0; f < nf; ++f) {

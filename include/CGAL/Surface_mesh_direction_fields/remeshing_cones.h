@@ -49,7 +49,9 @@ struct Remeshing_cones_status
   std::vector<std::pair<vertex_descriptor, double>> cones;
   /// \f$\max_v u_v - \min_v u_v\f$ of the flat cone metric with `cones` (its conformal factors
   /// \f$u\f$, lengths scaled by \f$e^{u}\f$): the logarithm of the ratio of its largest to its
-  /// smallest length scale. Read back from the metric, not predicted.
+  /// smallest length scale, away from the cones and their neighbours (and, when
+  /// `minimum_cone_distance` is given, from the vertices within that distance of a cone). Read
+  /// back from the metric, not predicted.
   double scale_spread = 0;
   /// the same spread predicted by the linearised placement, before the curvatures were rounded
   double linear_scale_spread = 0;
@@ -298,6 +300,15 @@ Remeshing_cones_status<TriangleMesh> place_remeshing_cones(const TriangleMesh& t
     return true;
   };
   auto cone_count = [&] { std::size_t c = 0; for(int x : k) c += x != 0; return c; };
+  // the vertices the spread leaves out: the cones' neighbourhoods, within minimum_cone_distance
+  // when it is given (a peak there can take no cone of its own: counting it made the placement
+  // add cones elsewhere up to the maximum, 80 -> 500 on homer at 2 quad sides)
+  std::vector<char> unmeasured;
+  auto left_out = [&]() -> const std::vector<char>& {
+    unmeasured = near_cone;
+    for(std::size_t v = 0; v < nv; ++v) unmeasured[v] = unmeasured[v] || crowded[v];
+    return unmeasured;
+  };
   auto vertex_map = get(CGAL::dynamic_vertex_property_t<double>(), tm);
   auto u_map = choose_parameter(get_parameter(np, internal_np::conformal_factor), get(CGAL::dynamic_vertex_property_t<double>(), tm));
   auto input_length = get(CGAL::dynamic_edge_property_t<double>(), tm);
@@ -310,7 +321,7 @@ Remeshing_cones_status<TriangleMesh> place_remeshing_cones(const TriangleMesh& t
     st.placement_rounds = round + 1;
     for(;;) {
       const std::vector<double> u = greedy.scale(k, q, total);
-      st.linear_scale_spread = internal::spread(u, near_cone);
+      st.linear_scale_spread = internal::spread(u, left_out());
       const bool within = capped || st.linear_scale_spread <= linear_bound;
       if(within && ksum == target_k) break;
       if(!capped && (int(cone_count()) >= max_cones || steps >= max_steps)) { capped = true; continue; }
@@ -324,7 +335,7 @@ Remeshing_cones_status<TriangleMesh> place_remeshing_cones(const TriangleMesh& t
         const double mean = greedy.mean(u);
         double above = 0, below = 0;
         for(std::size_t v = 0; v < nv; ++v)
-          if(!near_cone[v]) { above = (std::max)(above, u[v] - mean); below = (std::max)(below, mean - u[v]); }
+          if(!unmeasured[v]) { above = (std::max)(above, u[v] - mean); below = (std::max)(below, mean - u[v]); }
         if((need > 0 && below > 1.5 * above) || (need < 0 && above > 1.5 * below)) sign = 0;
       }
       if(!step(u, sign)) {
@@ -351,7 +362,7 @@ Remeshing_cones_status<TriangleMesh> place_remeshing_cones(const TriangleMesh& t
     }
     std::vector<double> uu(nv);
     for(std::size_t v = 0; v < nv; ++v) uu[v] = get(u_map, m.vertices[v]);
-    st.scale_spread = internal::spread(uu, near_cone);
+    st.scale_spread = internal::spread(uu, left_out());
     if(st.scale_spread <= bound && int(st.cones.size()) <= max_cones) { st.success = true; st.message.clear(); return st; }
     if(capped) break;
     // the linear model missed: tighten its bound by the ratio missed

@@ -215,7 +215,7 @@ struct Svg_camera
 } // namespace internal
 
 /// \ingroup PkgSurfaceMeshDirectionFieldsIO
-/// Writes an SVG picture of a triangle mesh, of a face-based N-RoSy field on it and of its
+/// Writes an SVG picture of a polygon mesh (triangles, quads or any faces), of a face-based N-RoSy field on it and of its
 /// singularities, as seen from the direction given by `options.azimuth` and
 /// `options.elevation` (orthographic projection, `options.up_axis` pointing up).
 ///
@@ -231,7 +231,8 @@ struct Svg_camera
 /// indices, paler for smaller magnitudes, with an optional legend. The view box is fitted to the
 /// projection of the mesh. Runs in linear time plus one sort of the faces.
 ///
-/// \tparam TriangleMesh a model of `FaceListGraph`
+/// \tparam TriangleMesh a model of `FaceListGraph`, faces of any size (a polygon's normal is
+///         Newell's, its glyph at the mean of its corners)
 /// \tparam FaceVectorMap readable property map with `face_descriptor` keys whose values have
 ///         `operator[]` for the coordinates 0 to 2 (e.g. `Kernel::Vector_3`, as written by
 ///         `Trivial_connection::angles_to_vectors()`), a direction in (or near) the plane of the
@@ -284,6 +285,26 @@ void write_field_svg(std::ostream& os, const TriangleMesh& tm, const FaceVectorM
       throw Input_error(Input_error::INVALID_GEOMETRY, "a vertex has non-finite coordinates");
   };
   auto dot = [](const double* a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+  // a face's corners, its unit normal (Newell's: the area vector of a polygon of any size) and
+  // its centroid; false for a degenerate face
+  std::vector<std::array<double, 3>> ring;
+  auto face_geometry = [&](face_descriptor f, double n[3], double c[3]) {
+    ring.clear();
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
+      ring.emplace_back();
+      point(target(h, tm), ring.back().data());
+    }
+    n[0] = n[1] = n[2] = c[0] = c[1] = c[2] = 0;
+    for(std::size_t i = 0; i < ring.size(); ++i) {
+      const double *a = ring[i].data(), *b = ring[(i + 1) % ring.size()].data();
+      n[0] += a[1] * b[2] - a[2] * b[1]; n[1] += a[2] * b[0] - a[0] * b[2]; n[2] += a[0] * b[1] - a[1] * b[0];
+      for(int k = 0; k < 3; ++k) c[k] += a[k] / double(ring.size());
+    }
+    const double nl = std::sqrt(dot(n, n));
+    if(!(nl > 0)) return false;
+    for(int k = 0; k < 3; ++k) n[k] /= nl;
+    return true;
+  };
 
   // ---- projected bounding box and mean edge length
   double xmin = std::numeric_limits<double>::infinity(), xmax = -xmin, ymin = xmin, ymax = -xmin;
@@ -321,19 +342,9 @@ void write_field_svg(std::ostream& os, const TriangleMesh& tm, const FaceVectorM
   std::vector<Face_item> items;
   std::vector<double> face_depth(num_faces(tm), -std::numeric_limits<double>::infinity());
   for(face_descriptor f : faces(tm)) {
-    const halfedge_descriptor h = halfedge(f, tm);
-    double p0[3], p1[3], p2[3];
-    point(source(h, tm), p0);
-    point(target(h, tm), p1);
-    point(target(next(h, tm), tm), p2);
-    const double e1[3] = {p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]};
-    const double e2[3] = {p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]};
-    double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
-    const double nl = std::sqrt(dot(n, n));
-    if(!(nl > 0)) continue;                 // degenerate face
-    for(double& x : n) x /= nl;
+    double n[3], c[3];
+    if(!face_geometry(f, n, c)) continue;   // degenerate face
     if(dot(n, d) <= 0) continue;            // back face
-    const double c[3] = {(p0[0] + p1[0] + p2[0]) / 3, (p0[1] + p1[1] + p2[1]) / 3, (p0[2] + p1[2] + p2[2]) / 3};
     const double depth = dot(c, d);
     const double lambert = (std::max)(0.0, dot(n, light));
     items.push_back(Face_item{depth, f, 0.35 + 0.65 * lambert});
@@ -454,17 +465,14 @@ void write_field_svg(std::ostream& os, const TriangleMesh& tm, const FaceVectorM
     }
   };
   for(const Face_item& it : items) {
-    const halfedge_descriptor h = halfedge(it.f, tm);
-    double p[3][3];
-    point(source(h, tm), p[0]);
-    point(target(h, tm), p[1]);
-    point(target(next(h, tm), tm), p[2]);
+    double n[3], c[3];
+    face_geometry(it.f, n, c);
     out += "<polygon ";
     if(shaded) out += "class=\"s" + std::to_string(shade_level(it.shade)) + "\" ";
     out += "points=\"";
-    for(int k = 0; k < 3; ++k) {
+    for(std::size_t k = 0; k < ring.size(); ++k) {
       if(k) out += ' ';
-      num(sx(p[k])); out += ','; num(sy(p[k]));
+      num(sx(ring[k].data())); out += ','; num(sy(ring[k].data()));
     }
     out += "\"/>\n";
 
@@ -476,19 +484,12 @@ void write_field_svg(std::ostream& os, const TriangleMesh& tm, const FaceVectorM
     }
     double v[3];
     if(has_glyph[std::size_t(get(fim, it.f))] && glyph_half > 0 && internal::svg_field_vector(field, it.f, v)) {
-      const double e1[3] = {p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]};
-      const double e2[3] = {p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]};
-      double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
-      const double nl = std::sqrt(dot(n, n));
-      for(double& x : n) x /= nl;
       const double vn = dot(v, n);
       for(int k = 0; k < 3; ++k) v[k] -= vn * n[k];      // projection on the face plane
       const double vl = std::sqrt(dot(v, v));
       if(vl > 1e-12) {
         for(double& x : v) x /= vl;
         const double w[3] = {n[1] * v[2] - n[2] * v[1], n[2] * v[0] - n[0] * v[2], n[0] * v[1] - n[1] * v[0]};
-        const double c[3] = {(p[0][0] + p[1][0] + p[2][0]) / 3, (p[0][1] + p[1][1] + p[2][1]) / 3,
-                             (p[0][2] + p[1][2] + p[2][2]) / 3};
         const bool pairs = N % 2 == 0;
         const int count = pairs ? N / 2 : N;
         for(int k = 0; k < count; ++k) {
