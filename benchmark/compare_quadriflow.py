@@ -5,7 +5,12 @@ integer-grid map) against QuadriFlow as shipped in Debian's Blender (bpy.ops.obj
 on the same meshes at the same target face counts, both outputs measured by one evaluator.
 
 usage: compare_quadriflow.py SMDF MESH_DIR [--faces N ...] [--meshes a.off,b.obj] [--json FILE]
-                             [--timeout S] [--blender PATH]
+                             [--timeout S] [--blender PATH] [--svg-dir DIR] [--view A,E,UP]
+
+With --svg-dir, one picture per run, DIR/<mesh>_<faces>.svg: the two remeshes side by side, drawn
+by the same renderer from the same view (orthographic, azimuth A and elevation E in degrees
+around the axis UP, x, y or z; default 30,20,z): faces shaded and painted back to front, back
+faces culled, interior vertices of valence 3 marked red and of valence 5 or more blue.
 
 Exits 0 with a note when Blender is absent (Debian: apt-get install blender).
 
@@ -21,6 +26,7 @@ The evaluator runs inside Blender for its BVH (mathutils.bvhtree): closest point
 
 import argparse
 import json
+import math
 import os
 import shutil
 import subprocess
@@ -129,6 +135,110 @@ print("EVALUATION " + json.dumps(out))
 '''
 
 
+def read_polygons(path):
+    """Vertices and faces (0-based) of an OBJ or OFF file."""
+    vs, fs = [], []
+    if path.endswith(".off"):
+        words = []
+        for line in open(path):
+            words.extend(line.split("#")[0].split())
+        nv, nf = int(words[1]), int(words[2])
+        at = 4
+        for _ in range(nv):
+            vs.append(tuple(float(x) for x in words[at:at + 3]))
+            at += 3
+        for _ in range(nf):
+            k = int(words[at])
+            fs.append([int(x) for x in words[at + 1:at + 1 + k]])
+            at += 1 + k
+        return vs, fs
+    for line in open(path):
+        w = line.split()
+        if not w:
+            continue
+        if w[0] == "v":
+            vs.append(tuple(float(x) for x in w[1:4]))
+        elif w[0] == "f":
+            fs.append([int(x.split("/")[0]) - 1 for x in w[1:]])
+    return vs, fs
+
+
+def svg_side_by_side(panels, view, width=1000):
+    """One SVG of several meshes side by side, [(caption, vertices, faces)], one camera."""
+    az, el = math.radians(view[0]), math.radians(view[1])
+    up = "xyz".index(view[2])
+    U = [0.0, 0.0, 0.0]
+    U[up] = 1.0
+    F0 = [0.0, 0.0, 0.0]
+    F0[(up + 1) % 3] = 1.0
+    R0 = [0.0, 0.0, 0.0]
+    R0[(up + 2) % 3] = 1.0
+    d = [math.cos(el) * (math.cos(az) * F0[i] + math.sin(az) * R0[i]) + math.sin(el) * U[i] for i in range(3)]
+    dot = lambda a, b: a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+    cross = lambda a, b: [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+    uu = [U[i] - dot(U, d) * d[i] for i in range(3)]
+    n = math.sqrt(dot(uu, uu))
+    uu = [x / n for x in uu]
+    rr = cross(uu, d)
+    light = [d[i] + 0.5 * uu[i] for i in range(3)]
+    n = math.sqrt(dot(light, light))
+    light = [x / n for x in light]
+    pw, margin, caption_h = width / len(panels), 12.0, 22.0
+    body, height = [], 0.0
+    scales = []
+    for _, vs, _ in panels:
+        xs = [dot(v, rr) for v in vs]
+        ys = [dot(v, uu) for v in vs]
+        w, h = max(xs) - min(xs), max(ys) - min(ys)
+        scales.append((min(xs), max(ys), min((pw - 2 * margin) / max(w, 1e-300), 1e300), h))
+    scale = min(s[2] for s in scales)   # one scale for all panels: the same mesh at the same size
+    for k, (caption, vs, fs) in enumerate(panels):
+        x0, y1 = scales[k][0], scales[k][1]
+        sx = lambda p: k * pw + margin + (dot(p, rr) - x0) * scale
+        sy = lambda p: margin + (y1 - dot(p, uu)) * scale
+        height = max(height, scales[k][3] * scale + 2 * margin + caption_h)
+        valence, boundary = [0] * len(vs), set()
+        edges = {}
+        for f in fs:
+            for i in range(len(f)):
+                valence[f[i]] += 1
+                a, b = f[i], f[(i + 1) % len(f)]
+                edges[(a, b)] = edges.get((a, b), 0) + 1
+        for (a, b) in edges:
+            if (b, a) not in edges:
+                boundary.update((a, b))
+        items, nearest = [], {}
+        for f in fs:
+            nn = [0.0, 0.0, 0.0]
+            for i in range(len(f)):
+                c = cross(vs[f[i]], vs[f[(i + 1) % len(f)]])
+                nn = [nn[j] + c[j] for j in range(3)]
+            ln = math.sqrt(dot(nn, nn))
+            if ln == 0 or dot(nn, d) <= 0:
+                continue
+            nn = [x / ln for x in nn]
+            c = [sum(vs[v][j] for v in f) / len(f) for j in range(3)]
+            depth = dot(c, d)
+            items.append((depth, f, 0.35 + 0.65 * max(0.0, dot(nn, light))))
+            for v in f:
+                nearest[v] = max(nearest.get(v, -1e300), depth)
+        marks = sorted((nearest[v], v) for v in nearest if v not in boundary and valence[v] != 4)
+        items.sort(key=lambda t: t[0])
+        m = 0
+        for depth, f, shade in items:
+            g = int(208 * shade)
+            body.append('<polygon fill="#%02x%02x%02x" points="%s"/>' % (g, g, g, " ".join("%.1f,%.1f" % (sx(vs[v]), sy(vs[v])) for v in f)))
+            while m < len(marks) and marks[m][0] <= depth:
+                v = marks[m][1]
+                body.append('<circle cx="%.1f" cy="%.1f" r="3.5" fill="%s"/>' % (sx(vs[v]), sy(vs[v]), "#d62020" if valence[v] < 4 else "#2050d6"))
+                m += 1
+        body.append('<text x="%.1f" y="%.1f">%s</text>' % (k * pw + margin, scales[k][3] * scale + 2 * margin + 14, caption))
+    head = ('<?xml version="1.0" encoding="UTF-8"?>\n<svg xmlns="http://www.w3.org/2000/svg" width="%d" height="%d" viewBox="0 0 %d %d">\n'
+            '<style>polygon{stroke:#303030;stroke-width:0.4;stroke-linejoin:round}circle{stroke:#000;stroke-width:0.5}'
+            'text{font:13px sans-serif;fill:#404040}</style>\n' % (width, math.ceil(height), width, math.ceil(height)))
+    return head + "\n".join(body) + "\n</svg>\n"
+
+
 def off_to_obj(src, dst):
     """OFF (triangles) to OBJ, for Blender's importer; other formats are passed through."""
     words = []
@@ -177,7 +287,13 @@ def main():
     ap.add_argument("--json", default=None)
     ap.add_argument("--timeout", type=float, default=600)
     ap.add_argument("--blender", default=shutil.which("blender"))
+    ap.add_argument("--svg-dir", default=None)
+    ap.add_argument("--view", default="30,20,z")
     a = ap.parse_args()
+    view = a.view.split(",")
+    if len(view) != 3 or view[2] not in ("x", "y", "z"):
+        ap.error("--view A,E,UP: two angles in degrees and an axis x, y or z (got %r)" % a.view)
+    view = (float(view[0]), float(view[1]), view[2])
     if not a.blender:
         print("compare_quadriflow: Blender not found (Debian: apt-get install blender); nothing compared")
         return 0
@@ -222,6 +338,18 @@ def main():
                     for f, k in ((smdf_out, "smdf"), (qf_out, "quadriflow")):
                         if ev.get(f):
                             row[k].update(ev[f])
+                if a.svg_dir and outputs:
+                    panels = []
+                    for f, k, label in ((smdf_out, "smdf", "smdf"), (qf_out, "quadriflow", "QuadriFlow")):
+                        x = row[k]
+                        if f in outputs and "faces_by_size" in x:
+                            vs, fs = read_polygons(f)
+                            panels.append(("%s: %d quads, %d irregular vertices, %.2f s" % (label, x["faces_by_size"].get("4", 0),
+                                                                                      x["irregular_vertices"], x["seconds"]), vs, fs))
+                    if panels:
+                        os.makedirs(a.svg_dir, exist_ok=True)
+                        with open(os.path.join(a.svg_dir, "%s_%d.svg" % (os.path.splitext(name)[0], n)), "w") as fh:
+                            fh.write(svg_side_by_side(panels, view))
                 for f in outputs:
                     os.remove(f)
                 rows.append(row)

@@ -16,6 +16,7 @@
 #include <CGAL/Surface_mesh_direction_fields/delaunay_refinement.h>
 #include <CGAL/Surface_mesh_direction_fields/flat_development.h>
 #include <CGAL/Surface_mesh_direction_fields/grid_tessellation.h>
+#include <CGAL/Surface_mesh_direction_fields/tessellation_on_input.h>
 #include <CGAL/Surface_mesh_direction_fields/intrinsic_geometry.h>
 #include <CGAL/Surface_mesh_direction_fields/topology.h>
 #include <CGAL/Surface_mesh_direction_fields/polycube_metric.h>
@@ -167,6 +168,7 @@ Json run_remesh(const Args& args)
   Edge_length_property lengths;
   Mesh refined;           // the input's conforming Delaunay refinement, if the metric needs it
   Mesh* surface = &mesh;  // the triangulation that carries the metric
+  Intrinsic_surface intrinsic;   // where the metric needed intrinsic flips: surface is its copy
   double metric_s = 0, compensation_s = 0;
   Json metric = Json::object();
   if(args.has("lengths")) { lengths = read_edge_lengths(args.value("lengths"), mesh); metric["source"] = "lengths"; }
@@ -195,6 +197,15 @@ Json run_remesh(const Args& args)
       }
       cm = flow(refined, lengths);
       surface = &refined;
+      if(!cm.converged) {
+        // with intrinsic flips: tessellated on that triangulation, brought back through its
+        // common subdivision with the refinement
+        stage("flat cone metric with intrinsic flips");
+        const SMDF::Cone_metric_status cf = intrinsic_cone_metric(file, refined, cones, intrinsic, surface, lengths);
+        metric["intrinsic_edge_flips"] = cf.edge_flips;
+        metric["without_flips_message"] = cm.message;
+        cm = cf;
+      }
     }
     metric["converged"] = cm.converged;
     metric["iterations"] = cm.iterations;
@@ -203,10 +214,14 @@ Json run_remesh(const Args& args)
       out["metric"] = metric;
       out["success"] = false;
       throw Failed_result{out, file + ": the flat cone metric with these cones does not converge on the input triangulation" +
-                                   std::string(surface == &refined ? " nor on its Delaunay refinement: " : ": ") + cm.message, 3};
+                                   std::string(surface == &refined ? ", nor on its Delaunay refinement, nor with intrinsic flips: " : ": ") + cm.message, 3};
     }
   } else if(place) {
-    lengths = placed_cones_metric(file, mesh, refined, surface, requested_h, requested_faces, distortion_bound, max_cones, cone_spacing, out, metric, stage);
+    lengths = placed_cones_metric(file, mesh, refined, intrinsic, surface, requested_h, requested_faces, distortion_bound, max_cones, cone_spacing, out,
+                                  metric, stage);
+    if(args.has("uv-out") && intrinsic.of != nullptr)
+      throw Error(file + ": --uv-out: the flat cone metric needed intrinsic edge flips, so the integer-grid map lives on an intrinsic "
+                         "triangulation whose faces are not the input's [unsupported]");
     if(args.has("uv-out")) write_uv_obj(args.value("uv-out"), *surface);
   } else {
     lengths = mesh.add_property_map<edge_descriptor, double>("e:smdf_remesh_length", 0.).first;
@@ -454,6 +469,14 @@ Json run_remesh(const Args& args)
       }
     h = best;
     st = SMDF::tessellate_flat_metric(*surface, dev, grid, h, remesh);
+  }
+  if(intrinsic.of != nullptr && num_faces(remesh) > 0) {
+    // made on the intrinsic triangulation's copy: its vertices go to the surface through the
+    // common subdivision, and the faces inverted there are counted again (the tessellation saw
+    // the intrinsic triangles' chords)
+    SMDF::place_tessellation_on_input(intrinsic.triangulation, *intrinsic.of, st, remesh);
+    if(st.inverted_faces == 0) st.inverted_faces = faces_flipped_at_closest_point(mesh, remesh);
+    metric["intrinsic_triangulation"] = true;
   }
   const double tessellation_s = clock.lap();
   out["edge_length"] = h;

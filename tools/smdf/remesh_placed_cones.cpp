@@ -43,10 +43,38 @@ bool embedding_fits_quads(const Mesh& mesh)
   return true;
 }
 
+SMDF::Cone_metric_status intrinsic_cone_metric(const std::string& file, Mesh& base, const std::vector<std::pair<vertex_descriptor, double>>& curvatures,
+                                               Intrinsic_surface& intrinsic, Mesh*& surface, Edge_length_property& lengths)
+{
+  auto targets = base.add_property_map<vertex_descriptor, double>("v:smdf_remesh_target", 0.).first;
+  for(vertex_descriptor v : vertices(base)) targets[v] = 0;
+  for(const auto& c : curvatures) targets[c.first] = c.second;
+  Edge_length_property flipped = base.add_property_map<edge_descriptor, double>("e:smdf_remesh_flipped_length", 0.).first;
+  SMDF::Cone_metric_status cm = on_file(file, [&] { return SMDF::compute_cone_metric(base, targets, flipped); });
+  if(!cm.converged) return cm;
+  if(!cm.triangulation_changed) {
+    surface = &base;
+    lengths = flipped;
+    return cm;
+  }
+  if(!cm.intrinsic_triangulation.has_common_subdivision()) {
+    cm.converged = false;
+    cm.message = "the metric needed intrinsic flips and its correspondence with the surface failed: " + cm.correspondence_message;
+    return cm;
+  }
+  intrinsic.triangulation = std::move(cm.intrinsic_triangulation);
+  CGAL::clear(intrinsic.mesh);
+  lengths = intrinsic.mesh.add_property_map<edge_descriptor, double>("e:smdf_remesh_length", 0.).first;
+  SMDF::copy_intrinsic_triangulation(intrinsic.triangulation, base, intrinsic.mesh, lengths);
+  intrinsic.of = &base;
+  surface = &intrinsic.mesh;
+  return cm;
+}
+
 namespace {
 
 // One attempt with cones `cone_spacing` grid edges apart where the placement can.
-Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, Mesh& refined, Mesh*& surface, double requested_h,
+Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, Mesh& refined, Intrinsic_surface& intrinsic, Mesh*& surface, double requested_h,
                                           long requested_faces, double distortion_bound, long max_cones, double cone_spacing, Json& out,
                                           Json& metric, const std::function<void(const char*)>& stage, std::size_t& cones, bool& folded)
 {
@@ -104,6 +132,17 @@ Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, M
       cm = metric_on(refined);
       surface = &refined;
     }
+    if(!cm.converged) {
+      // with intrinsic flips: the map and the grid are made on that triangulation and brought
+      // back through its common subdivision with the surface
+      stage("flat cone metric with intrinsic flips");
+      std::vector<std::pair<vertex_descriptor, double>> curvatures;
+      for(const auto& c : ps.cones) curvatures.emplace_back(c.first, c.second);
+      const SMDF::Cone_metric_status cf = intrinsic_cone_metric(file, rs.success ? refined : mesh, curvatures, intrinsic, surface, lengths);
+      metric["intrinsic_edge_flips"] = cf.edge_flips;
+      metric["without_flips_message"] = cm.message;
+      cm = cf;
+    }
   }
   Mesh& on = *surface;
   metric["converged"] = cm.converged;
@@ -111,8 +150,8 @@ Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, M
   if(!cm.converged) {
     out["metric"] = metric;
     out["success"] = false;
-    throw Failed_result{out, file + ": the flat cone metric of the placed cones converges neither on the input's edges nor on its Delaunay "
-                                 "refinement (" + cm.message + "); the integer-grid map needs it without intrinsic flips", 3};
+    throw Failed_result{out, file + ": the flat cone metric of the placed cones converges neither on the input's edges, nor on its Delaunay "
+                                 "refinement, nor with intrinsic flips: " + cm.message, 3};
   }
   stage("cross field and integer-grid map");
   auto adjustment = on.add_property_map<edge_descriptor, double>("e:smdf_remesh_adjustment", 0.).first;
@@ -159,7 +198,7 @@ Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, M
 
 } // namespace
 
-Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Mesh& refined, Mesh*& surface, double requested_h,
+Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Mesh& refined, Intrinsic_surface& intrinsic, Mesh*& surface, double requested_h,
                                          long requested_faces, double distortion_bound, long max_cones, double cone_spacing, Json& out, Json& metric,
                                          const std::function<void(const char*)>& stage)
 {
@@ -180,7 +219,8 @@ Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Me
     try {
       surface = &mesh;
       CGAL::clear(refined);   // the refinement of a previous attempt, made for other cones
-      Edge_length_property l = placed_cones_attempt(file, mesh, refined, surface, requested_h, requested_faces, distortion_bound, max_cones,
+      intrinsic.of = nullptr;
+      Edge_length_property l = placed_cones_attempt(file, mesh, refined, intrinsic, surface, requested_h, requested_faces, distortion_bound, max_cones,
                                                     spacings[i], out, metric, stage, cones, folded);
       a["cones"] = cones;
       a["message"] = "";

@@ -10,10 +10,14 @@
 
 #include "common.h"
 
+#include <CGAL/Surface_mesh_direction_fields/Intrinsic_triangulation.h>
+#include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/delaunay_refinement.h>
 
 #include <functional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace smdf_cli {
 
@@ -26,15 +30,34 @@ bool embedding_fits_quads(const Mesh& mesh);
 // a metric (`message`: why not).
 Json refinement_json(const std::string& message, const SMDF::Delaunay_refinement_status& rs);
 
+// A flat cone metric that needed intrinsic edge flips: the triangulation carrying it (with its
+// common subdivision with `of`), a mesh copy of it (copy_intrinsic_triangulation()) that the map
+// and the tessellation are made on, and the triangulation of the surface it was computed on (the
+// input or its refinement), onto which place_tessellation_on_input() brings the remesh back.
+struct Intrinsic_surface
+{
+  SMDF::Intrinsic_triangulation triangulation;
+  Mesh mesh;
+  Mesh* of = nullptr;   // null: no intrinsic triangulation is used
+};
+
+// The flat cone metric with curvature `curvatures` (vertex, K) on `base` with intrinsic flips.
+// Converged with flips: `intrinsic` receives the triangulation and its copy, and `surface` and
+// `lengths` point to the copy and its lengths; converged without: to `base` and its lengths.
+// Returns the status (not converged: nothing set).
+SMDF::Cone_metric_status intrinsic_cone_metric(const std::string& file, Mesh& base, const std::vector<std::pair<vertex_descriptor, double>>& curvatures,
+                                               Intrinsic_surface& intrinsic, Mesh*& surface, Edge_length_property& lengths);
+
 // Places the cones (place_remeshing_cones()), computes their flat cone metric without flips on
 // `mesh` or, where its edges cannot carry it, on its conforming Delaunay refinement `refined`
-// (then `surface` points to it), the trivial connection's cross field with those singularities,
+// (then `surface` points to it) or, where neither can, with intrinsic flips (then `surface`
+// points to `intrinsic.mesh`), the trivial connection's cross field with those singularities,
 // and the integer-grid map for about `requested_faces` quads (or grid edges of `requested_h`
 // under the metric). Returns the map's edge lengths (grid units) on `*surface`; adds
 // placed_cones, placement and integer_grid_map to `out` and the metric's fields to `metric`.
 // Cones are kept `cone_spacing` grid edges apart where the placement can (measured on the input).
 // Throws Failed_result (exit 3) when a step fails, Error for an open mesh.
-Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Mesh& refined, Mesh*& surface, double requested_h,
+Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Mesh& refined, Intrinsic_surface& intrinsic, Mesh*& surface, double requested_h,
                                          long requested_faces, double distortion_bound, long max_cones, double cone_spacing, Json& out, Json& metric,
                                          const std::function<void(const char*)>& stage);
 

@@ -12,6 +12,7 @@
 #include <CGAL/Surface_mesh_direction_fields/errors.h>
 #include <CGAL/Surface_mesh_direction_fields/flat_development.h>
 #include <CGAL/Surface_mesh_direction_fields/holonomy_group.h>
+#include <CGAL/Surface_mesh_direction_fields/Intrinsic_triangulation.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/inversion.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/two_threads.h>
 
@@ -56,6 +57,12 @@ struct Grid_tessellation_status
   std::vector<std::size_t> valences;
   /// output vertices of irregular valence, each with the input cone it lies on (-1 if none)
   std::vector<std::pair<std::size_t, long>> irregular_vertices;
+  /// per output vertex (in the order of `vertices(out)`), where it lies on `tm`: the face (index
+  /// in `faces(tm)` order) and the barycentric coordinates of its corners `source(halfedge(f))`,
+  /// `target(halfedge(f))`, `target(next(halfedge(f)))`. When `tm` is a copy of an
+  /// `Intrinsic_triangulation`, place_tessellation_on_input() moves the output onto the input
+  /// surface with them.
+  std::vector<Surface_point> vertex_locations;
   /// output faces whose area vector points against the input's normals under their corners
   /// (inverted in space: the metric stretches too much for the edge length), counted last, once
   /// every other check has passed; success needs none (untangle_remesh() can unfold them)
@@ -682,11 +689,20 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
   CGAL::clear(out);
   std::vector<out_vertex> ov(points.size());
   auto opm = get(CGAL::vertex_point, out);
+  st.vertex_locations.assign(points.size(), Surface_point());
   for(std::size_t i = 0; i < points.size(); ++i) {
     const Where& w = points[i];
     std::array<double, 3> x{{0, 0, 0}};
-    if(w.kind == 2) x = point3(w.id);
-    else {
+    Surface_point& location = st.vertex_locations[i];
+    if(w.kind == 2) {
+      x = point3(w.id);
+      int g = m.vertex_out[std::size_t(w.id)];
+      if(m.face[std::size_t(g)] < 0) g = m.ccw_out(g);   // a boundary vertex's border halfedge: the next one has a face
+      location.face = m.face[std::size_t(g)];
+      int k = 0;
+      for(int y = m.face_halfedge[std::size_t(location.face)]; y != g; y = m.next[std::size_t(y)]) ++k;
+      location.barycentric[std::size_t(k)] = 1;
+    } else {
       const int f = w.kind == 0 ? w.id : m.face[std::size_t(2 * w.id)] >= 0 ? m.face[std::size_t(2 * w.id)] : m.face[std::size_t(2 * w.id + 1)];
       const Point_2 q(w.x, w.y);
       const std::array<Point_2, 3>& c = uv[std::size_t(f)];
@@ -696,6 +712,9 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
         const Point_2 &a = c[std::size_t((k + 1) % 3)], &b = c[std::size_t((k + 2) % 3)];
         bary[k] = ((b.x() - a.x()) * (q.y() - a.y()) - (q.x() - a.x()) * (b.y() - a.y())) / area;
       }
+      location.face = f;
+      const double total = (std::max)(0., bary[0]) + (std::max)(0., bary[1]) + (std::max)(0., bary[2]);
+      for(int k = 0; k < 3; ++k) location.barycentric[std::size_t(k)] = (std::max)(0., bary[k]) / total;
       int g = m.face_halfedge[std::size_t(f)];
       for(int k = 0; k < 3; ++k, g = m.next[std::size_t(g)]) {
         const std::array<double, 3> p = point3(m.source(g));

@@ -375,7 +375,7 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   Cholmod_cholesky chol;  // of Hbb
   Eigen::SparseMatrix<double> Hbs;
   std::vector<double> stiffness(nf, 1.);
-  auto assemble = [&]() -> bool {
+  auto assemble = [&](bool schur) -> bool {   // schur: also S and rs (not needed once every small unknown is fixed)
   tbb.clear(); tbs.clear();
   Hss = Eigen::MatrixXd::Zero(ns, ns);
   gb = Eigen::VectorXd::Zero(nb); gs = Eigen::VectorXd::Zero(ns);
@@ -414,7 +414,7 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
     if(!chol.factor(Hbb, msg)) { st.message = "the map's system could not be factored: " + msg; return false; }
     Hbs.setFromTriplets(tbs.begin(), tbs.end());
     xg = chol.solve(gb);
-    for(int k = 0; k < ns; ++k) {
+    for(int k = 0; k < ns && schur; ++k) {
       const Eigen::VectorXd col = Eigen::VectorXd(Hbs.col(k));
       if(col.squaredNorm() > 0) S.col(k).noalias() -= Hbs.transpose() * chol.solve(col);   // sparse times dense
     }
@@ -423,7 +423,7 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   rs.noalias() -= Hbs.transpose() * xg;
   return true;
   };
-  if(!assemble()) return st;
+  if(!assemble(true)) return st;
   auto big_of = [&](const Eigen::VectorXd& small) {   // the vertex unknowns given the small ones
     return nb > 0 ? Eigen::VectorXd(chol.solve(gb - Hbs * small)) : Eigen::VectorXd();
   };
@@ -492,7 +492,7 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   };
   // local stiffening: the faces around a folded one weigh three times more, re-solved, up to
   // eight times (each a new factorisation), or until two rounds in a row fold as many triangles
-  auto unfold = [&]() -> bool {
+  auto unfold = [&](bool fixed) -> bool {   // fixed: y is fixed by the conditions, only the vertices move
     std::size_t best = std::size_t(-1);
     int stalled = 0;
     for(int round = 0; round < 8; ++round) {
@@ -514,13 +514,13 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
       }
       for(std::size_t f = 0; f < nf; ++f) if(stiffen[f]) stiffness[f] *= 3;
       ++st.stiffening_rounds;
-      if(!assemble() || !solve_small(y)) return false;
+      if(!assemble(!fixed) || (!fixed && !solve_small(y))) return false;
     }
     z = big_of(y);
     return true;
   };
   if(!solve_small(y)) { st.message = "the seams' conditions are inconsistent"; return st; }
-  if(!unfold()) { if(st.message.empty()) st.message = "the stiffened system could not be solved"; return st; }
+  if(!unfold(false)) { if(st.message.empty()) st.message = "the stiffened system could not be solved"; return st; }
   const Eigen::VectorXd y_seamless = y;
   // 7. rounding: singularity positions, then translations, the nearest to an integer first.
   // Rounding one value can imply others through the closings with a non-unit coefficient (a seam
@@ -607,9 +607,17 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
       ++st.rounded;
     }
   }
-  // every small unknown is now fixed by the conditions: solved once more, free of the updates' round-off
-  if(!solve_small(y)) { st.message = "the seams' conditions are inconsistent"; return st; }
-  if(!unfold()) { if(st.message.empty()) st.message = "the stiffened system could not be solved"; return st; }
+  // every small unknown (a translation or a singularity's position, in grid units) is now an
+  // integer fixed by the conditions: snapped, free of the updates' round-off (a dense solve of the
+  // conditions would cost O(ns^3) more)
+  for(int k = 0; k < ns; ++k) {
+    if(std::abs(y[k] - std::round(y[k])) > 1e-6) {
+      st.message = "a rounded value drifted from its integer (" + std::to_string(y[k]) + ")";
+      return st;
+    }
+    y[k] = std::round(y[k]);
+  }
+  if(!unfold(true)) { if(st.message.empty()) st.message = "the stiffened system could not be solved"; return st; }
   // 8. the vertex unknowns, the corners' images and the read-back
   auto folds = [&]() {
     std::size_t n = 0;
