@@ -1904,6 +1904,26 @@ def test_shared_remesh_refinement(smdf, c, meshes, tmp):
             % (ref.get("faces"), m.get("max_curvature_error")))
     c.check(len(lines) == 1 and "not symmetries" in lines[0] and doc.get("failing_cut_edge_count", 0) > 0,
             "remesh cheburashka --cones: exit 3, the failing cut edges named in one line (%r)" % lines[-1:])
+    # automatic cones on a genus-133 mesh: the placement needs over 1,056 cones (4|chi|), more
+    # than --max-cones: refused at once (it ran over 4 minutes), with the numbers to change
+    cheese = os.path.join(meshes, "cheese_cgal.off")
+    rc, o, err = smdf.run(["remesh", cheese, "--faces", "4000", "--out", os.path.join(tmp, "ch.off")])
+    lines = err.decode().strip().splitlines()
+    c.check(rc == 3 and len(lines) == 1 and "--max-cones 500" in lines[0] and "4|chi| = 1056" in lines[0],
+            "remesh cheese (genus 133): more cones than --max-cones, one line with the minimum (rc=%s, %r)" % (rc, lines[-1:]))
+    # automatic cones whose metric needs intrinsic flips (the wing's triangulation and its
+    # refinement cannot carry it): the map and grid on the intrinsic triangulation, every vertex
+    # placed on the input through the common subdivision
+    wing = os.path.join(meshes, "bad-stl-wing_openscad.off")
+    rc, o, err = smdf.run(["remesh", wing, "--faces", "4000", "--out", os.path.join(tmp, "w.off")])
+    doc = json.loads(o.decode()) if o else {}
+    m = doc.get("metric", {})
+    c.check(m.get("intrinsic_triangulation") is True and m.get("intrinsic_edge_flips", 0) > 0 and m.get("converged") is True
+            and doc.get("faces_by_size", {}).get("4", 0) > 1000 and len(doc.get("faces_by_size", {})) == 1
+            and doc.get("distance_over_edge_length", {}).get("vertices_to_input", 1) < 1e-9
+            and (rc == 0) == (doc.get("flipped_faces") == 0 and doc.get("success") is True),
+            "remesh bad-stl-wing: metric with %r intrinsic flips, quads placed on the input (rc=%s, flipped %r)"
+            % (m.get("intrinsic_edge_flips"), rc, doc.get("flipped_faces")))
     # remesh bunny --polycube box: 16 quads of the grid come out inverted (one box squeezes the
     # ears); by default their vertices are moved along the surface until none is (exit 0, the
     # eight cones of valence 3 the only irregular vertices); --no-untangle keeps the grid (exit 3)

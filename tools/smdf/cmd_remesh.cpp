@@ -203,6 +203,7 @@ Json run_remesh(const Args& args)
         stage("flat cone metric with intrinsic flips");
         const SMDF::Cone_metric_status cf = intrinsic_cone_metric(file, refined, cones, intrinsic, surface, lengths);
         metric["intrinsic_edge_flips"] = cf.edge_flips;
+        metric["intrinsic_triangulation"] = intrinsic.of != nullptr;
         metric["without_flips_message"] = cm.message;
         cm = cf;
       }
@@ -476,7 +477,6 @@ Json run_remesh(const Args& args)
     // the intrinsic triangles' chords)
     SMDF::place_tessellation_on_input(intrinsic.triangulation, *intrinsic.of, st, remesh);
     if(st.inverted_faces == 0) st.inverted_faces = faces_flipped_at_closest_point(mesh, remesh);
-    metric["intrinsic_triangulation"] = true;
   }
   const double tessellation_s = clock.lap();
   out["edge_length"] = h;
@@ -638,7 +638,11 @@ Command remesh_command()
           "--polycube unless every curvature of the input is a multiple of pi/2, as on a cube, whose\n"
           "own metric is then tessellated; closed meshes of any genus): the cones are placed as by\n"
           "cone-metric --place-cones, their flat cone metric is computed on the input's edges or,\n"
-          "where they cannot carry it, on the conforming Delaunay refinement (as with --cones), the trivial connection's cross field with those singularities\n"
+          "where they cannot carry it, on the conforming Delaunay refinement (as with --cones) or,\n"
+          "where neither can, with intrinsic flips (metric: intrinsic_edge_flips, and\n"
+          "intrinsic_triangulation: true when the remesh was made on that triangulation and placed on\n"
+          "the input through its common subdivision; --uv-out is then refused), the\n"
+          "trivial connection's cross field with those singularities\n"
           "(smoothest turning around the handles) is integrated into an integer-grid map (seams:\n"
           "rotations by multiples of pi/2 and integer translations; singularities on grid points;\n"
           "exit 3 if a triangle folds), whose edge lengths are the metric tessellated with edge length\n"
@@ -647,7 +651,8 @@ Command remesh_command()
           "[{cone_spacing, cones, message}] (a map that folds is tried again with the cones 2 grid\n"
           "edges apart, unless --cone-spacing is given) and integer_grid_map:\n"
           "{success, message, singularities, seams, rounded_values, folded_triangles,\n"
-          "stiffening_rounds, seamless_energy, integer_energy, min_area_ratio}.\n",
+          "stiffening_rounds, seamless_energy, integer_energy, min_area_ratio}. Exit 3 at once when\n"
+          "the placement takes --max-cones cones or more (the map's time grows as their cube).\n",
           run_remesh};
 }
 

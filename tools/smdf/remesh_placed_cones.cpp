@@ -106,6 +106,16 @@ Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, M
   pl["scale_spread"] = ps.scale_spread;
   out["placement"] = std::move(pl);
   metric["source"] = "placed cones";
+  if(long(ps.cones.size()) >= max_cones) {
+    // the map's dense system has two unknowns per cone and per seam and costs their cube: a
+    // genus-133 mesh's 1,208 cones ran over 4 minutes; stop here and say what to change
+    const long chi = long(num_vertices(mesh)) - long(num_edges(mesh)) + long(num_faces(mesh));
+    out["metric"] = metric;
+    out["success"] = false;
+    throw Failed_result{out, file + ": the placement took " + std::to_string(ps.cones.size()) + " cones, the maximum (--max-cones " +
+                                 std::to_string(max_cones) + ")" + (chi < 0 ? "; this genus needs at least 4|chi| = " + std::to_string(-4 * chi) : std::string()) +
+                                 "; raise --max-cones or --distortion-bound (the integer-grid map's time grows as the cube of its cones and seams)", 3};
+  }
   if(!ps.metric.converged) {
     out["metric"] = metric;
     out["success"] = false;
@@ -140,6 +150,7 @@ Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, M
       for(const auto& c : ps.cones) curvatures.emplace_back(c.first, c.second);
       const SMDF::Cone_metric_status cf = intrinsic_cone_metric(file, rs.success ? refined : mesh, curvatures, intrinsic, surface, lengths);
       metric["intrinsic_edge_flips"] = cf.edge_flips;
+      metric["intrinsic_triangulation"] = intrinsic.of != nullptr;
       metric["without_flips_message"] = cm.message;
       cm = cf;
     }

@@ -21,3 +21,14 @@ run remesh "$spot" --polycube octahedron --faces 1200 --out /tmp/smdf_spot_trian
 run remesh "$spot" --polycube obelisk --grid mixed --faces 1500 --out /tmp/smdf_spot_obelisk.obj --svg "$here/spot_remesh_obelisk.svg" "${view[@]}"
 # a woven Celtic knot along the box remesh's medial graph (Lai et al. Fig. 13)
 run remesh "$spot" --polycube box --faces 700 --out /tmp/smdf_spot_knot.obj --knot-svg "$here/spot_celtic_knot.svg" "${view[@]}"
+# automatic quad remeshes (placed cones, integer-grid map) of genus 0, 1 and 3, each beside
+# QuadriFlow's at the same target, both drawn by compare_quadriflow.py's one renderer (needs the
+# shared meshes beside the project and Debian's blender; skipped without them)
+shared=$root/../shared/data/meshes
+if [ -d "$shared" ]; then
+  for spec in spot_c3d.obj:60,20,y rocker-arm_c3d.obj:30,25,z genus3_vhacd.off:30,35,z; do
+    mesh=${spec%%:*}
+    python3 "$root/benchmark/compare_quadriflow.py" "$smdf" "$shared" --faces 4000 --meshes "$mesh" --svg-dir "$here" --view "${spec#*:}" > /dev/null ||
+      echo "  (compare_quadriflow.py failed on $mesh)"
+  done
+fi
