@@ -201,11 +201,7 @@ Json run_remesh(const Args& args)
         // with intrinsic flips: tessellated on that triangulation, brought back through its
         // common subdivision with the refinement
         stage("flat cone metric with intrinsic flips");
-        const SMDF::Cone_metric_status cf = intrinsic_cone_metric(file, refined, cones, intrinsic, surface, lengths);
-        metric["intrinsic_edge_flips"] = cf.edge_flips;
-        metric["intrinsic_triangulation"] = intrinsic.of != nullptr;
-        metric["without_flips_message"] = cm.message;
-        cm = cf;
+        cm = intrinsic_cone_metric(file, refined, cones, cm.message, intrinsic, surface, lengths, metric);
       }
     }
     metric["converged"] = cm.converged;

@@ -44,13 +44,17 @@ bool embedding_fits_quads(const Mesh& mesh)
 }
 
 SMDF::Cone_metric_status intrinsic_cone_metric(const std::string& file, Mesh& base, const std::vector<std::pair<vertex_descriptor, double>>& curvatures,
-                                               Intrinsic_surface& intrinsic, Mesh*& surface, Edge_length_property& lengths)
+                                               const std::string& without_flips, Intrinsic_surface& intrinsic, Mesh*& surface,
+                                               Edge_length_property& lengths, Json& metric)
 {
+  metric["without_flips_message"] = without_flips;
+  metric["intrinsic_triangulation"] = false;
   auto targets = base.add_property_map<vertex_descriptor, double>("v:smdf_remesh_target", 0.).first;
   for(vertex_descriptor v : vertices(base)) targets[v] = 0;
   for(const auto& c : curvatures) targets[c.first] = c.second;
   Edge_length_property flipped = base.add_property_map<edge_descriptor, double>("e:smdf_remesh_flipped_length", 0.).first;
   SMDF::Cone_metric_status cm = on_file(file, [&] { return SMDF::compute_cone_metric(base, targets, flipped); });
+  metric["intrinsic_edge_flips"] = cm.edge_flips;
   if(!cm.converged) return cm;
   if(!cm.triangulation_changed) {
     surface = &base;
@@ -68,6 +72,7 @@ SMDF::Cone_metric_status intrinsic_cone_metric(const std::string& file, Mesh& ba
   SMDF::copy_intrinsic_triangulation(intrinsic.triangulation, base, intrinsic.mesh, lengths);
   intrinsic.of = &base;
   surface = &intrinsic.mesh;
+  metric["intrinsic_triangulation"] = true;
   return cm;
 }
 
@@ -148,11 +153,7 @@ Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, M
       stage("flat cone metric with intrinsic flips");
       std::vector<std::pair<vertex_descriptor, double>> curvatures;
       for(const auto& c : ps.cones) curvatures.emplace_back(c.first, c.second);
-      const SMDF::Cone_metric_status cf = intrinsic_cone_metric(file, rs.success ? refined : mesh, curvatures, intrinsic, surface, lengths);
-      metric["intrinsic_edge_flips"] = cf.edge_flips;
-      metric["intrinsic_triangulation"] = intrinsic.of != nullptr;
-      metric["without_flips_message"] = cm.message;
-      cm = cf;
+      cm = intrinsic_cone_metric(file, rs.success ? refined : mesh, curvatures, cm.message, intrinsic, surface, lengths, metric);
     }
   }
   Mesh& on = *surface;

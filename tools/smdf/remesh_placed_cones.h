@@ -44,9 +44,12 @@ struct Intrinsic_surface
 // The flat cone metric with curvature `curvatures` (vertex, K) on `base` with intrinsic flips.
 // Converged with flips: `intrinsic` receives the triangulation and its copy, and `surface` and
 // `lengths` point to the copy and its lengths; converged without: to `base` and its lengths.
-// Returns the status (not converged: nothing set).
+// Returns the status (not converged: nothing set). Records in `metric` intrinsic_edge_flips,
+// intrinsic_triangulation (whether the copy carries it) and without_flips_message (why the
+// metric without flips failed: `without_flips`).
 SMDF::Cone_metric_status intrinsic_cone_metric(const std::string& file, Mesh& base, const std::vector<std::pair<vertex_descriptor, double>>& curvatures,
-                                               Intrinsic_surface& intrinsic, Mesh*& surface, Edge_length_property& lengths);
+                                               const std::string& without_flips, Intrinsic_surface& intrinsic, Mesh*& surface,
+                                               Edge_length_property& lengths, Json& metric);
 
 // Places the cones (place_remeshing_cones()), computes their flat cone metric without flips on
 // `mesh` or, where its edges cannot carry it, on its conforming Delaunay refinement `refined`
