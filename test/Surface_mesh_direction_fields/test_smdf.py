@@ -968,8 +968,17 @@ def test_rosy(smdf, c, torus, tmp):
     c.check(p2 is not None and p2.get("success") is True and p2.get("found") == [{"vertex": 100, "index": 1}, {"vertex": 2000, "index": 1}],
             "rosy: two cones of index 1 (line field), read back")
     smdf.error(["rosy", spot, "--cones", "0:2pi,1:0"], "rosy: cone of index 1 breaking Gauss-Bonnet", 1, "Gauss-Bonnet")
-    smdf.error(["rosy", spot, "--cones", "100:4pi", "--N", "1", "--method", "trivial-connection"], "rosy: index 2 with another method", 2,
-               "parallel field of the punched surface")
+    # the other methods: the trivial connection of the punched metric (on a sphere, the parallel
+    # field itself), with its hatching
+    p4 = smdf.json(["rosy", spot, "--cones", "100:4pi", "--N", "1", "--method", "trivial-connection",
+                    "--hatching-svg", os.path.join(tmp, "punched_hatching.svg")], "rosy spot, index 2, trivial-connection")
+    c.check(p4 is not None and p4.get("success") is True and p4.get("found") == [{"vertex": 100, "index": 2}]
+            and p4.get("method") == "trivial-connection (punched holes)" and p4["trivial_connection"]["max_rotation"] < 1e-9
+            and p4.get("hatching", {}).get("strokes", 0) > 0,
+            "rosy --cones 100:4pi --method trivial-connection: index 2 read back, no rotation on a sphere, hatching (%r)"
+            % (p4 and p4.get("trivial_connection")))
+    smdf.error(["rosy", spot, "--cones", "100:2pi,2000:2pi,2900:2pi", "--N", "2"], "rosy: index 1 cones breaking Gauss-Bonnet", 1,
+               "the cones' indices sum to 3 but the Euler characteristic of the mesh is 2")
     smdf.error(["rosy", spot, "--cones", "100:4pi", "--N", "1", "--edit", ff], "rosy: index 2 with --edit", 2, "punched holes")
     vf = os.path.join(tmp, "punched_vertex.txt")
     p3 = smdf.json(["rosy", spot, "--cones", "100:4pi", "--N", "1", "--field-out", vf], "rosy spot, index 2, --field-out")
@@ -1119,6 +1128,35 @@ def test_shared_rosy(smdf, c, meshes, tmp):
         c.check(r is not None and r.get("success") is True and len(r.get("boundary_turning_over_pi", [])) == 2
                 and abs(sum(r["boundary_turning_over_pi"])) < 1e-9, "rosy annulus: two boundary loops turning by +-2 pi (%r)"
                 % (r and r.get("boundary_turning_over_pi")))
+    # cones of index >= 1 on surfaces with handles (punched holes; the handles' holonomy
+    # compensated): random holes and cones, every method that compensates, read back on the input
+    rng = random.Random(4)
+    for name, genus, N in (("torus_ddg.obj", 1, 4), ("eight_directional.off", 2, 1), ("knot1_cgal.off", 1, 3), ("genus3_vhacd.off", 3, 2)):
+        path = os.path.join(meshes, name)
+        if not os.path.isfile(path) or too_large(meshes, name):
+            continue
+        verts, faces = read_off(path) if name.endswith(".off") else read_obj(path)
+        near = {}
+        for f in faces:
+            for v in f:
+                near.setdefault(v, set()).update(f)
+        for method in ("rotation-compensation", "trivial-connection"):
+            cones, units = {}, (2 - 2 * genus) * N
+            big = rng.choice((1, 2)) * N   # one cone of index 1 or 2, the rest of -1/N
+            while len(cones) < 1 + big - units:
+                v = rng.randrange(len(verts))
+                if v not in cones and not any(w in cones for w in near[v]):
+                    cones[v] = big if not cones else -1
+            spec = ",".join("%d:%d/%d" % (v, k, N) for v, k in sorted(cones.items()))
+            ff, mm = os.path.join(tmp, "handles_face.txt"), os.path.join(tmp, "handles_matching.txt")
+            r = smdf.json(["rosy", path, "--cone-indices", spec, "--N", str(N), "--method", method, "--face-field-out", ff,
+                           "--matching-out", mm], "rosy %s (genus %d), index %d, %s" % (name, genus, big // N, method))
+            want = [{"vertex": v, "index": k / N} for v, k in sorted(cones.items())]
+            back = r and smdf.json(["singularities", path, "--field", ff, "--N", str(N), "--matching", mm], "singularities of %s" % name)
+            c.check(r is not None and r.get("success") is True and r.get("found") == want and back is not None
+                    and back.get("singularities") == want and r["method"] == method + " (punched holes)",
+                    "rosy %s (genus %d), N = %d, a cone of index %d and %d of -1/%d, %s: read back on the input (%r)"
+                    % (name, genus, N, big // N, len(cones) - 1, N, method, r and r.get("trivial_connection")))
     eight = os.path.join(meshes, "eight_directional.off")
     if os.path.isfile(eight):
         for method in ("rotation-compensation", "trivial-connection"):

@@ -70,6 +70,26 @@ bool multiple_of(double K, int N) { const double k = K / (2 * CGAL_PI) * N; retu
 
 } // namespace
 
+Json write_hatching_svg(const Args& args, const std::string& file, const Mesh& mesh, const Face_vector_property& vectors, int N,
+                        const SMDF::Svg_options& svg)
+{
+  SMDF::Svg_options view = svg;
+  if(!args.has("view")) view.up_axis = default_up_axis(mesh);
+  view.edge_stroke_width = 0;
+  view.face_color = "#f4f4f4";
+  view.glyph_stroke_width = 0.7;
+  const auto lines = on_file(file, [&] { return SMDF::trace_streamlines(mesh, vectors, N); });
+  std::ostringstream os;
+  SMDF::write_streamlines_svg(os, mesh, lines, view);
+  write_lines_file(args.value("hatching-svg"), os.str());
+  double total = 0;
+  for(const auto& l : lines) total += l.length;
+  Json hj = Json::object();
+  hj["strokes"] = lines.size();
+  hj["total_length"] = total;
+  return hj;
+}
+
 Json run_rosy(const Args& args)
 {
   const std::string& file = args.positional[0];
@@ -133,15 +153,13 @@ Json run_rosy(const Args& args)
       throw Error(file + ": " + e.what());   // the same "<file>: " prefix as every other input error
     }
   }
-  // cones of index 1 or more: punched holes (Lai et al. 4.1.1), with the parallel field
+  // cones of index 1 or more: punched holes (Lai et al. 4.1.1), see rosy_punched.cpp
   bool punch = false;
   for(const auto& c : cones) punch = punch || (!is_border(c.first, mesh) && !(c.second < 2 * CGAL_PI));
   if(punch) {
-    if(opt.method != AUTOMATIC && opt.method != PARALLEL)
-      throw Usage_error(std::string("cones of index 1 or more take the parallel field of the punched surface, not --method ") + method_name(opt.method));
-    for(const char* o : {"edit", "length", "hatching-svg", "turning", "holonomy"})
+    for(const char* o : {"edit", "length", "turning", "holonomy"})
       if(args.has(o)) throw Usage_error(std::string("--") + o + " is not available with cones of index 1 or more (punched holes)");
-    return run_rosy_punched(args, file, mesh, N, cones, targets, opt.boundary, svg);
+    return run_rosy_punched(args, file, mesh, N, cones, targets, opt.method, opt.boundary, svg);
   }
   const Edge_length_property lengths = mesh.add_property_map<edge_descriptor, double>("e:smdf_rosy_length", 0.).first;
   const Face_angle_property input_angles = mesh.add_property_map<face_descriptor, double>("f:smdf_rosy_angle", 0.).first;
@@ -477,23 +495,7 @@ Json run_rosy(const Args& args)
       write_vectors(args.value("face-field-out"), v);
     }
     if(args.has("svg")) write_field_svg_file(args, mesh, vectors, N, found, svg);
-    if(args.has("hatching-svg")) {
-      SMDF::Svg_options view = svg;
-      if(!args.has("view")) view.up_axis = default_up_axis(mesh);
-      view.edge_stroke_width = 0;
-      view.face_color = "#f4f4f4";
-      view.glyph_stroke_width = 0.7;
-      const auto lines = on_file(file, [&] { return SMDF::trace_streamlines(mesh, vectors, N); });
-      std::ostringstream os;
-      SMDF::write_streamlines_svg(os, mesh, lines, view);
-      write_lines_file(args.value("hatching-svg"), os.str());
-      double total = 0;
-      for(const auto& l : lines) total += l.length;
-      Json hj = Json::object();
-      hj["strokes"] = lines.size();
-      hj["total_length"] = total;
-      out["hatching"] = std::move(hj);
-    }
+    if(args.has("hatching-svg")) out["hatching"] = write_hatching_svg(args, file, mesh, vectors, N, svg);
   }
   if(args.has("matching-out")) write_matching(args.value("matching-out"), mesh, input_matching);
   return out;
@@ -535,6 +537,9 @@ Command rosy_command()
           "  parallel               parallel transport by the metric; needs a compatible group (open\n"
           "                         meshes: the default)\n"
           "  trivial-connection     Crane et al. on the same metric, with index K / 2 pi at the cones\n"
+          "Cones of index 1 or more (K >= 2 pi) punch a hole (4.1.1): the field of the holed\n"
+          "surface's flat metric (parallel, or with the other methods its trivial connection with\n"
+          "the handles' holonomy compensated), the hole filled with the cone's index.\n"
           "Open meshes: --boundary free gives the boundary vertices not named in --cones the input's\n"
           "turning angle, changed so that each boundary loop turns by a multiple of 2 pi / N and\n"
           "Gauss-Bonnet holds; --boundary parallel|orthogonal rounds each boundary vertex's turning\n"

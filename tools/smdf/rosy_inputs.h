@@ -90,13 +90,20 @@ std::map<vertex_descriptor, double> prescribed_indices(const Mesh& mesh, const s
 Json metric_json(const SMDF::Cone_metric_status& cm, const char* on);
 
 // smdf rosy with interior cones of index 1 or more (rosy_punched.cpp): holes punched there
-// (Lai et al. 4.1.1), the parallel field of the holed surface's flat metric carried to the input,
-// each hole filled by unfolding its ring's faces inward, the spokes' matching chosen so that the
-// ring vertices keep their indices; read back on the input. `targets` are those of the input
-// (cones and boundary turnings); returns the JSON, throws Failed_result on a failed read-back.
+// (Lai et al. 4.1.1), the field of the holed surface's flat metric (parallel with --method
+// parallel and along the boundary, else its trivial connection: the handles' holonomy
+// compensated) carried to the input, each hole filled by unfolding its ring's faces inward, the
+// spokes' matching chosen so that the ring vertices keep their indices; read back on the input.
+// `targets` are those of the input (cones and boundary turnings); returns the JSON, throws
+// Failed_result on a failed read-back.
 Json run_rosy_punched(const Args& args, const std::string& file, Mesh& mesh, int N,
                       const std::vector<std::pair<vertex_descriptor, double>>& cones, Vertex_double_property targets,
-                      Boundary_mode mode, const SMDF::Svg_options& svg);
+                      Rosy_method method, Boundary_mode mode, const SMDF::Svg_options& svg);
+
+// --hatching-svg: streamlines of the face field `vectors` traced on the mesh, drawn in pen and
+// ink; returns {strokes, total_length}.
+Json write_hatching_svg(const Args& args, const std::string& file, const Mesh& mesh, const Face_vector_property& vectors, int N,
+                        const SMDF::Svg_options& svg);
 
 } // namespace smdf_cli
 

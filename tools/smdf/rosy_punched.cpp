@@ -6,6 +6,7 @@
 
 #include "rosy_inputs.h"
 
+#include <CGAL/Surface_mesh_direction_fields/Trivial_connection.h>
 #include <CGAL/Surface_mesh_direction_fields/boundary_aligned_field.h>
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/field_singularities.h>
@@ -39,15 +40,33 @@ K::Vector_3 face_normal(const Mesh& mesh, face_descriptor f)
 
 Json run_rosy_punched(const Args& args, const std::string& file, Mesh& mesh, int N,
                       const std::vector<std::pair<vertex_descriptor, double>>& cones, Vertex_double_property targets,
-                      Boundary_mode mode, const SMDF::Svg_options& svg)
+                      Rosy_method method, Boundary_mode mode, const SMDF::Svg_options& svg)
 {
   Json out = Json::object();
   Json timings = Json::object();
   Stopwatch clock;
   const std::size_t nv = num_vertices(mesh);
-  const bool open = !SMDF::mesh_topology(mesh).is_closed();
+  const SMDF::Mesh_topology topology = SMDF::mesh_topology(mesh);
+  const bool open = !topology.is_closed();
+  // The field on the holed surface: the paper's parallel field (--method parallel, and fields
+  // along the boundary), else the trivial connection of the holed metric with the hole loops'
+  // holonomy kept and the handles' compensated by the least rotation (what rotation compensation
+  // does; on a sphere it is the parallel field itself). Open meshes without handles take the
+  // parallel field by default, as without holes.
+  bool handles = false;
+  for(const auto& c : topology.components) handles = handles || c.genus > 0;
+  const bool parallel = method == PARALLEL || (open && mode != FREE_BOUNDARY) || (method == AUTOMATIC && open && !handles);
+  const Rosy_method named = parallel ? PARALLEL : method == AUTOMATIC ? (open ? TRIVIAL_CONNECTION : ROTATION_COMPENSATION) : method;
   out["N"] = N;
-  out["method"] = "parallel (punched holes)";
+  out["method"] = std::string(method_name(named)) + " (punched holes)";
+  if(!open) {   // Gauss-Bonnet on the input, before the holes change its Euler characteristic
+    double sum = 0;
+    for(vertex_descriptor v : vertices(mesh)) sum += targets[v];
+    const long chi = topology.euler_characteristic();
+    if(std::abs(sum - 2 * CGAL_PI * double(chi)) > 1e-6)
+      throw Error(file + ": Gauss-Bonnet: the cones' indices sum to " + format_real(sum / (2 * CGAL_PI)) +
+                  " but the Euler characteristic of the mesh is " + std::to_string(chi));
+  }
   if(open) out["boundary"] = mode == FREE_BOUNDARY ? "free" : mode == PARALLEL_BOUNDARY ? "parallel" : "orthogonal";
 
   // 1. the holes: the faces around every interior cone of index >= 1; its ring becomes boundary
@@ -131,23 +150,43 @@ Json run_rosy_punched(const Args& args, const std::string& file, Mesh& mesh, int
   Mesh flat_mesh;
   Mesh* carrier = &holed;
   Edge_length_property flat = hlen;
-  SMDF::Intrinsic_triangulation itri;
   if(cm.triangulation_changed) {
     if(!cm.intrinsic_triangulation.has_common_subdivision()) throw fail("no correspondence with the input: " + cm.correspondence_message);
     flat = flat_mesh.add_property_map<edge_descriptor, double>("e:smdf_length", 0.).first;
     SMDF::copy_intrinsic_triangulation(cm.intrinsic_triangulation, holed, flat_mesh, flat);
     carrier = &flat_mesh;
-    itri = cm.intrinsic_triangulation;
-  } else {
-    itri = SMDF::conformal_intrinsic_triangulation(holed, hu, SMDF::parameters::intrinsic_edge_flips(false));
   }
   const Face_angle_property angles = carrier->add_property_map<face_descriptor, double>("f:smdf_angle", 0.).first;
-  const SMDF::Parallel_rosy_status ps = SMDF::parallel_rosy_field(*carrier, N, angles, SMDF::parameters::edge_length_map(flat));
-  if(!ps.success)
-    throw fail("no parallel " + std::to_string(N) + "-RoSy field on the holed surface (cones of index 1 or more take the paper's "
-               "parallel field of the punched metric: on a surface with handles its holonomy need not allow one): " + ps.message);
   const Edge_matching_property cmatch = carrier->add_property_map<edge_descriptor, int>("e:smdf_matching", 0).first;
-  SMDF::principal_matching(*carrier, angles, cmatch, SMDF::parameters::symmetry_order(N).edge_length_map(flat));
+  if(parallel) {
+    const SMDF::Parallel_rosy_status ps = SMDF::parallel_rosy_field(*carrier, N, angles, SMDF::parameters::edge_length_map(flat));
+    if(!ps.success)
+      throw fail("no parallel " + std::to_string(N) + "-RoSy field on the holed surface (on a surface with handles its "
+                 "holonomy need not allow one; the default method compensates it): " + ps.message);
+    SMDF::principal_matching(*carrier, angles, cmatch, SMDF::parameters::symmetry_order(N).edge_length_map(flat));
+  } else {
+    // interior vertices keep their indices (0, or a cone's); every generator (handle or boundary
+    // loop, the holes' among them) turns by the multiple of 2 pi / N nearest its holonomy
+    SMDF::Trivial_connection<Mesh> tc = on_file(file, [&] {
+      return SMDF::Trivial_connection<Mesh>(*carrier, SMDF::parameters::symmetry_order(N).edge_length_map(flat));
+    });
+    for(const auto& c : cones) {
+      const vertex_descriptor v(c.first.idx());
+      if(c.second < 2 * CGAL_PI - 1e-9 && !is_border(v, *carrier) && carrier->halfedge(v) != Mesh::null_halfedge())
+        tc.set_singularity(v, std::round(c.second / (2 * CGAL_PI) * N) / N);
+    }
+    for(std::size_t g = 0; g < tc.generators().size(); ++g)
+      tc.set_generator_turning_number(g, std::round(tc.generator_levi_civita_holonomy(g) / (2 * CGAL_PI) * N) / N);
+    const SMDF::Trivial_connection_status ts = tc.solve();
+    Json t = Json::object();
+    t["energy"] = ts.energy;
+    t["max_rotation"] = ts.max_rotation;
+    t["scaled_residual"] = ts.scaled_residual;
+    out["trivial_connection"] = std::move(t);
+    if(!ts.success) throw fail("trivial connection of the holed surface failed: " + ts.message);
+    tc.field_angles(angles);
+    tc.field_matching(angles, cmatch);
+  }
   timings["compensation_s"] = clock.lap();
 
   // a field that follows the boundary: turned as a whole onto the first boundary edge, in the
@@ -169,12 +208,18 @@ Json run_rosy_punched(const Args& args, const std::string& file, Mesh& mesh, int
   // 5. carried to the holed mesh's faces (the input's frames), then to the input's
   const Face_angle_property hangles = holed.add_property_map<face_descriptor, double>("f:smdf_input_angle", 0.).first;
   const Edge_matching_property hmatch = holed.add_property_map<edge_descriptor, int>("e:smdf_input_matching", 0).first;
-  {
+  if(!cm.triangulation_changed) {   // the same triangles: each face's linear map, as the route without holes
+    SMDF::face_field_in_embedding(holed, N, angles, cmatch, hlen, hangles, hmatch);
+  } else {
     std::vector<double> a(num_faces(*carrier));
     std::vector<int> k(num_edges(*carrier));
     for(face_descriptor f : faces(*carrier)) a[f.idx()] = angles[f];
     for(edge_descriptor e : edges(*carrier)) k[e.idx()] = cmatch[e];
-    const SMDF::Field_transfer_status ts = SMDF::transfer_face_field_to_input(holed, itri, N, a, k, hangles, hmatch);
+    const SMDF::Field_transfer_status ts = SMDF::transfer_face_field_to_input(holed, cm.intrinsic_triangulation, N, a, k, hangles, hmatch);
+    Json t = Json::object();
+    t["max_distortion"] = ts.max_distortion;
+    t["mean_distortion"] = ts.mean_distortion;
+    out["input_read_back"] = std::move(t);
     if(!ts.success) throw fail("the field could not be carried to the input faces: " + ts.message);
   }
   const Face_angle_property in_angles = mesh.add_property_map<face_descriptor, double>("f:smdf_punched_angle", 0.).first;
@@ -268,6 +313,7 @@ Json run_rosy_punched(const Args& args, const std::string& file, Mesh& mesh, int
     write_vectors(args.value("field-out"), v);
   }
   if(args.has("svg")) write_field_svg_file(args, mesh, vectors, N, found, svg);
+  if(args.has("hatching-svg")) out["hatching"] = write_hatching_svg(args, file, mesh, vectors, N, svg);
   return out;
 }
 
