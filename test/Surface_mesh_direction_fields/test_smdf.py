@@ -1157,6 +1157,57 @@ def test_shared_rosy(smdf, c, meshes, tmp):
                     and back.get("singularities") == want and r["method"] == method + " (punched holes)",
                     "rosy %s (genus %d), N = %d, a cone of index %d and %d of -1/%d, %s: read back on the input (%r)"
                     % (name, genus, N, big // N, len(cones) - 1, N, method, r and r.get("trivial_connection")))
+    # holes whose Ricci flow does not converge (their boundary edges cannot flip): the cone's
+    # curvature beyond 2 pi spread to its neighbours, a closed flat cone metric, its trivial
+    # connection (Homer: Lai et al.'s Fig. 8, one singularity of index +2 on a head, N = 1)
+    for name, spec, N in (("homer_cgal.off", "100:2", 1), ("cheburashka_igltut.off", "3000:1,4886:1", 2)):
+        path = os.path.join(meshes, name)
+        if not os.path.isfile(path) or too_large(meshes, name):
+            continue
+        ff, mm = os.path.join(tmp, "spread_face.txt"), os.path.join(tmp, "spread_matching.txt")
+        r = smdf.json(["rosy", path, "--cone-indices", spec, "--N", str(N), "--face-field-out", ff, "--matching-out", mm],
+                      "rosy %s --cone-indices %s" % (name, spec))
+        want = [{"vertex": int(v), "index": int(k)} for v, k in (x.split(":") for x in spec.split(","))]
+        back = r and smdf.json(["singularities", path, "--field", ff, "--N", str(N), "--matching", mm], "singularities of %s" % name)
+        c.check(r is not None and r.get("success") is True and "holed_metric" in r and len(r.get("spread_to_neighbours", [])) == len(want)
+                and r.get("found") == want and back is not None and back.get("singularities") == want,
+                "rosy %s %s: the holed flow fails, the spread metric's connection reads back the cones on the input (%r)"
+                % (name, spec, back and back.get("singularities")))
+    # several boundary loops with a punched hole: every loop followed, the hole left free
+    beetle = os.path.join(meshes, "beetle_euclid.off")
+    if os.path.isfile(beetle) and not too_large(meshes, "beetle_euclid.off"):
+        verts, faces = read_off(beetle)
+        border = border_faces(faces)
+        for N, mode, spec in ((4, "orthogonal", "3493:1,527:1/4,2950:-1/4"), (3, "parallel", "1876:1,6055:1/3,8626:-1/3")):
+            ff, mm = os.path.join(tmp, "beetle_face.txt"), os.path.join(tmp, "beetle_matching.txt")
+            r = smdf.json(["rosy", beetle, "--cone-indices", spec, "--N", str(N), "--boundary", mode, "--face-field-out", ff,
+                           "--matching-out", mm], "rosy beetle (9 loops) --boundary %s, a cone of index 1" % mode)
+            if not r:
+                continue
+            worst = boundary_deviation(verts, faces, border, read_vectors(ff), N, mode)
+            back = smdf.json(["singularities", beetle, "--field", ff, "--N", str(N), "--matching", mm], "singularities of the beetle")
+            c.check(r.get("success") is True and worst < 1e-6 and back is not None and back.get("singularities") == r.get("prescribed")
+                    and r.get("method") == "boundary-aligned (punched holes)",
+                    "rosy beetle --N %d --boundary %s, a hole punched: %s to all %d boundary faces (%.3g), read back (%r)"
+                    % (N, mode, mode, len(border), worst, back and back.get("singularities")))
+    # automatic singularities of a field that follows the boundary (N = 1: they sum to chi)
+    holes = os.path.join(meshes, "holes_cgal.off")
+    if os.path.isfile(holes) and not too_large(meshes, "holes_cgal.off"):
+        verts, faces = read_off(holes)
+        border = border_faces(faces)
+        for N, mode in ((1, "parallel"), (4, "orthogonal")):
+            ff, mm = os.path.join(tmp, "auto_face.txt"), os.path.join(tmp, "auto_matching.txt")
+            r = smdf.json(["rosy", holes, "--cones", "auto", "--N", str(N), "--boundary", mode, "--face-field-out", ff, "--matching-out", mm],
+                          "rosy holes (7 loops) --cones auto --boundary %s" % mode)
+            if not r:
+                continue
+            worst = boundary_deviation(verts, faces, border, read_vectors(ff), N, mode)
+            back = smdf.json(["singularities", holes, "--field", ff, "--N", str(N), "--matching", mm], "singularities of holes, auto")
+            total = sum(x["index"] for x in r.get("prescribed", []))
+            c.check(r.get("success") is True and worst < 1e-6 and back is not None and back.get("singularities") == r.get("prescribed")
+                    and (N != 1 or abs(total - (-5)) < 1e-9),
+                    "rosy holes --cones auto --N %d --boundary %s: %d automatic singularities (sum %g), %s to the boundary (%.3g), read back"
+                    % (N, mode, len(r.get("prescribed", [])), total, mode, worst))
     eight = os.path.join(meshes, "eight_directional.off")
     if os.path.isfile(eight):
         for method in ("rotation-compensation", "trivial-connection"):
@@ -2445,7 +2496,8 @@ def test_shared_cone_metric(smdf, c, meshes):
 def test_sweep(smdf, c, shared):
     """Lai et al.'s field design on every valid shared mesh (issue #36's sweep), randomised with a
     fixed seed: every closed mesh with two random cone sets (cones of +-pi/2 summing to 2 pi chi, an
-    adjacent pair among them), a genus-0 one with a cone of index 2 (N = 1); every open mesh with
+    adjacent pair among them), a genus-0 one with a cone of index 2 (N = 1), a genus 1-10 one with
+    a cone of index 1 and the rest of -1/4 (N = 4); every open mesh with
     every boundary mode and N = 1, 2, 3, 4, 6 (interior cones of index 1 or -1 where the boundary
     alone cannot satisfy Gauss-Bonnet). A run either succeeds, and then its face field and matching
     read back by smdf singularities on the input are exactly the prescribed cones (and fields along
@@ -2524,6 +2576,16 @@ def test_sweep(smdf, c, shared):
                 if chi == 2:
                     v = rng.choice([w for w in interior if all(x not in on_border for x in adjacent[w])])
                     run(path, name, ["--cones", "%d:4pi" % v, "--N", "1"], [{"vertex": v, "index": 2}], N=1)
+                elif genus <= 10:
+                    # a cone of index 1 on a surface with handles (a punched hole, the handles'
+                    # holonomy compensated), the rest -1/4, none adjacent to another
+                    cones = {}
+                    while len(cones) < 1 + 4 - 4 * chi:
+                        v = rng.choice(interior)
+                        if v not in cones and not any(w in cones for w in adjacent[v]):
+                            cones[v] = 4 if not cones else -1
+                    spec = ",".join("%d:%d/4" % (v, k) for v, k in sorted(cones.items()))
+                    run(path, name, ["--cone-indices", spec], [{"vertex": v, "index": k / 4} for v, k in sorted(cones.items())])
             else:
                 far = [v for v in interior if all(x in interior for x in adjacent[v]) and
                        all(all(y not in on_border for y in adjacent[x]) for x in adjacent[v])]

@@ -161,7 +161,7 @@ void open_mesh_targets(const Mesh& mesh, const Boundary_geometry& b, int N, Boun
 }
 
 std::vector<std::pair<vertex_descriptor, double>> automatic_cones(const Args& args, const std::string& file, const Mesh& mesh,
-                                                                  int N, Json& json)
+                                                                  int N, Boundary_mode mode, Json& json)
 {
   double weight = 0.01;
   if(args.has("alignment-weight")) {
@@ -180,7 +180,9 @@ std::vector<std::pair<vertex_descriptor, double>> automatic_cones(const Args& ar
       throw Usage_error("option --smoothing-steps expects an integer from 0 to 1000, got '" + shorten(w) + "'");
   }
   const auto st = on_file(file, [&] {
-    return SMDF::automatic_singularities(mesh, N, SMDF::parameters::alignment_weight(weight).smoothing_steps(int(steps)));
+    return SMDF::automatic_singularities(mesh, N, SMDF::parameters::alignment_weight(weight).smoothing_steps(int(steps))
+                                                      .follow_boundary(mode != FREE_BOUNDARY)
+                                                      .orthogonal_to_boundary(mode == ORTHOGONAL_BOUNDARY));
   });
   if(!st.success) throw Error(file + ": the curvature-aligned field failed: " + st.message);
   json = Json::object();

@@ -76,10 +76,11 @@ struct Constraint_lines
 Constraint_lines read_constraint_file(const std::string& file, const Mesh& mesh, bool lengths);
 
 // --cones auto: the singularities of a smooth curvature-aligned N-RoSy field
-// (automatic_singularities(), --alignment-weight, --smoothing-steps) as cones; `json` receives
-// {N, alignment_weight, smoothing_steps, singularities, max_rotation_over_pi_over_N}.
+// (automatic_singularities(), --alignment-weight, --smoothing-steps; following the boundary for
+// --boundary parallel|orthogonal) as cones; `json` receives {N, alignment_weight,
+// smoothing_steps, singularities, max_rotation_over_pi_over_N}.
 std::vector<std::pair<vertex_descriptor, double>> automatic_cones(const Args& args, const std::string& file, const Mesh& mesh,
-                                                                  int N, Json& json);
+                                                                  int N, Boundary_mode mode, Json& json);
 
 // The indices the cones prescribe at interior vertices (rounded to multiples of 1/N, zeros left out).
 std::map<vertex_descriptor, double> prescribed_indices(const Mesh& mesh, const std::vector<std::pair<vertex_descriptor, double>>& cones,
@@ -95,10 +96,12 @@ Json metric_json(const SMDF::Cone_metric_status& cm, const char* on);
 // compensated) carried to the input, each hole filled by unfolding its ring's faces inward, the
 // spokes' matching chosen so that the ring vertices keep their indices; read back on the input.
 // `targets` are those of the input (cones and boundary turnings); returns the JSON, throws
-// Failed_result on a failed read-back.
+// Failed_result on a failed read-back. When the holed surface's Ricci flow does not converge and
+// `holed_failure` is given, closed meshes and free boundaries (fields that need not be parallel)
+// return an empty JSON with its message there instead, for the caller's other route.
 Json run_rosy_punched(const Args& args, const std::string& file, Mesh& mesh, int N,
                       const std::vector<std::pair<vertex_descriptor, double>>& cones, Vertex_double_property targets,
-                      Rosy_method method, Boundary_mode mode, const SMDF::Svg_options& svg);
+                      Rosy_method method, Boundary_mode mode, const SMDF::Svg_options& svg, std::string* holed_failure = nullptr);
 
 // --hatching-svg: streamlines of the face field `vectors` traced on the mesh, drawn in pen and
 // ink; returns {strokes, total_length}.

@@ -40,7 +40,7 @@ K::Vector_3 face_normal(const Mesh& mesh, face_descriptor f)
 
 Json run_rosy_punched(const Args& args, const std::string& file, Mesh& mesh, int N,
                       const std::vector<std::pair<vertex_descriptor, double>>& cones, Vertex_double_property targets,
-                      Rosy_method method, Boundary_mode mode, const SMDF::Svg_options& svg)
+                      Rosy_method method, Boundary_mode mode, const SMDF::Svg_options& svg, std::string* holed_failure)
 {
   Json out = Json::object();
   Json timings = Json::object();
@@ -55,8 +55,10 @@ Json run_rosy_punched(const Args& args, const std::string& file, Mesh& mesh, int
   // parallel field by default, as without holes.
   bool handles = false;
   for(const auto& c : topology.components) handles = handles || c.genus > 0;
-  const bool parallel = method == PARALLEL || (open && mode != FREE_BOUNDARY) || (method == AUTOMATIC && open && !handles);
-  const Rosy_method named = parallel ? PARALLEL : method == AUTOMATIC ? (open ? TRIVIAL_CONNECTION : ROTATION_COMPENSATION) : method;
+  const bool aligned = open && mode != FREE_BOUNDARY;
+  const bool parallel = !aligned && (method == PARALLEL || (method == AUTOMATIC && open && !handles));
+  const Rosy_method named = aligned ? BOUNDARY_ALIGNED : parallel ? PARALLEL
+                          : method == AUTOMATIC ? (open ? TRIVIAL_CONNECTION : ROTATION_COMPENSATION) : method;
   out["N"] = N;
   out["method"] = std::string(method_name(named)) + " (punched holes)";
   if(!open) {   // Gauss-Bonnet on the input, before the holes change its Euler characteristic
@@ -76,35 +78,43 @@ Json run_rosy_punched(const Args& args, const std::string& file, Mesh& mesh, int
   std::map<vertex_descriptor, double> holed_target;
   for(vertex_descriptor v : vertices(mesh)) holed_target[v] = targets[v];
   Json punched = Json::array();
-  for(const auto& c : cones) {
-    const vertex_descriptor v = c.first;
-    if(is_border(v, mesh) || c.second < 2 * CGAL_PI - 1e-9) continue;
-    std::vector<vertex_descriptor> ring;
-    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, mesh), mesh)) ring.push_back(source(h, mesh));
-    auto clash = [&](vertex_descriptor w) { return owner[w.idx()] >= 0 && owner[w.idx()] != int(v.idx()); };
-    if(clash(v)) throw Error(file + ": the cones of index 1 or more at vertices " + std::to_string(v.idx()) + " and " +
-                             std::to_string(owner[v.idx()]) + " are too close to punch two holes (they need three edges between them)");
-    owner[v.idx()] = int(v.idx());
-    for(vertex_descriptor w : ring) {
-      if(is_border(w, mesh))
-        throw Error(file + ": the cone of index 1 or more at vertex " + std::to_string(v.idx()) + " touches the boundary (vertex " +
-                    std::to_string(w.idx()) + "): its hole needs a ring of interior vertices");
-      if(clash(w)) throw Error(file + ": the cones of index 1 or more at vertices " + std::to_string(v.idx()) + " and " +
-                               std::to_string(owner[w.idx()]) + " are too close to punch two holes (they need three edges between them)");
-      owner[w.idx()] = int(v.idx());
-      holed_target[w] += (c.second - 2 * CGAL_PI) / double(ring.size());
-      if(!(holed_target[w] < CGAL_PI))
-        throw Error(file + ": the hole of the cone at vertex " + std::to_string(v.idx()) + " would turn by " + format_real(holed_target[w]) +
-                    " at ring vertex " + std::to_string(w.idx()) + " (at least pi): its index is too large for its " +
-                    std::to_string(ring.size()) + " neighbours");
+  // (holes that cannot be punched: the caller's route without holes where it applies)
+  const bool fallback = holed_failure && !aligned && method != PARALLEL;
+  try {
+    for(const auto& c : cones) {
+      const vertex_descriptor v = c.first;
+      if(is_border(v, mesh) || c.second < 2 * CGAL_PI - 1e-9) continue;
+      std::vector<vertex_descriptor> ring;
+      for(halfedge_descriptor h : halfedges_around_target(halfedge(v, mesh), mesh)) ring.push_back(source(h, mesh));
+      auto clash = [&](vertex_descriptor w) { return owner[w.idx()] >= 0 && owner[w.idx()] != int(v.idx()); };
+      if(clash(v)) throw Error(file + ": the cones of index 1 or more at vertices " + std::to_string(v.idx()) + " and " +
+                               std::to_string(owner[v.idx()]) + " are too close to punch two holes (they need three edges between them)");
+      owner[v.idx()] = int(v.idx());
+      for(vertex_descriptor w : ring) {
+        if(is_border(w, mesh))
+          throw Error(file + ": the cone of index 1 or more at vertex " + std::to_string(v.idx()) + " touches the boundary (vertex " +
+                      std::to_string(w.idx()) + "): its hole needs a ring of interior vertices");
+        if(clash(w)) throw Error(file + ": the cones of index 1 or more at vertices " + std::to_string(v.idx()) + " and " +
+                                 std::to_string(owner[w.idx()]) + " are too close to punch two holes (they need three edges between them)");
+        owner[w.idx()] = int(v.idx());
+        holed_target[w] += (c.second - 2 * CGAL_PI) / double(ring.size());
+        if(!(holed_target[w] < CGAL_PI))
+          throw Error(file + ": the hole of the cone at vertex " + std::to_string(v.idx()) + " would turn by " + format_real(holed_target[w]) +
+                      " at ring vertex " + std::to_string(w.idx()) + " (at least pi): its index is too large for its " +
+                      std::to_string(ring.size()) + " neighbours");
+      }
+      for(face_descriptor f : faces_around_target(halfedge(v, mesh), mesh)) in_fan[f.idx()] = 1;
+      holed_target.erase(v);
+      Json p = Json::object();
+      p["vertex"] = v.idx();
+      p["index"] = c.second / (2 * CGAL_PI);
+      p["ring"] = ring.size();
+      punched.push_back(std::move(p));
     }
-    for(face_descriptor f : faces_around_target(halfedge(v, mesh), mesh)) in_fan[f.idx()] = 1;
-    holed_target.erase(v);
-    Json p = Json::object();
-    p["vertex"] = v.idx();
-    p["index"] = c.second / (2 * CGAL_PI);
-    p["ring"] = ring.size();
-    punched.push_back(std::move(p));
+  } catch(const Error& e) {
+    if(!fallback) throw;
+    *holed_failure = e.what();
+    return Json();
   }
   out["punched"] = std::move(punched);
 
@@ -144,7 +154,13 @@ Json run_rosy_punched(const Args& args, const std::string& file, Mesh& mesh, int
     out["timings"] = timings;
     return Failed_result{out, file + ": " + why, 3};
   };
-  if(!cm.converged) throw fail("flat cone metric of the holed surface not converged: " + cm.message);
+  if(!cm.converged) {
+    if(fallback) {
+      *holed_failure = "flat cone metric of the holed surface not converged: " + cm.message;
+      return Json();
+    }
+    throw fail("flat cone metric of the holed surface not converged: " + cm.message);
+  }
 
   // 4. its parallel field, on the holed mesh or its intrinsic triangulation
   Mesh flat_mesh;
@@ -158,7 +174,15 @@ Json run_rosy_punched(const Args& args, const std::string& file, Mesh& mesh, int
   }
   const Face_angle_property angles = carrier->add_property_map<face_descriptor, double>("f:smdf_angle", 0.).first;
   const Edge_matching_property cmatch = carrier->add_property_map<edge_descriptor, int>("e:smdf_matching", 0).first;
-  if(parallel) {
+  if(aligned) {
+    // every loop of the input followed (handles compensated, Lai et al. 4.3), the holes left free
+    auto hole = carrier->add_property_map<vertex_descriptor, bool>("v:smdf_hole", false).first;
+    for(vertex_descriptor v : vertices(*carrier)) hole[v] = owner[v.idx()] >= 0;
+    const SMDF::Boundary_aligned_field_status bs = SMDF::boundary_aligned_field_of_metric(
+        *carrier, N, angles, cmatch,
+        SMDF::parameters::edge_length_map(flat).orthogonal_to_boundary(mode == ORTHOGONAL_BOUNDARY).free_boundary_vertex_map(hole));
+    if(!bs.success) throw fail("no field along the boundary of the holed surface: " + bs.message);
+  } else if(parallel) {
     const SMDF::Parallel_rosy_status ps = SMDF::parallel_rosy_field(*carrier, N, angles, SMDF::parameters::edge_length_map(flat));
     if(!ps.success)
       throw fail("no parallel " + std::to_string(N) + "-RoSy field on the holed surface (on a surface with handles its "
@@ -188,22 +212,6 @@ Json run_rosy_punched(const Args& args, const std::string& file, Mesh& mesh, int
     tc.field_matching(angles, cmatch);
   }
   timings["compensation_s"] = clock.lap();
-
-  // a field that follows the boundary: turned as a whole onto the first boundary edge, in the
-  // metric (the transfer keeps angles with border edges)
-  if(open && mode != FREE_BOUNDARY) {
-    halfedge_descriptor hb;   // on the input's boundary, not on the ring of a hole
-    for(halfedge_descriptor h : halfedges(*carrier))
-      if(is_border(h, *carrier) && is_border(vertex_descriptor(source(h, *carrier).idx()), mesh) &&
-         is_border(vertex_descriptor(target(h, *carrier).idx()), mesh)) { hb = opposite(h, *carrier); break; }
-    const face_descriptor fb = face(hb, *carrier);
-    auto fvec = get(CGAL::dynamic_face_property_t<K::Vector_3>(), *carrier);
-    SMDF::field_angles_to_vectors(*carrier, angles, fvec, SMDF::parameters::edge_length_map(flat));
-    const K::Vector_3 n = face_normal(*carrier, fb), e = carrier->point(target(hb, *carrier)) - carrier->point(source(hb, *carrier));
-    const K::Vector_3 want = mode == ORTHOGONAL_BOUNDARY ? CGAL::cross_product(n, e) : e, have = get(fvec, fb);
-    const double turn = std::atan2(CGAL::cross_product(have, want) * n, have * want);
-    for(face_descriptor f : faces(*carrier)) angles[f] += turn;
-  }
 
   // 5. carried to the holed mesh's faces (the input's frames), then to the input's
   const Face_angle_property hangles = holed.add_property_map<face_descriptor, double>("f:smdf_input_angle", 0.).first;

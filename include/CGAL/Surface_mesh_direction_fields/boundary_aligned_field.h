@@ -58,17 +58,25 @@ namespace internal {
 //   each boundary loop the field keeps its angle with the geodesic boundary;
 // - around the dual cycle of each handle generator, sum rho = minus the parallel holonomy's
 //   distance to the nearest multiple of 2 pi / N (rotation compensation);
-// - along a dual path from the first loop to each other loop, sum rho = minus the angle the
-//   parallel field arrives with (modulo the line's period): it reaches that loop aligned.
+// - along a dual path from the first followed loop to each other followed loop, sum rho = minus
+//   the angle the parallel field arrives with (modulo the line's period): it reaches that loop
+//   aligned. Loops marked in free_loop are not followed (e.g. the holes punched at cones of
+//   index >= 1): their vertex sums still keep the field's holonomy around them.
 // Lagrange: rho = W C^T lambda, (C W C^T) lambda = c; the vertex block is the cotan Laplacian of
 // the interior edges (one vertex held), factored once, the others by a Schur complement of size
 // 2g + b - 1. beta receives the face angles, rho the rotations; false (and a message) on
 // numerical failure.
 template <typename TM>
 bool compensated_boundary_field(const Mesh_arrays<TM>& m, const Topology_arrays& topo, const std::vector<Generator_arrays>& generators,
-                                int N, bool orthogonal, std::vector<double>& beta, std::vector<double>& rho,
-                                double& max_inconsistency, std::string& message)
+                                const std::vector<char>& free_loop, int N, bool orthogonal, std::vector<double>& beta,
+                                std::vector<double>& rho, double& max_inconsistency, std::string& message)
 {
+  std::size_t first = 0;   // the loop the field starts along
+  while(first < topo.loops.size() && free_loop[first]) ++first;
+  if(first == topo.loops.size()) {
+    message = "every boundary loop is left free: no loop for the field to follow";
+    return false;
+  }
   const std::size_t nv = m.number_of_vertices(), nf = m.number_of_faces(), ne = m.number_of_edges();
   const double period = 2 * CGAL_PI / N, line_period = N % 2 == 0 ? period : CGAL_PI / N;
   const double across = orthogonal ? CGAL_PI / 2 : 0.;
@@ -85,8 +93,8 @@ bool compensated_boundary_field(const Mesh_arrays<TM>& m, const Topology_arrays&
     paths.push_back(g.dual);
     rhs.push_back(-std::remainder(holonomy, period));
   }
-  // a border face of each loop, entered across its border edge; dual paths from loop 0's
-  const int h0 = topo.loops[0][0] ^ 1;   // the interior halfedge of a border edge of loop 0
+  // a border face of each followed loop, entered across its border edge; dual paths from the first's
+  const int h0 = topo.loops[first][0] ^ 1;   // the interior halfedge of a border edge of that loop
   const int start = m.face[std::size_t(h0)];
   std::vector<int> parent(nf, -1);   // the crossing that reached the face
   std::vector<char> seen(nf, 0);
@@ -104,7 +112,8 @@ bool compensated_boundary_field(const Mesh_arrays<TM>& m, const Topology_arrays&
     }
   }
   const double beta0 = halfedge_direction(m, h0) + across;
-  for(std::size_t j = 1; j < topo.loops.size(); ++j) {
+  for(std::size_t j = first + 1; j < topo.loops.size(); ++j) {
+    if(free_loop[j]) continue;
     const int hb = topo.loops[j][0] ^ 1;
     std::vector<int> path;
     for(int f = m.face[std::size_t(hb)]; f != start; f = m.face[std::size_t(parent[std::size_t(f)] ^ 1)]) path.push_back(parent[std::size_t(f)]);
@@ -205,17 +214,19 @@ bool compensated_boundary_field(const Mesh_arrays<TM>& m, const Topology_arrays&
 // no constant field in a face follows two sides that meet at an angle off that lattice.
 template <typename TM>
 double boundary_deviation(const Mesh_arrays<TM>& mf, const Topology_arrays& topo, int N, bool orthogonal,
-                          const std::vector<double>& beta)
+                          const std::vector<double>& beta, const std::vector<char>& free_loop = std::vector<char>())
 {
   const double line_period = N % 2 == 0 ? 2 * CGAL_PI / N : CGAL_PI / N;
   std::vector<double> per_face(mf.number_of_faces(), -1.);
-  for(const auto& loop : topo.loops)
-    for(int b : loop) {
+  for(std::size_t j = 0; j < topo.loops.size(); ++j) {
+    if(!free_loop.empty() && free_loop[j]) continue;
+    for(int b : topo.loops[j]) {
       const int h = b ^ 1;
       const std::size_t f = std::size_t(mf.face[std::size_t(h)]);
       const double d = std::abs(std::remainder(beta[f] - halfedge_direction(mf, h) - (orthogonal ? CGAL_PI / 2 : 0.), line_period));
       per_face[f] = per_face[f] < 0 ? d : (std::min)(per_face[f], d);
     }
+  }
   double worst = 0;
   for(double d : per_face) worst = (std::max)(worst, d);
   return worst;
@@ -277,7 +288,10 @@ double max_boundary_deviation(const TriangleMesh& tm, int N, const FaceAngleMap&
 /// interior edge the rotation above. Read back with them, its only singularities are the
 /// interior cones (the principal matching may differ where the rotation exceeds
 /// \f$\pi/N\f$ across an edge, e.g. between small holes). Named parameters:
-/// `orthogonal_to_boundary` (`bool`, default `false`), `edge_length_map` (the flat metric) or
+/// `orthogonal_to_boundary` (`bool`, default `false`), `free_boundary_vertex_map` (a readable
+/// vertex property map to `bool`, default none: the boundary loops whose vertices it marks are
+/// left free, neither followed nor measured, e.g. holes punched at cones of index 1 or more; the
+/// field keeps its holonomy around them), `edge_length_map` (the flat metric) or
 /// `intrinsic_mesh`, and the index maps. The status (its `metric` left empty;
 /// `rotation_compensation` says whether the mesh has handles) fails with a message when the
 /// field is not consistent across some edge within \f$10^{-6}\f$ rad (a cone or a boundary
@@ -300,9 +314,16 @@ Boundary_aligned_field_status boundary_aligned_field_of_metric(const TriangleMes
   if(topo.components.size() != 1 || topo.loops.empty())
     throw Input_error(Input_error::INVALID_ARGUMENT, "boundary_aligned_field_of_metric() needs a mesh of one component with a boundary");
   st.rotation_compensation = topo.components[0].genus() > 0;
+  std::vector<char> free_loop(topo.loops.size(), 0);
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::free_boundary_vertex_t>::value) {
+    const auto is_free = parameters::get_parameter(np, internal_np::free_boundary_vertex);
+    for(std::size_t j = 0; j < topo.loops.size(); ++j)
+      free_loop[j] = get(is_free, m.vertices[std::size_t(m.target[std::size_t(topo.loops[j][0])])]) ? 1 : 0;
+  }
   std::vector<double> beta, rho;
   double inconsistency = 0;
-  if(!internal::compensated_boundary_field(m, topo, im.generator_arrays(), N, st.orthogonal, beta, rho, inconsistency, st.message))
+  if(!internal::compensated_boundary_field(m, topo, im.generator_arrays(), free_loop, N, st.orthogonal, beta, rho, inconsistency,
+                                           st.message))
     return st;
   for(std::size_t f = 0; f < beta.size(); ++f) put(face_angles, m.faces[f], beta[f]);
   const double period = 2 * CGAL_PI / N;
@@ -321,7 +342,7 @@ Boundary_aligned_field_status boundary_aligned_field_of_metric(const TriangleMes
     st.message = os.str();
     return st;
   }
-  st.max_boundary_deviation = internal::boundary_deviation(m, topo, N, st.orthogonal, beta);
+  st.max_boundary_deviation = internal::boundary_deviation(m, topo, N, st.orthogonal, beta, free_loop);
   st.success = st.max_boundary_deviation <= 1e-6;
   if(!st.success) st.message = internal::boundary_deviation_message(st.max_boundary_deviation);
   return st;

@@ -117,8 +117,15 @@ std::vector<std::array<double, 2>> face_shape_anisotropy(const Mesh_arrays<TM>& 
 /// \param tm the mesh (its embedding: curvature needs the vertex points)
 /// \param N the symmetry order
 /// \param angles receives the field's angle per face, counterclockwise from `halfedge(f)`
+/// On an open mesh, `follow_boundary(true)` adds \f$\beta \sum_{f \ni b} \frac{A_f}{\bar A}|z_f - t_f|^2\f$
+/// over the faces with a border edge \f$b\f$, \f$t_f\f$ the edge's direction (turned by \f$\pi/2\f$ with
+/// `orthogonal_to_boundary(true)`) to the power \f$N\f$, with \f$\beta = 10^3\f$, kept in every
+/// smoothing step: the field then follows the boundary, and its interior singularities are those
+/// of a field parallel (orthogonal) to it (for \f$N = 1\f$ they sum to \f$\chi\f$).
+///
 /// \param np `alignment_weight` (\f$\lambda\f$, default 0.01: smaller is smoother, with fewer
-///   singularities), `smoothing_steps` (default 4), `vertex_point_map` and the index maps
+///   singularities), `smoothing_steps` (default 4), `follow_boundary` (`bool`, default `false`),
+///   `orthogonal_to_boundary` (`bool`, default `false`), `vertex_point_map` and the index maps
 template <typename TriangleMesh, typename FaceAngleMap, typename NamedParameters = parameters::Default_named_parameters>
 Curvature_aligned_field_status<TriangleMesh>
 curvature_aligned_rosy_field(const TriangleMesh& tm, int N, FaceAngleMap angles,
@@ -132,6 +139,8 @@ curvature_aligned_rosy_field(const TriangleMesh& tm, int N, FaceAngleMap angles,
   if(!(lambda > 0) || !std::isfinite(lambda))
     throw Input_error(Input_error::INVALID_ARGUMENT, "alignment_weight must be positive and finite");
   const int steps = choose_parameter(get_parameter(np, internal_np::smoothing_steps), 4);
+  const bool follow = choose_parameter(get_parameter(np, internal_np::follow_boundary), false);
+  const double across = choose_parameter(get_parameter(np, internal_np::orthogonal_to_boundary), false) ? CGAL_PI / 2 : 0.;
   if(steps < 0) throw Input_error(Input_error::INVALID_ARGUMENT, "smoothing_steps must be non-negative");
   st.smoothing_steps = steps;
   st.alignment_weight = lambda;
@@ -167,6 +176,21 @@ curvature_aligned_rosy_field(const TriangleMesh& tm, int N, FaceAngleMap angles,
       rhs[Eigen::Index(2 * f + 1)] = a * r * qscale * std::sin(phi);
     }
   }
+  // the boundary term: the border edges' directions (N-th power) in their faces
+  const double beta = 1e3;
+  Eigen::VectorXd boundary_rhs = Eigen::VectorXd::Zero(Eigen::Index(2 * nf));
+  if(follow)
+    for(std::size_t e = 0; e < ne; ++e)
+      for(int h : {int(2 * e), int(2 * e + 1)}) {
+        if(m.face[std::size_t(h)] < 0 || m.face[std::size_t(h ^ 1)] >= 0) continue;
+        const std::size_t f = std::size_t(m.face[std::size_t(h)]);
+        const double b = beta * area[f] / mean_area, phi = N * (internal::halfedge_direction(m, h) + across);
+        diag[2 * f] += b;
+        diag[2 * f + 1] += b;
+        boundary_rhs[Eigen::Index(2 * f)] += b * std::cos(phi);
+        boundary_rhs[Eigen::Index(2 * f + 1)] += b * std::sin(phi);
+      }
+  rhs += boundary_rhs;
   for(std::size_t e = 0; e < ne; ++e) {
     const int h = int(2 * e);
     const int l = m.face[std::size_t(h)], r = m.face[std::size_t(h ^ 1)];
@@ -191,14 +215,18 @@ curvature_aligned_rosy_field(const TriangleMesh& tm, int N, FaceAngleMap angles,
   Cholmod_cholesky chol;
   if(!chol.factor(A, st.message)) return st;
   // smoothing: the same implicit diffusion applied again to the field, normalised (inverse
-  // power iteration: towards the smoothest field of the metric)
+  // power iteration: towards the smoothest field of the metric); the boundary term stays, on a
+  // field scaled to a mean square of 1 per face like its targets
   Eigen::VectorXd z = chol.solve(rhs), mz(z.size());
   for(int k = 0; k < steps && z.allFinite(); ++k) {
-    for(std::size_t f = 0; f < nf; ++f)
-      for(int i = 0; i < 2; ++i) mz[Eigen::Index(2 * f + std::size_t(i))] = z[Eigen::Index(2 * f + std::size_t(i))] * area[f] / mean_area;
-    z = chol.solve(mz);
     const double n = z.norm();
-    if(n > 0) z /= n;
+    const double scale = follow && n > 0 ? lambda * std::sqrt(double(nf)) / n : 1.;
+    for(std::size_t f = 0; f < nf; ++f)
+      for(int i = 0; i < 2; ++i)
+        mz[Eigen::Index(2 * f + std::size_t(i))] = scale * z[Eigen::Index(2 * f + std::size_t(i))] * area[f] / mean_area;
+    z = chol.solve(follow ? Eigen::VectorXd(mz + boundary_rhs) : mz);
+    const double n2 = z.norm();
+    if(n2 > 0) z /= n2;
   }
   if(!z.allFinite()) { st.message = "the field's solve produced non-finite values"; return st; }
   for(std::size_t f = 0; f < nf; ++f) {
