@@ -74,3 +74,16 @@ if [ -f "$meshes/eight_directional.off" ]; then
   run connection "$meshes/eight_directional.off" --singularities 0:-2 --svg "$here/eight_index_minus_2.svg" \
       --view 30,40,z --width 500
 fi
+# Fig. 8 on a head by the metric-driven method where the hole's Ricci flow fails (Homer): the
+# cone's curvature spread to its neighbours and the trivial connection; a field parallel to every
+# boundary loop of a face with three holes (eyes and mouth); automatic singularities of a
+# curvature-aligned field on a metric that needs flips (Cheburashka), hatched on the input
+if [ -f "$meshes/homer_cgal.off" ]; then
+  run rosy "$meshes/homer_cgal.off" --cone-indices 100:2 --N 1 --svg "$here/homer_index_2_spread.svg" --view 0,10,y --width 500
+fi
+if [ -f "$meshes/alex_ghm.off" ]; then
+  run rosy "$meshes/alex_ghm.off" --N 4 --boundary parallel --hatching-svg "$here/alex_boundary_parallel.svg" --view 180,0,y --width 500
+fi
+if [ -f "$meshes/cheburashka_igltut.off" ]; then
+  run rosy "$meshes/cheburashka_igltut.off" --cones auto --hatching-svg "$here/cheburashka_auto_hatching.svg" --view 0,10,y --width 500
+fi
