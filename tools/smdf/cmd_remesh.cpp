@@ -644,8 +644,9 @@ Command remesh_command()
           "exit 3 if a triangle folds), whose edge lengths are the metric tessellated with edge length\n"
           "1 (edge_length 1 in grid units). The JSON adds placed_cones: [{vertex, curvature}],\n"
           "placement: {success, message, distortion_bound, scale_spread}, placement_attempts:\n"
-          "[{cone_spacing, cones, message}] (a map that folds is tried again with the cones 2 grid\n"
-          "edges apart, unless --cone-spacing is given) and integer_grid_map:\n"
+          "[{cone_spacing, cones, message, stage_timings}] (a map that folds is tried again with the\n"
+          "cones 2 grid edges apart, unless --cone-spacing is given), stage_timings (the last\n"
+          "attempt's: placement_s, cone_metric_s, cross_field_s, integer_grid_map_s) and integer_grid_map:\n"
           "{success, message, singularities, seams, rounded_values, folded_triangles,\n"
           "stiffening_rounds, seamless_energy, integer_energy, min_area_ratio}. Exit 3 at once when\n"
           "the placement takes --max-cones cones or more (the map's time grows as their cube).\n",

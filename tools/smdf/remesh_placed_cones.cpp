@@ -88,6 +88,10 @@ Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, M
   // field of the trivial connection on it, and the integer-grid map (grid units) whose edge
   // lengths are the metric to tessellate
   stage("cone placement");
+  // each stage's time, in out["stage_timings"] as soon as it ends (failures keep them too)
+  Stopwatch stage_clock;
+  out["stage_timings"] = Json::object();
+  auto timed = [&](const char* name) { out["stage_timings"][name] = stage_clock.lap(); };
   Edge_length_property placed = mesh.add_property_map<edge_descriptor, double>("e:smdf_placed_length", 0.).first;
   // the grid's edge length on the input, roughly (the metric scales it by e^u, u within the bound)
   const double h_input = requested_h > 0 ? requested_h : std::sqrt(CGAL::Polygon_mesh_processing::area(mesh) / double(requested_faces));
@@ -104,6 +108,7 @@ Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, M
     pc.push_back(std::move(o));
   }
   out["placed_cones"] = std::move(pc);
+  timed("placement_s");
   cones = ps.cones.size();
   pl["success"] = ps.success;
   pl["message"] = ps.message;
@@ -157,6 +162,7 @@ Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, M
     }
   }
   Mesh& on = *surface;
+  timed("cone_metric_s");
   metric["converged"] = cm.converged;
   metric["max_curvature_error"] = cm.max_curvature_error;
   if(!cm.converged) {
@@ -177,11 +183,13 @@ Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, M
     out["success"] = false;
     throw Failed_result{out, file + ": the cross field of the placed cones failed: " + ts.message, 3};
   }
+  timed("cross_field_s");
   const double hm = requested_h > 0 ? requested_h : std::sqrt(metric_area(on, lengths) / double(requested_faces));
   auto uv = on.add_property_map<halfedge_descriptor, std::array<double, 2>>("h:smdf_remesh_uv").first;
   const SMDF::Integer_grid_map_status gs = on_file(file, [&] {
     return SMDF::integer_grid_map(on, field, hm, uv, SMDF::parameters::edge_length_map(lengths));
   });
+  timed("integer_grid_map_s");
   Json ig = Json::object();
   ig["success"] = gs.success;
   ig["message"] = gs.message;
@@ -236,12 +244,14 @@ Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Me
                                                     spacings[i], out, metric, stage, cones, folded);
       a["cones"] = cones;
       a["message"] = "";
+      a["stage_timings"] = out["stage_timings"];
       attempts.push_back(std::move(a));
       out["placement_attempts"] = std::move(attempts);
       return l;
     } catch(Failed_result& f) {
       a["cones"] = cones;
       a["message"] = f.message;
+      a["stage_timings"] = f.json["stage_timings"];
       attempts.push_back(std::move(a));
       if(!folded || i + 1 == spacings.size()) {
         f.json["placement_attempts"] = std::move(attempts);

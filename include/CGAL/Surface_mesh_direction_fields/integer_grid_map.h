@@ -10,13 +10,15 @@
 // translations and the singularities rounded to integers. Its edge lengths are a flat cone
 // metric that tessellate_flat_metric() grids exactly.
 
-#include <CGAL/Surface_mesh_direction_fields/Cholmod_cholesky.h>
 #include <CGAL/Surface_mesh_direction_fields/Intrinsic_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/errors.h>
 #include <CGAL/Surface_mesh_direction_fields/parameters.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/cotan_weights.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/development.h>
 
+#include <CGAL/Surface_mesh_direction_fields/internal/cholmod_errors.h>
+
+#include <Eigen/CholmodSupport>
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
@@ -24,6 +26,7 @@
 #include <array>
 #include <cmath>
 #include <complex>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -57,6 +60,48 @@ struct Integer_grid_map_status
 };
 
 namespace internal {
+
+// The vertex block of the map's system, factored again after every stiffening round with the
+// same pattern: supernodal (its fill is that of a two-component Laplacian with seams, where
+// CHOLMOD's BLAS kernels beat the simplicial ones several times), the analysis done once, and
+// solves by blocks of columns (the Schur complement's back-substitutions).
+class Map_vertex_factor
+{
+public:
+  typedef Eigen::SparseMatrix<double> Matrix;
+
+  bool factor(const Matrix& lower, std::string& message)
+  {
+    const bool same = analyzed_ && lower.rows() == rows_ && lower.nonZeros() == nonzeros_ &&
+                      std::equal(lower.outerIndexPtr(), lower.outerIndexPtr() + lower.outerSize() + 1, outer_.begin()) &&
+                      std::equal(lower.innerIndexPtr(), lower.innerIndexPtr() + lower.nonZeros(), inner_.begin());
+    if(!same) {
+      llt_.reset(new Solver());
+      make_cholmod_quiet(llt_->cholmod());
+      llt_->analyzePattern(lower);
+      analyzed_ = true;
+      rows_ = lower.rows();
+      nonzeros_ = lower.nonZeros();
+      outer_.assign(lower.outerIndexPtr(), lower.outerIndexPtr() + lower.outerSize() + 1);
+      inner_.assign(lower.innerIndexPtr(), lower.innerIndexPtr() + lower.nonZeros());
+    }
+    llt_->factorize(lower);
+    if(llt_->info() != Eigen::Success) {
+      message = "CHOLMOD could not factor the map's system (not positive definite)" + take_cholmod_error();
+      return false;
+    }
+    return true;
+  }
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) const { return llt_->solve(b); }
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& b) const { return llt_->solve(b); }
+
+private:
+  typedef Eigen::CholmodSupernodalLLT<Matrix, Eigen::Lower> Solver;
+  std::unique_ptr<Solver> llt_;
+  bool analyzed_ = false;
+  Eigen::Index rows_ = 0, nonzeros_ = 0;
+  std::vector<Matrix::StorageIndex> outer_, inner_;
+};
 
 typedef std::complex<double> Cplx;
 
@@ -372,7 +417,7 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   // al.'s local stiffening), factored, and their Schur complement S y = rs on the small unknowns
   Eigen::MatrixXd S;
   Eigen::VectorXd xg, rs; // xg = Hbb^-1 gb
-  Cholmod_cholesky chol;  // of Hbb
+  internal::Map_vertex_factor chol;  // of Hbb
   Eigen::SparseMatrix<double> Hbs;
   std::vector<double> stiffness(nf, 1.);
   auto assemble = [&](bool schur) -> bool {   // schur: also S and rs (not needed once every small unknown is fixed)
@@ -407,16 +452,18 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   Hbs = Eigen::SparseMatrix<double>(nb, ns);
   S = Hss;
   if(nb > 0) {
-    Cholmod_cholesky::Matrix Hbb(nb, nb);
+    internal::Map_vertex_factor::Matrix Hbb(nb, nb);
     Hbb.setFromTriplets(tbb.begin(), tbb.end());
     Hbb.makeCompressed();
     std::string msg;
     if(!chol.factor(Hbb, msg)) { st.message = "the map's system could not be factored: " + msg; return false; }
     Hbs.setFromTriplets(tbs.begin(), tbs.end());
     xg = chol.solve(gb);
-    for(int k = 0; k < ns && schur; ++k) {
-      const Eigen::VectorXd col = Eigen::VectorXd(Hbs.col(k));
-      if(col.squaredNorm() > 0) S.col(k).noalias() -= Hbs.transpose() * chol.solve(col);   // sparse times dense
+    // by blocks of 64 columns: one multi-column solve each (64 nb doubles at a time)
+    for(int k0 = 0; k0 < ns && schur; k0 += 64) {
+      const int w = (std::min)(64, ns - k0);
+      const Eigen::MatrixXd cols = Eigen::MatrixXd(Hbs.middleCols(k0, w));
+      S.middleCols(k0, w).noalias() -= Hbs.transpose() * chol.solve(cols);   // sparse times dense
     }
   }
   rs = gs;
@@ -425,7 +472,7 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   };
   if(!assemble(true)) return st;
   auto big_of = [&](const Eigen::VectorXd& small) {   // the vertex unknowns given the small ones
-    return nb > 0 ? Eigen::VectorXd(chol.solve(gb - Hbs * small)) : Eigen::VectorXd();
+    return nb > 0 ? Eigen::VectorXd(chol.solve(Eigen::VectorXd(gb - Hbs * small))) : Eigen::VectorXd();
   };
   // linear conditions on the small unknowns (the closings, the gauge, then the roundings), kept
   // as an orthonormal basis Q y = delta of their span (Gram-Schmidt): a condition in that span is
