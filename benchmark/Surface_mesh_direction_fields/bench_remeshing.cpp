@@ -10,12 +10,27 @@
 // holonomy fits the grid.
 #include "benchmark_util.h"
 
+#include <CGAL/Surface_mesh_direction_fields/IO/read_triangle_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/compute_trivial_connection.h>
+#include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/delaunay_refinement.h>
 #include <CGAL/Surface_mesh_direction_fields/flat_development.h>
 #include <CGAL/Surface_mesh_direction_fields/grid_tessellation.h>
+#include <CGAL/Surface_mesh_direction_fields/integer_grid_map.h>
+#include <CGAL/Surface_mesh_direction_fields/remeshing_cones.h>
+#include <CGAL/Surface_mesh_direction_fields/topology.h>
 
+#include <array>
+#include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <map>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace SMDF = CGAL::Surface_mesh_direction_fields;
 using smdf_bench::Mesh;
@@ -128,6 +143,162 @@ static void BM_delaunay_refinement(benchmark::State& state)
   }
 }
 
+// The automatic quad remesh of `smdf remesh MESH --faces N` (issue #37), library calls only:
+// place_remeshing_cones() (defaults), the flat cone metric of those cones on the input's edges,
+// the trivial connection's cross field, integer_grid_map() and tessellate_flat_metric(), with
+// N = faces / 5 quads (100k faces -> 20k quads). The base mesh is $SMDF_REMESH_BENCH_MESH, else
+// the shared bunny_bff.obj (closed, genus 0, 28,576 faces; the feline of the other benchmarks
+// takes over 500 cones, past smdf's default maximum), decimated or Loop-subdivided to each size.
+// As smdf, a metric the input's edges cannot carry is computed on their conforming Delaunay
+// refinement (counter `refined`, the fraction of runs); smdf's other fallbacks (intrinsic flips,
+// a second placement with the cones further apart, untangling) are not run: a size that needs
+// them reports read_back_ok 0 and the stage it failed in.
+// Counters: placement_s, cone_metric_s (with the refinement), cross_field_s,
+// integer_grid_map_s, tessellation_s, cones, seams, output_quads, folded_triangles, refined,
+// read_back_ok (the tessellation succeeded with no inverted face).
+namespace {
+
+std::string remesh_base_mesh_path()
+{
+  if(const char* env = std::getenv("SMDF_REMESH_BENCH_MESH"))
+    if(*env) return env;
+  return std::string(SMDF_SHARED_DATA_DIR) + "/meshes/bunny_bff.obj";
+}
+
+const smdf_bench::Bench_mesh& remesh_mesh_of_size(std::size_t faces)
+{
+  static std::unique_ptr<Mesh> base;
+  static std::map<std::size_t, std::unique_ptr<smdf_bench::Bench_mesh>> cache;
+  if(!base) {
+    std::unique_ptr<Mesh> m(new Mesh);
+    SMDF::read_triangle_mesh(remesh_base_mesh_path(), *m);
+    const SMDF::Mesh_topology<Mesh> topo = SMDF::mesh_topology(*m);
+    if(topo.components.size() != 1 || !topo.is_closed())
+      throw std::runtime_error("benchmark mesh '" + remesh_base_mesh_path() + "' is not a closed surface of one component");
+    base = std::move(m);
+  }
+  auto it = cache.find(faces);
+  if(it == cache.end()) {
+    std::unique_ptr<smdf_bench::Bench_mesh> b(new smdf_bench::Bench_mesh);
+    b->mesh = *base;
+    b->target_faces = faces;
+    std::ostringstream src;
+    src << smdf_bench::base_name(remesh_base_mesh_path());
+    smdf_bench::refine_to_size(b->mesh, faces, src);
+    smdf_bench::describe(*b);
+    b->source = src.str();
+    it = cache.emplace(faces, std::move(b)).first;
+  }
+  return *it->second;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+} // namespace
+
+static void BM_remesh_automatic(benchmark::State& state)
+{
+  const smdf_bench::Bench_mesh* b = nullptr;
+  try { b = &remesh_mesh_of_size(std::size_t(state.range(0))); } catch(const std::exception& e) {
+    smdf_bench::had_errors() = true;
+    state.SkipWithError(e.what());
+    return;
+  }
+  smdf_bench::set_mesh_counters(state, *b);
+  const double quads_wanted = double(num_faces(b->mesh)) / 5;
+  double placement_s = 0, metric_s = 0, field_s = 0, map_s = 0, tessellation_s = 0;
+  std::size_t cones = 0, seams = 0, quads = 0, folded = 0, refinements = 0;
+  bool ok = true;
+  std::string failure;
+  smdf_bench::Memory_probe mem;
+  for(auto _ : state) {
+    Mesh work = b->mesh;
+    typedef Mesh::Edge_index Edge;
+    auto placed = work.add_property_map<Edge, double>("e:bench_placed", 0.).first;
+    auto t0 = std::chrono::steady_clock::now();
+    const auto ps = SMDF::place_remeshing_cones(work, placed, SMDF::parameters::symmetry_order(4));
+    placement_s += seconds_since(t0);
+    cones = ps.cones.size();
+    if(!ps.success) { ok = false; failure = "placement: " + ps.message; continue; }
+    t0 = std::chrono::steady_clock::now();
+    std::vector<std::pair<Mesh::Vertex_index, double>> indices;
+    for(const auto& c : ps.cones) indices.emplace_back(c.first, c.second / (2 * CGAL_PI));
+    // the metric on the input's edges, else (as smdf) on its conforming Delaunay refinement,
+    // which keeps the input's vertex indices
+    Mesh refined;
+    Mesh* on = &work;
+    auto metric_on = [&](Mesh& m, Mesh::Property_map<Edge, double>& lengths) {
+      auto target = m.add_property_map<Mesh::Vertex_index, double>("v:bench_target", 0.).first;
+      for(const auto& c : ps.cones) target[c.first] = c.second;
+      lengths = m.add_property_map<Edge, double>("e:bench_lengths", 0.).first;
+      return SMDF::compute_cone_metric(m, target, lengths, SMDF::parameters::intrinsic_edge_flips(false));
+    };
+    Mesh::Property_map<Edge, double> lengths;
+    SMDF::Cone_metric_status cm = metric_on(work, lengths);
+    if(!cm.converged) {
+      const SMDF::Delaunay_refinement_status rs = SMDF::conforming_delaunay_refinement(work, refined);
+      if(rs.success) {
+        on = &refined;
+        cm = metric_on(refined, lengths);
+        ++refinements;
+      }
+    }
+    metric_s += seconds_since(t0);
+    if(!cm.converged) { ok = false; failure = "flat cone metric on the input's edges and its refinement (smdf flips): " + cm.message; continue; }
+    Mesh& m = *on;
+    t0 = std::chrono::steady_clock::now();
+    auto adjustment = m.add_property_map<Edge, double>("e:bench_adjustment", 0.).first;
+    auto field = m.add_property_map<Mesh::Face_index, double>("f:bench_field", 0.).first;
+    const SMDF::Trivial_connection_status ts = SMDF::compute_trivial_connection(
+        m, indices, adjustment,
+        SMDF::parameters::edge_length_map(lengths).symmetry_order(4).smoothest_generator_turning_numbers(true).face_angle_map(field));
+    field_s += seconds_since(t0);
+    if(!ts.success) { ok = false; failure = "cross field: " + ts.message; continue; }
+    t0 = std::chrono::steady_clock::now();
+    double area = 0;
+    for(auto f : faces(m)) {
+      const auto h = halfedge(f, m);
+      const double a = lengths[edge(h, m)], bb = lengths[edge(next(h, m), m)], c = lengths[edge(prev(h, m), m)];
+      const double sp = 0.5 * (a + bb + c);
+      area += std::sqrt((std::max)(0., sp * (sp - a) * (sp - bb) * (sp - c)));
+    }
+    auto uv = m.add_property_map<Mesh::Halfedge_index, std::array<double, 2>>("h:bench_uv").first;
+    const SMDF::Integer_grid_map_status gs =
+        SMDF::integer_grid_map(m, field, std::sqrt(area / quads_wanted), uv, SMDF::parameters::edge_length_map(lengths));
+    map_s += seconds_since(t0);
+    seams = gs.arcs;
+    folded = gs.folded_triangles;
+    if(!gs.success) { ok = false; failure = "integer-grid map (smdf places the cones again): " + gs.message; continue; }
+    t0 = std::chrono::steady_clock::now();
+    for(Edge e : edges(m)) {   // the map's lengths, in grid units
+      const auto x = halfedge(e, m);
+      const std::array<double, 2> p = uv[prev(x, m)], q = uv[x];
+      lengths[e] = std::hypot(q[0] - p[0], q[1] - p[1]);
+    }
+    Mesh out;
+    const auto dev = SMDF::develop_flat_metric(m, SMDF::parameters::edge_length_map(lengths));
+    const SMDF::Grid_tessellation_status st = SMDF::tessellate_flat_metric(m, dev, SMDF::SQUARE_GRID, 1., out);
+    tessellation_s += seconds_since(t0);
+    quads = st.faces;
+    if(!st.success || st.inverted_faces > 0) { ok = false; failure = "tessellation: " + st.message; }
+  }
+  mem.report(state);
+  for(auto c : {std::make_pair("placement_s", placement_s), std::make_pair("cone_metric_s", metric_s), std::make_pair("cross_field_s", field_s),
+                std::make_pair("integer_grid_map_s", map_s), std::make_pair("tessellation_s", tessellation_s)})
+    state.counters[c.first] = benchmark::Counter(c.second, benchmark::Counter::kAvgIterations);
+  state.counters["cones"] = double(cones);
+  state.counters["seams"] = double(seams);
+  state.counters["output_quads"] = double(quads);
+  state.counters["folded_triangles"] = double(folded);
+  state.counters["refined"] = benchmark::Counter(double(refinements), benchmark::Counter::kAvgIterations);
+  state.counters["read_back_ok"] = ok ? 1 : 0;
+  if(!ok) state.SetLabel(b->source + " FAILED: " + failure);
+}
+
+BENCHMARK(BM_remesh_automatic)->Apply(smdf_bench::standard_options);
 BENCHMARK(BM_remesh_cube)->Apply(smdf_bench::standard_options);
 BENCHMARK(BM_delaunay_refinement)->Apply(smdf_bench::standard_options);
 BENCHMARK(BM_develop_cube)->Apply(smdf_bench::standard_options);
