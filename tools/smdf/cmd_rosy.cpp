@@ -162,26 +162,8 @@ Json run_rosy(const Args& args)
     std::string holed_failure;
     Json punched = run_rosy_punched(args, file, mesh, N, cones, targets, opt.method, opt.boundary, svg, &holed_failure);
     if(holed_failure.empty()) return punched;
-    // The holed surface's Ricci flow failed (its boundary edges cannot flip). Without a hole: a
-    // cone of index k >= 1 keeps the curvature 2 pi (k - floor k) and its d neighbours take
-    // 2 pi floor(k) / d each, a closed flat cone metric (flips always reach it), on which the
-    // trivial connection gives k at the cone and their own indices to the neighbours.
     out["holed_metric"] = holed_failure;
-    Json spread = Json::array();
-    for(const auto& c : cones) {
-      if(is_border(c.first, mesh) || c.second < 2 * CGAL_PI) continue;
-      const double whole = std::floor(c.second / (2 * CGAL_PI) + 1e-9);
-      std::vector<vertex_descriptor> ring;
-      for(halfedge_descriptor h : halfedges_around_target(halfedge(c.first, mesh), mesh)) ring.push_back(source(h, mesh));
-      targets[c.first] -= 2 * CGAL_PI * whole;
-      for(vertex_descriptor w : ring) targets[w] += 2 * CGAL_PI * whole / double(ring.size());
-      Json o = Json::object();
-      o["vertex"] = c.first.idx();
-      o["index"] = c.second / (2 * CGAL_PI);
-      o["ring"] = ring.size();
-      spread.push_back(std::move(o));
-    }
-    out["spread_to_neighbours"] = std::move(spread);
+    out["spread_to_neighbours"] = spread_to_neighbours(mesh, cones, targets);
     method = TRIVIAL_CONNECTION;
     out["method"] = std::string(method_name(method)) + " (cones of index 1 or more spread to their neighbours)";
   }

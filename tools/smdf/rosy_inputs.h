@@ -103,6 +103,12 @@ Json run_rosy_punched(const Args& args, const std::string& file, Mesh& mesh, int
                       const std::vector<std::pair<vertex_descriptor, double>>& cones, Vertex_double_property targets,
                       Rosy_method method, Boundary_mode mode, const SMDF::Svg_options& svg, std::string* holed_failure = nullptr);
 
+// Where holes fail (run_rosy_punched()'s holed_failure): every interior cone of index k >= 1
+// keeps the curvature 2 pi (k - floor k) in `targets`, its d neighbours gain 2 pi floor(k) / d
+// each; returns [{vertex, index, ring}]. The trivial connection with the cones' own indices then
+// gives the field.
+Json spread_to_neighbours(const Mesh& mesh, const std::vector<std::pair<vertex_descriptor, double>>& cones, Vertex_double_property targets);
+
 // --hatching-svg: streamlines of the face field `vectors` traced on the mesh, drawn in pen and
 // ink; returns {strokes, total_length}.
 Json write_hatching_svg(const Args& args, const std::string& file, const Mesh& mesh, const Face_vector_property& vectors, int N,

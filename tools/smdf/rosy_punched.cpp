@@ -325,4 +325,28 @@ Json run_rosy_punched(const Args& args, const std::string& file, Mesh& mesh, int
   return out;
 }
 
+Json spread_to_neighbours(const Mesh& mesh, const std::vector<std::pair<vertex_descriptor, double>>& cones, Vertex_double_property targets)
+{
+  // The holed surface's Ricci flow failed (its boundary edges cannot flip), or the holes could
+  // not be punched. Without a hole: a cone of index k >= 1 keeps the curvature 2 pi (k - floor k)
+  // and its d neighbours take 2 pi floor(k) / d each, a closed flat cone metric (flips always
+  // reach it), on which the trivial connection gives k at the cone and their own indices to the
+  // neighbours.
+  Json spread = Json::array();
+  for(const auto& c : cones) {
+    if(is_border(c.first, mesh) || c.second < 2 * CGAL_PI) continue;
+    const double whole = std::floor(c.second / (2 * CGAL_PI) + 1e-9);
+    std::vector<vertex_descriptor> ring;
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(c.first, mesh), mesh)) ring.push_back(source(h, mesh));
+    targets[c.first] -= 2 * CGAL_PI * whole;
+    for(vertex_descriptor w : ring) targets[w] += 2 * CGAL_PI * whole / double(ring.size());
+    Json o = Json::object();
+    o["vertex"] = c.first.idx();
+    o["index"] = c.second / (2 * CGAL_PI);
+    o["ring"] = ring.size();
+    spread.push_back(std::move(o));
+  }
+  return spread;
+}
+
 } // namespace smdf_cli
