@@ -197,6 +197,25 @@ double seconds_since(std::chrono::steady_clock::time_point t)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
+// The base mesh Loop-subdivided `steps` times, no decimation (its noise raises the cone count).
+const smdf_bench::Bench_mesh& remesh_mesh_subdivided(int steps)
+{
+  static std::map<int, std::unique_ptr<smdf_bench::Bench_mesh>> cache;
+  auto it = cache.find(steps);
+  if(it == cache.end()) {
+    std::unique_ptr<smdf_bench::Bench_mesh> b(new smdf_bench::Bench_mesh);
+    SMDF::read_triangle_mesh(remesh_base_mesh_path(), b->mesh);
+    if(steps > 0) CGAL::Subdivision_method_3::Loop_subdivision(b->mesh, CGAL::parameters::number_of_iterations(steps));
+    smdf_bench::describe(*b);
+    b->target_faces = b->faces;
+    b->source = smdf_bench::base_name(remesh_base_mesh_path()) + (steps > 0 ? " Loop^" + std::to_string(steps) : std::string());
+    it = cache.emplace(steps, std::move(b)).first;
+  }
+  return *it->second;
+}
+
+void run_automatic_remesh(benchmark::State& state, const smdf_bench::Bench_mesh* b);
+
 } // namespace
 
 static void BM_remesh_automatic(benchmark::State& state)
@@ -207,6 +226,26 @@ static void BM_remesh_automatic(benchmark::State& state)
     state.SkipWithError(e.what());
     return;
   }
+  run_automatic_remesh(state, b);
+}
+
+// The same on the base mesh Loop-subdivided 0, 1, 2 times (the bunny: 28,576, 114,304 and
+// 457,216 faces), without the decimation of the standard sizes.
+static void BM_remesh_automatic_loop(benchmark::State& state)
+{
+  const smdf_bench::Bench_mesh* b = nullptr;
+  try { b = &remesh_mesh_subdivided(int(state.range(0))); } catch(const std::exception& e) {
+    smdf_bench::had_errors() = true;
+    state.SkipWithError(e.what());
+    return;
+  }
+  run_automatic_remesh(state, b);
+}
+
+namespace {
+
+void run_automatic_remesh(benchmark::State& state, const smdf_bench::Bench_mesh* b)
+{
   smdf_bench::set_mesh_counters(state, *b);
   const double quads_wanted = double(num_faces(b->mesh)) / 5;
   double placement_s = 0, metric_s = 0, field_s = 0, map_s = 0, tessellation_s = 0;
@@ -298,7 +337,11 @@ static void BM_remesh_automatic(benchmark::State& state)
   if(!ok) state.SetLabel(b->source + " FAILED: " + failure);
 }
 
+} // namespace
+
 BENCHMARK(BM_remesh_automatic)->Apply(smdf_bench::standard_options);
+BENCHMARK(BM_remesh_automatic_loop)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->Repetitions(3)
+    ->ReportAggregatesOnly(true);
 BENCHMARK(BM_remesh_cube)->Apply(smdf_bench::standard_options);
 BENCHMARK(BM_delaunay_refinement)->Apply(smdf_bench::standard_options);
 BENCHMARK(BM_develop_cube)->Apply(smdf_bench::standard_options);
