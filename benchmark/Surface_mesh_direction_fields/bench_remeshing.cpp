@@ -17,6 +17,7 @@
 #include <CGAL/Surface_mesh_direction_fields/flat_development.h>
 #include <CGAL/Surface_mesh_direction_fields/grid_tessellation.h>
 #include <CGAL/Surface_mesh_direction_fields/integer_grid_map.h>
+#include <CGAL/Surface_mesh_direction_fields/intrinsic_triangle.h>
 #include <CGAL/Surface_mesh_direction_fields/remeshing_cones.h>
 #include <CGAL/Surface_mesh_direction_fields/topology.h>
 
@@ -300,9 +301,7 @@ void run_automatic_remesh(benchmark::State& state, const smdf_bench::Bench_mesh*
     double area = 0;
     for(auto f : faces(m)) {
       const auto h = halfedge(f, m);
-      const double a = lengths[edge(h, m)], bb = lengths[edge(next(h, m), m)], c = lengths[edge(prev(h, m), m)];
-      const double sp = 0.5 * (a + bb + c);
-      area += std::sqrt((std::max)(0., sp * (sp - a) * (sp - bb) * (sp - c)));
+      area += SMDF::triangle_area(lengths[edge(h, m)], lengths[edge(next(h, m), m)], lengths[edge(prev(h, m), m)]);
     }
     auto uv = m.add_property_map<Mesh::Halfedge_index, std::array<double, 2>>("h:bench_uv").first;
     const SMDF::Integer_grid_map_status gs =
