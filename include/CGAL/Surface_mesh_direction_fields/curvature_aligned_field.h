@@ -114,15 +114,15 @@ std::vector<std::array<double, 2>> face_shape_anisotropy(const Mesh_arrays<TM>& 
 /// Its singularities, read back with principal matching, are an automatic prescription for
 /// Lai et al.'s pipeline (see automatic_singularities()).
 ///
-/// \param tm the mesh (its embedding: curvature needs the vertex points)
-/// \param N the symmetry order
-/// \param angles receives the field's angle per face, counterclockwise from `halfedge(f)`
 /// On an open mesh, `follow_boundary(true)` adds \f$\beta \sum_{f \ni b} \frac{A_f}{\bar A}|z_f - t_f|^2\f$
 /// over the faces with a border edge \f$b\f$, \f$t_f\f$ the edge's direction (turned by \f$\pi/2\f$ with
 /// `orthogonal_to_boundary(true)`) to the power \f$N\f$, with \f$\beta = 10^3\f$, kept in every
 /// smoothing step: the field then follows the boundary, and its interior singularities are those
 /// of a field parallel (orthogonal) to it (for \f$N = 1\f$ they sum to \f$\chi\f$).
 ///
+/// \param tm the mesh (its embedding: curvature needs the vertex points)
+/// \param N the symmetry order
+/// \param angles receives the field's angle per face, counterclockwise from `halfedge(f)`
 /// \param np `alignment_weight` (\f$\lambda\f$, default 0.01: smaller is smoother, with fewer
 ///   singularities), `smoothing_steps` (default 4), `follow_boundary` (`bool`, default `false`),
 ///   `orthogonal_to_boundary` (`bool`, default `false`), `vertex_point_map` and the index maps
