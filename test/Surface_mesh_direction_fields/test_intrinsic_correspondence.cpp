@@ -488,6 +488,12 @@ int main()
       run_mesh(mesh, e.file, 1, rng, false);
       run_mesh(mesh, e.file, 6, rng, false);
     });
+    // genus 133 with one cone in eight vertices: Penner coordinates over seven orders of magnitude,
+    // flips of quadrilaterals whose fourth corner is 1e4 times farther than the others
+    Surface_mesh cheese;
+    bool have_cheese = true;
+    try { SMDF::read_triangle_mesh(dir + "/meshes/cheese_cgal.off", cheese); } catch(const std::exception&) { have_cheese = false; }
+    if(have_cheese) run_mesh(cheese, "cheese_cgal.off", 6, rng, true);
   }
   std::cout << runs << " metrics with flips, " << total_flips << " edges not in the input, " << total_crossings
             << " crossings, " << total_pieces << " pieces; largest distortion of a transferred cross field "

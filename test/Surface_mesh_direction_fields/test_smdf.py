@@ -1216,6 +1216,55 @@ def test_shared_rosy(smdf, c, meshes, tmp):
                     "rosy genus 2 (%s): one singularity of index -2, read back (%r)" % (method, r and r.get("found")))
 
 
+def test_shared_rosy_dense_cones(smdf, c, meshes, tmp):
+    """smdf rosy where the metric is far from the input's (Penner coordinates spanning seven
+    orders of magnitude): the genus-133 cheese with one cone in sixteen vertices, and the rotor
+    with a cone of index 2 spread to its neighbours. The correspondence must survive flips of
+    quadrilaterals whose fourth corner is 1e4 times farther than the others, the transfer must
+    keep the full turns of a connection that turns by nearly pi across an edge, and rotation
+    compensation, whose loops of vertices the cones cut apart, gives way to the trivial
+    connection with the same least compensation. Every run reads back exactly on the input."""
+    rng = random.Random(133)
+    runs = []
+    path = os.path.join(meshes, "cheese_cgal.off")
+    if os.path.isfile(path) and not too_large(meshes, "cheese_cgal.off"):
+        verts, faces = read_off(path)
+        adjacent = {}
+        for f in faces:
+            for k in range(3):
+                adjacent.setdefault(f[k], set()).add(f[(k + 1) % 3])
+        for N, method in ((2, "trivial-connection"), (3, "rotation-compensation"), (6, "trivial-connection")):
+            cones = {}
+            for v in rng.sample(range(len(verts)), 264 * N):   # chi = -264: 264 N cones of -1/N
+                cones[v] = -1
+            a = rng.randrange(len(verts))
+            while a in cones or any(b in cones for b in adjacent[a]):
+                a = rng.randrange(len(verts))
+            cones[a], cones[sorted(adjacent[a])[0]] = 1, -1
+            runs.append((path, N, method, cones))
+    path = os.path.join(meshes, "rotor_cgal.off")
+    if os.path.isfile(path) and not too_large(meshes, "rotor_cgal.off"):
+        runs.append((path, 2, "rotation-compensation", {73: -1, 108: -1, 112: -1, 193: 4, 311: 1, 409: -1, 452: -1}))
+    for path, N, method, cones in runs:
+        name = os.path.basename(path)
+        files = {k: os.path.join(tmp, "dense_%s.txt" % k) for k in ("face", "matching", "vertex")}
+        spec = ",".join("%d:%d/%d" % (v, k, N) for v, k in sorted(cones.items()))
+        r = smdf.json(["rosy", path, "--cone-indices", spec, "--N", str(N), "--method", method, "--face-field-out", files["face"],
+                       "--matching-out", files["matching"], "--field-out", files["vertex"]],
+                      "rosy %s N=%d %s with %d cones" % (name, N, method, len(cones)))
+        if not r:
+            continue
+        want = [{"vertex": v, "index": k / N} for v, k in sorted(cones.items())]
+        got = r.get("input_read_back", {}).get("found", r.get("found"))
+        c.check(r.get("success") is True and got == want,
+                "rosy %s N=%d (%s): the input face field reads back the %d cones (%d differ)"
+                % (name, N, r.get("method"), len(cones), -1 if got is None else len([x for x in got if x not in want]) + len([x for x in want if x not in got])))
+        back = smdf.json(["singularities", path, "--field", files["face"], "--N", str(N), "--matching", files["matching"]],
+                         "singularities of the %s field" % name)
+        c.check(back is not None and back.get("singularities") == want,
+                "rosy %s N=%d: smdf singularities reads the written face field and matching as the cones" % (name, N))
+
+
 def test_shared_rosy_flips(smdf, c, meshes, tmp):
     """smdf rosy where the metric needs intrinsic flips (random cones of +-pi/2, an adjacent pair
     among them, on closed shared meshes of genus 0 to 9): every output on the input mesh, the
@@ -1972,6 +2021,7 @@ def test_shared(smdf, c, shared):
     with tempfile.TemporaryDirectory(prefix="smdf_rosy_") as tmp:
         test_shared_rosy(smdf, c, meshes, tmp)
         test_shared_rosy_flips(smdf, c, meshes, tmp)
+        test_shared_rosy_dense_cones(smdf, c, meshes, tmp)
 
 
 def test_shared_remesh_refinement(smdf, c, meshes, tmp):

@@ -220,7 +220,8 @@ Json run_rosy(const Args& args)
   for(const auto& c : cones) if(!is_border(c.first, mesh)) cone_vertices.push_back(c.first);
 
   // 4. the holonomy group and its tests
-  const auto basis = on_file(file, [&] { return SMDF::homotopy_basis(*carrier, cone_vertices); });
+  // the carrier's own lengths: an intrinsic triangulation may join a vertex to itself (zero from the points)
+  const auto basis = on_file(file, [&] { return SMDF::homotopy_basis(*carrier, cone_vertices, SMDF::parameters::edge_length_map(flat)); });
   const SMDF::Holonomy_group group = SMDF::holonomy_group(*carrier, basis, SMDF::parameters::edge_length_map(flat));
   const SMDF::Rosy_compatibility rc = SMDF::parallel_rosy_compatibility(group, N);
   if(args.has("holonomy")) {
@@ -273,6 +274,32 @@ Json run_rosy(const Args& args)
   std::vector<double> prescribed_turning;   // trivial connection: per generator
   if(failure.empty()) {
     const auto np = SMDF::parameters::edge_length_map(flat);
+    auto trivial_connection = [&](bool least_compensation) {
+      SMDF::Trivial_connection<Mesh> tc = on_file(file, [&] {
+        return SMDF::Trivial_connection<Mesh>(*carrier, SMDF::parameters::symmetry_order(N).edge_length_map(flat));
+      });
+      for(const auto& c : cones)
+        if(!is_border(c.first, mesh)) tc.set_singularity(c.first, std::round(c.second / (2 * CGAL_PI) * N) / N);
+      for(const auto& g : opt.turning) on_file(file, [&] { tc.set_generator_turning_number(g.first, g.second); return 0; });
+      if(least_compensation)   // every generator turns by the multiple of 2 pi / N nearest its holonomy
+        for(std::size_t g = 0; g < tc.generators().size(); ++g)
+          tc.set_generator_turning_number(g, std::round(tc.generator_levi_civita_holonomy(g) / (2 * CGAL_PI) * N) / N);
+      const SMDF::Trivial_connection_status ts = tc.solve();
+      Json t = Json::object();
+      t["energy"] = ts.energy;
+      t["max_rotation"] = ts.max_rotation;
+      t["max_holonomy_error"] = ts.max_holonomy_error;
+      t["scaled_residual"] = ts.scaled_residual;
+      out["trivial_connection"] = std::move(t);
+      if(!ts.success) failure = "trivial connection solve failed: " + ts.message;
+      else {
+        tc.field_angles(angles);
+        tc.field_matching(angles, matching);
+        have_matching = true;
+        for(std::size_t g = 0; g < tc.generators().size(); ++g) prescribed_turning.push_back(tc.generator_turning_number(g));
+      }
+      timings["compensation_s"] = clock.lap();
+    };
     if(method == ROTATION_COMPENSATION) {
       auto compensate = [&](const std::vector<double>& turning) {
         return on_file(file, [&] {
@@ -307,28 +334,19 @@ Json run_rosy(const Args& args)
       out["rotation_compensation"] = std::move(c);
       if(!cs.success) failure = cs.message;
       timings["compensation_s"] = clock.lap();
-    } else if(method == TRIVIAL_CONNECTION) {
-      SMDF::Trivial_connection<Mesh> tc = on_file(file, [&] {
-        return SMDF::Trivial_connection<Mesh>(*carrier, SMDF::parameters::symmetry_order(N).edge_length_map(flat));
-      });
-      for(const auto& c : cones)
-        if(!is_border(c.first, mesh)) tc.set_singularity(c.first, std::round(c.second / (2 * CGAL_PI) * N) / N);
-      for(const auto& g : opt.turning) on_file(file, [&] { tc.set_generator_turning_number(g.first, g.second); return 0; });
-      const SMDF::Trivial_connection_status ts = tc.solve();
-      Json t = Json::object();
-      t["energy"] = ts.energy;
-      t["max_rotation"] = ts.max_rotation;
-      t["max_holonomy_error"] = ts.max_holonomy_error;
-      t["scaled_residual"] = ts.scaled_residual;
-      out["trivial_connection"] = std::move(t);
-      if(!ts.success) failure = "trivial connection solve failed: " + ts.message;
-      else {
-        tc.field_angles(angles);
-        tc.field_matching(angles, matching);
-        have_matching = true;
-        for(std::size_t g = 0; g < tc.generators().size(); ++g) prescribed_turning.push_back(tc.generator_turning_number(g));
+      if(!cs.success && opt.turning.empty() && !editing) {
+        // cones that cut the vertex graph apart leave no loops of vertices around them: the
+        // trivial connection (on dual cycles, which pass between any cones) with the same least
+        // compensation gives the field rotation compensation was asked for
+        out["rotation_compensation_failure"] = cs.message;
+        failure.clear();
+        method = TRIVIAL_CONNECTION;
+        out["method"] = std::string(method_name(method)) + " (rotation compensation failed: each handle loop turns by the multiple "
+                                                           "of 2 pi / N nearest its holonomy, as rotation compensation would)";
+        trivial_connection(true);
       }
-      timings["compensation_s"] = clock.lap();
+    } else if(method == TRIVIAL_CONNECTION) {
+      trivial_connection(false);
     } else if(method == PARALLEL) {
       const SMDF::Parallel_rosy_status ps = SMDF::parallel_rosy_field(*carrier, N, angles, np);
       if(!rc.compatible)

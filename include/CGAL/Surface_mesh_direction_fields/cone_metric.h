@@ -329,7 +329,7 @@ Cone_metric_status compute_cone_metric(const TriangleMesh& tm,
   if(!st.triangulation_changed)
     internal::put_input_edge_lengths(m, len, output_lengths);
   else
-    internal::output_intrinsic_triangulation(m, flow, u, len, output_lengths, st.intrinsic_triangulation,
+    internal::output_intrinsic_triangulation(m, flow, u, len, target, tol, output_lengths, st.intrinsic_triangulation,
                                              st.correspondence_message, with_subdivision);
   internal::put_conformal_factors(m, np, [&u](std::size_t v) { return u[v]; });
   internal::put_flow_outcome(r, st);

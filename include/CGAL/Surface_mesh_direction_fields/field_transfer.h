@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -169,6 +170,19 @@ Field_transfer_status transfer_face_field_to_input(const TriangleMesh& tm, const
     return d.input_angle(b, intrinsic_angles[std::size_t(pieces[i].intrinsic_face)] + J * period);
   };
   const std::array<double, 3> centroid = {{1. / 3, 1. / 3, 1. / 3}};
+  // How much branch J turns from input point x to y inside piece i: a projective map of a strong
+  // distortion turns a constant direction by any amount across a piece, so the segment is halved
+  // until every part turns by less than a radian (wrapped differences alone lose full turns).
+  std::function<double(std::size_t, const internal::Piece_directions&, const std::array<double, 3>&,
+                       const std::array<double, 3>&, int, int)>
+      turn_within = [&](std::size_t i, const internal::Piece_directions& d, const std::array<double, 3>& x,
+                        const std::array<double, 3>& y, int J, int depth) -> double {
+    const double step = internal::wrap_angle(angle_at(i, d, y, J) - angle_at(i, d, x, J));
+    if(std::abs(step) < 1 || depth == 0) return step;
+    std::array<double, 3> mid;
+    for(std::size_t k = 0; k < 3; ++k) mid[k] = 0.5 * (x[k] + y[k]);
+    return turn_within(i, d, x, mid, J, depth - 1) + turn_within(i, d, mid, y, J, depth - 1);
+  };
 
   // A face that is one piece in both triangulations (no intrinsic edge crosses it and it is an
   // intrinsic face too) takes the affine map between the two triangles, as the package maps a
@@ -376,12 +390,18 @@ Field_transfer_status transfer_face_field_to_input(const TriangleMesh& tm, const
         y[std::size_t(i)] = 0.5 * (P.input_corners[std::size_t(s)][std::size_t(i)] + P.input_corners[(std::size_t(s) + 1) % ns][std::size_t(i)]);
       const internal::Piece_directions dA = directions(A), dB = directions(B);
       const double at_y = angle_at(A, dA, y, J);
-      a += internal::wrap_angle(at_y - angle_at(A, dA, x, J));
-      // across an intrinsic edge: the branch changes by its matching
+      a += turn_within(A, dA, x, y, J, 24);
+      // across an intrinsic edge: the branch changes by its matching, and the field turns by the
+      // rotation the intrinsic read-back counts (wrapped, plus the matching's periods)
       const int hg = P.intrinsic_sides[std::size_t(s)];
+      int J_next = J;
+      double intrinsic_rotation = 0;
       if(hg >= 0) {
         const int k = intrinsic_matching[std::size_t(hg >> 1)];
-        J += (hg & 1) ? k : -k;   // k is for halfedge 2e, from face(2e + 1) into face(2e)
+        J_next += (hg & 1) ? k : -k;   // k is for halfedge 2e, from face(2e + 1) into face(2e)
+        const double tA = intrinsic_angles[std::size_t(P.intrinsic_face)], tB = intrinsic_angles[std::size_t(pieces[B].intrinsic_face)];
+        intrinsic_rotation = (hg & 1) ? internal::wrap_angle(tB - tA - intrinsic_transport(hg ^ 1)) + period * k
+                                      : -(internal::wrap_angle(tA - tB - intrinsic_transport(hg)) + period * k);
       }
       // across the input edge: the point in fl's coordinates, the frame changes
       std::array<double, 3> y2 = y;
@@ -399,12 +419,27 @@ Field_transfer_status transfer_face_field_to_input(const TriangleMesh& tm, const
         shift = inc;
       }
       x = y2;
-      a += shift + internal::wrap_angle(angle_at(B, dB, y2, J) - (at_y + shift));
+      if(hg < 0) {
+        a += shift + internal::wrap_angle(angle_at(B, dB, y2, J) - (at_y + shift));
+        continue;
+      }
+      // A's direction carried into B's intrinsic frame: both maps send it alike up to less than a
+      // half turn (they agree on the shared side), then B's map turns it by the field's rotation.
+      // An orientation-preserving linear map turns a rotation in [0, pi) by one in [0, pi) and a
+      // half turn by a half turn: the intrinsic rotation's half turns are kept, not wrapped (a
+      // connection that turns by nearly pi across an edge lost a full turn to the wrap).
+      const double carried = dB.input_angle(y2, intrinsic_angles[std::size_t(P.intrinsic_face)] + J * period + intrinsic_transport(hg ^ 1));
+      a += shift + internal::wrap_angle(carried - (at_y + shift));
+      const double half_turns = std::floor(intrinsic_rotation / CGAL_PI);
+      double rest = angle_at(B, dB, y2, J_next) - carried - half_turns * CGAL_PI;
+      rest -= 2 * CGAL_PI * std::floor((rest + 0.5 * CGAL_PI) / (2 * CGAL_PI));   // in [-pi/2, 3pi/2): [0, pi) up to rounding
+      a += half_turns * CGAL_PI + rest;
+      J = J_next;
     }
     const std::size_t last = local[path.back()];
     const internal::Piece_directions dL = directions(last);
     const std::array<double, 3>& xl = xrep[std::size_t(fl)];
-    a += internal::wrap_angle(angle_at(last, dL, xl, J) - angle_at(last, dL, x, J));
+    a += turn_within(last, dL, x, xl, J, 24);
     // a: the branch J at fl's point; the evenly spaced field there has beta_l + J period
     const double corr = internal::wrap_angle(angle_at(last, dL, xl, J) - beta[std::size_t(fl)] - J * period);
     const double rotation = a - corr - beta[std::size_t(fr)] - inc;

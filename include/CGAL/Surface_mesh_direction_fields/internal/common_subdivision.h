@@ -41,12 +41,14 @@ namespace internal {
 // Where an input edge crosses an intrinsic edge e: t along the input halfedge 2 * input_edge
 // from its source, s along the intrinsic halfedge 2e from its source (barycentric coordinates
 // of the Penner decoration, u = 0), dir = +1 if the input edge, going by increasing t, passes
-// from face(2e + 1) into face(2e), -1 otherwise.
+// from face(2e + 1) into face(2e), -1 otherwise. rest_t = 1 - t and rest_s = 1 - s are kept
+// apart: a crossing next to a vertex loses them to rounding when computed from t and s.
 struct Edge_crossing
 {
   int input_edge;
   double t, s;
   int dir;
+  double rest_t, rest_s;
 };
 
 // A failure of the correspondence's own consistency checks (caught by compute_cone_metric(),
@@ -131,7 +133,7 @@ public:
       if(++flips > budget) throw internal_correspondence_error("Delaunay flips do not terminate");
       const int h = 2 * e, o = h + 1;
       const int h1 = tri.next[h], h2 = tri.next[h1], o1 = tri.next[o], o2 = tri.next[o1];
-      if(track) flip(e);
+      if(track) flip(e, {{half_exp[tri.target[o]], half_exp[tri.target[h]], half_exp[tri.target[h1]], half_exp[tri.target[o1]]}});
       else { l0[e] = tri.ptolemy(e, l0); tri.flip(e); coincident[e] = -1; }
       len[e] = l0[e] * half_exp[tri.target[h]] * half_exp[tri.target[o]];
       for(int g : {h1, h2, o1, o2})
@@ -140,12 +142,13 @@ public:
     return len;
   }
 
-  // Makes the flips of `log` in order (a flow's flip_log()), carrying the crossings.
+  // Makes the flips of `log` in order (a flow's flip_log()), carrying the crossings (computed at
+  // u = 0: the flow's factors at each flip are not kept).
   void replay(const std::vector<int>& log)
   {
     for(int e : log) {
       if(!tri.is_flippable(e)) throw internal_correspondence_error("a logged flip of an edge that cannot flip");
-      flip(e);
+      flip(e, {{1., 1., 1., 1.}});
       ++flips;
     }
   }
@@ -191,7 +194,7 @@ public:
     const std::vector<Edge_crossing>& list = cross[g >> 1];
     if(!(g & 1)) return list[std::size_t(pos)];
     Edge_crossing c = list[list.size() - 1 - std::size_t(pos)];
-    c.s = 1 - c.s;
+    std::swap(c.s, c.rest_s);
     c.dir = -c.dir;
     return c;
   }
@@ -199,18 +202,25 @@ public:
 private:
   const Mesh_arrays<TM>* m_;
 
-  // A point of the quadrilateral's boundary in the frame (p_a, p_b, p_c) with p_d = X p_a + Y
-  // p_b + Z p_c: its representative r, and (for a crossing) the norm ratio kappa between r and
-  // the input edge's representative (1 - t) p_x + t p_y of the same point.
+  // A point of the quadrilateral's boundary: its representative r = sum_k r_k p_k over the
+  // corners k = a, b, c, d (at most two nonzero: the ends of its side), and (for a crossing) the
+  // norm ratio kappa between r and the input edge's representative (1 - t) p_x + t p_y of the
+  // same point. Kept on the four corners, not reduced to the frame (p_a, p_b, p_c): with p_d far
+  // from the others the frame's coefficients reach 1e8 and a point near d lost its side.
   struct Frame_point
   {
-    std::array<double, 3> r;
-    double t, kappa;
+    std::array<double, 4> r;
+    double t, rest_t, kappa;
     int input_edge;
     int dir;   // +1 if the input edge enters the quadrilateral here (by increasing t)
   };
 
-  void flip(int e)
+  // Flips e, carrying the crossings over; half_exp: e^{u/2} at the corners a, b, c, d (below) in
+  // the metric where the flip was decided. The crossings are computed in the frame of that
+  // metric's vectors e^{u} p (the Euclidean quadrilateral that failed the Delaunay test): at
+  // u = 0 the Penner coordinates of a metric far from the input's span seven orders of
+  // magnitude, and so did the frame's coefficients.
+  void flip(int e, const std::array<double, 4>& half_exp)
   {
     const int h = 2 * e, o = h + 1;
     const int h1 = tri.next[h], h2 = tri.next[h1], o1 = tri.next[o], o2 = tri.next[o1];
@@ -220,13 +230,14 @@ private:
     const double cd = tri.ptolemy(e, l0);
     if(!std::isfinite(cd) || !(cd > 0)) throw internal_correspondence_error("Ptolemy flip out of range");
     // frame: p_d from <p_d, p_x> = -l_xd^2 / 2 (x = a, b, c), Cramer on the Gram matrix of a, b, c
-    const double AB = ab * ab, BC = bc * bc, CA = ca * ca;
-    const double r0 = ad * ad, r1 = db * db, r2 = cd * cd;
+    // squared lengths of the scaled vectors q_x = e^{u_x} p_x: <q_x, q_y> = -(l_xy e^{(u_x + u_y) / 2})^2 / 2
+    const std::array<double, 4> w = {{half_exp[0] * half_exp[0], half_exp[1] * half_exp[1], half_exp[2] * half_exp[2], half_exp[3] * half_exp[3]}};
+    const double AB = ab * ab * w[0] * w[1], BC = bc * bc * w[1] * w[2], CA = ca * ca * w[2] * w[0];
+    const double r0 = ad * ad * w[0] * w[3], r1 = db * db * w[3] * w[1], r2 = cd * cd * w[2] * w[3];
     const double det = 2 * AB * BC * CA;
     const double X = (r0 * (-BC * BC) - AB * (r1 * 0 - BC * r2) + CA * (r1 * BC - 0 * r2)) / det;
     const double Y = (0 * (r1 * 0 - BC * r2) - r0 * (AB * 0 - BC * CA) + CA * (AB * r2 - r1 * CA)) / det;
     const double Z = (0 * (0 * r2 - r1 * BC) - AB * (AB * r2 - r1 * CA) + r0 * (AB * BC - 0 * CA)) / det;
-    const std::array<std::array<double, 3>, 4> P = {{{{1, 0, 0}}, {{0, 1, 0}}, {{0, 0, 1}}, {{X, Y, Z}}}};
     const std::array<int, 4> vid = {{va, vb, vc, vd}};
 
     // the arcs of the two triangles (abc: h, h1, h2; bad: o, o1, o2), glued across ab
@@ -299,21 +310,30 @@ private:
       else if(A.slot < 0) input_edge = crossing_along(A.g, A.pos).input_edge;
       else if(B.slot < 0) input_edge = crossing_along(B.g, B.pos).input_edge;
       else input_edge = int(coincident[e]);
-      const Frame_point fa = frame_point(A, P, vid, input_edge, h1, h2, o1, o2);
-      const Frame_point fb = frame_point(B, P, vid, input_edge, h1, h2, o1, o2);
-      // the side of span(p_c, p_d): det(p_c, p_d, r) in the frame
-      auto side = [&](const std::array<double, 3>& r) { return X * r[1] - Y * r[0]; };
-      const double alpha = std::abs(side(fb.r)), beta = std::abs(side(fa.r));
-      std::array<double, 3> Q;
-      for(int i = 0; i < 3; ++i) Q[i] = alpha * fa.r[i] + beta * fb.r[i];
-      const double delta = (X * Q[0] + Y * Q[1]) / (X * X + Y * Y), gamma = Q[2] - delta * Z;
+      const Frame_point fa = frame_point(A, vid, input_edge, h1, h2, o1, o2);
+      const Frame_point fb = frame_point(B, vid, input_edge, h1, h2, o1, o2);
+      // the points on the scaled corners: r = sum_k r_k p_k = sum_k (r_k / w_k) q_k
+      std::array<double, 4> ra, rb;
+      for(std::size_t i = 0; i < 4; ++i) { ra[i] = fa.r[i] / w[i]; rb[i] = fb.r[i] / w[i]; }
+      // the side of span(q_c, q_d): det(q_c, q_d, r) in the frame (q_a, q_b, q_c), where q_d =
+      // X q_a + Y q_b + Z q_c; q_c and q_d have none, so a side's point has a single term
+      auto side = [&](const std::array<double, 4>& r) { return X * r[1] - Y * r[0]; };
+      const double alpha = std::abs(side(rb)), beta = std::abs(side(ra));
+      std::array<double, 4> Q;
+      for(std::size_t i = 0; i < 4; ++i) Q[i] = alpha * ra[i] + beta * rb[i];
+      // Q = gamma q_c + delta q_d: its (q_a, q_b) part is (delta - Q_d) (X, Y); back on the p's,
+      // the coefficients of p_c and p_d are gamma w_c and delta w_d
+      const double ab_part = (X * Q[0] + Y * Q[1]) / (X * X + Y * Y);
+      const double delta = (Q[3] + ab_part) * w[3], gamma = (Q[2] - Z * ab_part) * w[2];
       if(!(gamma > 0) || !(delta > 0) || !(alpha + beta > 0))
         throw internal_correspondence_error("an input edge misses the flipped edge");
       Edge_crossing c;
       c.input_edge = input_edge;
       c.s = gamma / (gamma + delta);   // along d -> c, the new halfedge 2e
+      c.rest_s = delta / (gamma + delta);
       const double wa = alpha * fa.kappa, wb = beta * fb.kappa;
       c.t = (wa * fa.t + wb * fb.t) / (wa + wb);
+      c.rest_t = (wa * fa.rest_t + wb * fb.rest_t) / (wa + wb);
       // from the a side (left of d -> c) to the b side: from face(2e) to face(2e + 1)
       c.dir = fa.dir > 0 ? -1 : +1;
       if(fb.dir != -fa.dir) throw internal_correspondence_error("inconsistent crossing directions");
@@ -332,16 +352,17 @@ private:
   }
 
   template <typename QuadEnd>
-  Frame_point frame_point(const QuadEnd& x, const std::array<std::array<double, 3>, 4>& P,
-                          const std::array<int, 4>& vid, int input_edge, int h1, int h2, int o1, int o2) const
+  Frame_point frame_point(const QuadEnd& x, const std::array<int, 4>& vid, int input_edge, int h1, int h2, int o1, int o2) const
   {
     Frame_point f;
     f.input_edge = input_edge;
     const double L = m_->length[std::size_t(input_edge)];
     if(x.slot >= 0) {
-      f.r = P[std::size_t(x.slot)];
+      f.r = {{0, 0, 0, 0}};
+      f.r[std::size_t(x.slot)] = 1;
       const int src = m_->target[std::size_t(2 * input_edge + 1)];
       f.t = vid[std::size_t(x.slot)] == src ? 0. : 1.;
+      f.rest_t = 1 - f.t;
       f.kappa = 1;
       f.dir = f.t == 0 ? +1 : -1;   // leaves the vertex into the quadrilateral by increasing t
       return f;
@@ -355,10 +376,13 @@ private:
     else if(x.g == o1) { sx = 0; sy = 3; }
     else { sx = 3; sy = 1; }
     (void)o2;
-    for(int i = 0; i < 3; ++i) f.r[std::size_t(i)] = (1 - c.s) * P[std::size_t(sx)][std::size_t(i)] + c.s * P[std::size_t(sy)][std::size_t(i)];
+    f.r = {{0, 0, 0, 0}};
+    f.r[std::size_t(sx)] = c.rest_s;
+    f.r[std::size_t(sy)] = c.s;
     f.t = c.t;
-    const double rho_r = std::sqrt(c.s * (1 - c.s)) * l0[std::size_t(x.g >> 1)];
-    const double rho_x = std::sqrt(c.t * (1 - c.t)) * L;
+    f.rest_t = c.rest_t;
+    const double rho_r = std::sqrt(c.s * c.rest_s) * l0[std::size_t(x.g >> 1)];
+    const double rho_x = std::sqrt(c.t * c.rest_t) * L;
     f.kappa = rho_r / rho_x;
     if(!std::isfinite(f.kappa) || !(f.kappa > 0)) throw internal_correspondence_error("a crossing at a vertex");
     f.dir = c.dir;   // seen from the quadrilateral's boundary halfedge, whose left is inside
@@ -473,17 +497,17 @@ void build_common_subdivision(const Mesh_arrays<TM>& m, const Tracked_delaunay_f
         } else {
           const int i = side_of(q2);
           const Edge_crossing x = crossing_at(q2);
-          c[std::size_t(i)] = 1 - x.s;
+          c[std::size_t(i)] = x.rest_s;
           c[std::size_t((i + 1) % 3)] = x.s;
-          rg = std::sqrt(x.s * (1 - x.s)) * tf.l0[std::size_t(gh[std::size_t(i)] >> 1)];
+          rg = std::sqrt(x.s * x.rest_s) * tf.l0[std::size_t(gh[std::size_t(i)] >> 1)];
           const int E = x.input_edge;
           int j = 0;
           while(j < 3 && (fh[std::size_t(j)] >> 1) != E) ++j;
           if(j == 3) throw internal_correspondence_error("a piece's input edge is no edge of its input face");
           const bool same = fh[std::size_t(j)] == 2 * E;
-          b[std::size_t(j)] = same ? 1 - x.t : x.t;
-          b[std::size_t((j + 1) % 3)] = same ? x.t : 1 - x.t;
-          rf = std::sqrt(x.t * (1 - x.t)) * m.length[std::size_t(E)];
+          b[std::size_t(j)] = same ? x.rest_t : x.t;
+          b[std::size_t((j + 1) % 3)] = same ? x.t : x.rest_t;
+          rf = std::sqrt(x.t * x.rest_t) * m.length[std::size_t(E)];
         }
         if(is_corner(q2)) piece.corner_ids.push_back(corner_vertex(q2));
         else {
