@@ -48,8 +48,15 @@ struct Rotation_compensation_status
   /// cotan-weighted divergence at a vertex (co-closedness)
   double max_harmonic_residual = 0;
   /// largest distance, over all edges, of the field's rotation relative to transport plus
-  /// \f$\omega\f$ to a multiple of \f$2\pi/N\f$
+  /// \f$\omega\f$ to a multiple of \f$2\pi/N\f$ (edges of enclosed vertices apart)
   double max_inconsistency = 0;
+  /// vertices that no path of vertices reaches around the cones (each one's neighbours are
+  /// cones or such vertices): they take the field of one of their faces, carried by Levi-Civita
+  /// transport from faces that have it
+  std::size_t enclosed_vertices = 0;
+  /// the same distance on the edges of enclosed vertices: the rotation of \f$\omega\f$ that the
+  /// transport into their faces leaves out (small; the field's singularities are still the cones)
+  double max_enclosed_inconsistency = 0;
 };
 
 
@@ -131,11 +138,41 @@ bool cut_jump_form(const Mesh_arrays<TM>& m, const std::vector<double>& w, std::
 }
 
 
+// A vertex of the largest set of vertices that paths of vertices other than cones connect (the
+// rest are islands the cones enclose), or the number of vertices if every vertex is a cone.
+template <typename TM>
+std::size_t vertex_off_the_islands(const Mesh_arrays<TM>& m, const std::vector<char>& cone)
+{
+  const std::size_t nv = m.number_of_vertices();
+  std::vector<char> seen(nv, 0);
+  std::size_t best = nv, best_size = 0;
+  std::vector<int> queue;
+  for(std::size_t r = 0; r < nv; ++r) {
+    if(seen[r] || cone[r] || m.is_isolated(int(r))) continue;
+    queue.assign(1, int(r));
+    seen[r] = 1;
+    for(std::size_t qi = 0; qi < queue.size(); ++qi) {
+      const int h0 = m.vertex_out[std::size_t(queue[qi])];
+      int h = h0;
+      do {
+        const int w = m.target[std::size_t(h)];
+        if(!seen[std::size_t(w)] && !cone[std::size_t(w)]) { seen[std::size_t(w)] = 1; queue.push_back(w); }
+        h = m.ccw_out(h);
+      } while(h != h0);
+    }
+    if(queue.size() > best_size) { best_size = queue.size(); best = r; }
+  }
+  return best;
+}
+
 // k primal loops of the surface minus the cone vertices whose homology classes are independent
 // (their periods against the k closed forms omega, a basis of the harmonic ones, are linearly
 // independent): the fundamental cycles of a spanning tree of the vertices that are no cones,
 // chosen greedily by the part of their period vector that the chosen ones do not span (a cycle
-// around cones only, or bounding, has periods 0). False if the cones cut the surface apart.
+// around cones only, or bounding, has periods 0). Vertices the cones enclose (islands: every
+// path to the root passes a cone) are left out: a loop through one would pass between two
+// adjacent cones, which no loop of vertices can; the loops of the rest span the handles unless
+// the cones wall one off (then false, as when no vertex is left).
 template <typename TM>
 bool loops_avoiding_cones(const Mesh_arrays<TM>& m, const std::vector<char>& cone,
                           const std::vector<std::vector<double>>& omega, std::vector<std::vector<int>>& primal,
@@ -145,8 +182,7 @@ bool loops_avoiding_cones(const Mesh_arrays<TM>& m, const std::vector<char>& con
   auto form_at = [&](std::size_t j, int h) { return (h & 1) ? -omega[j][std::size_t(h >> 1)] : omega[j][std::size_t(h >> 1)]; };
   std::vector<int> parent(nv, -2);   // halfedge from the parent, -1 at the root
   std::vector<double> phi(nv * k, 0.);
-  std::size_t root = 0;
-  while(root < nv && (cone[root] || m.is_isolated(int(root)))) ++root;
+  const std::size_t root = vertex_off_the_islands(m, cone);
   if(root == nv) { message = "every vertex is a cone"; return false; }
   parent[root] = -1;
   std::vector<int> queue(1, int(root));
@@ -164,11 +200,6 @@ bool loops_avoiding_cones(const Mesh_arrays<TM>& m, const std::vector<char>& con
       h = m.ccw_out(h);
     } while(h != h0);
   }
-  for(std::size_t v = 0; v < nv; ++v)
-    if(!cone[v] && !m.is_isolated(int(v)) && parent[v] == -2) {
-      message = "the cones cut the surface apart (vertex " + std::to_string(v) + " cannot be reached around them)";
-      return false;
-    }
   // one pass over the fundamental cycles: a cycle is kept if a tenth of its period vector lies
   // outside the span of those kept (bounding cycles and cycles around cones have periods 0)
   std::vector<std::vector<double>> basis;   // orthonormal
@@ -179,8 +210,8 @@ bool loops_avoiding_cones(const Mesh_arrays<TM>& m, const std::vector<char>& con
     for(std::size_t j = 0; j < k; ++j) scale = (std::max)(scale, std::abs(omega[j][e]));
   for(std::size_t e = 0; e < ne && chosen.size() < k; ++e) {
     const int h = int(2 * e), a = m.source(h), b = m.target[std::size_t(h)];
-    if(cone[std::size_t(a)] || cone[std::size_t(b)] || m.is_border_edge(int(e)) || parent[std::size_t(b)] == h ||
-       parent[std::size_t(a)] == (h ^ 1))
+    if(cone[std::size_t(a)] || cone[std::size_t(b)] || parent[std::size_t(a)] == -2 || m.is_border_edge(int(e)) ||
+       parent[std::size_t(b)] == h || parent[std::size_t(a)] == (h ^ 1))
       continue;
     double norm0 = 0;
     for(std::size_t j = 0; j < k; ++j) {
@@ -202,7 +233,13 @@ bool loops_avoiding_cones(const Mesh_arrays<TM>& m, const std::vector<char>& con
     basis.push_back(p);
     chosen.push_back(h);
   }
-  if(chosen.size() < k) { message = "no loops around the cones span the handles"; return false; }
+  if(chosen.size() < k) {
+    std::size_t islands = 0;
+    for(std::size_t v = 0; v < nv; ++v) islands += !cone[v] && !m.is_isolated(int(v)) && parent[v] == -2;
+    message = "no loops around the cones span the handles" +
+              (islands ? " (the cones cut " + std::to_string(islands) + " vertices off the rest)" : std::string());
+    return false;
+  }
   for(std::size_t j = 0; j < k; ++j) {
     const int h = chosen[j];
     std::vector<int> down;   // root -> source(h)
@@ -392,8 +429,8 @@ Rotation_compensation_status rotation_compensated_field(const TriangleMesh& tm, 
   // breadth-first propagation over the vertices
   std::vector<double> alpha(nv, 0.);
   std::vector<char> seen(nv, 0);
-  int start = 0;
-  while(start + 1 < int(nv) && cone[std::size_t(start)]) ++start;
+  int start = int(internal::vertex_off_the_islands(m, cone));
+  if(start == int(nv)) start = 0;   // every vertex is a cone
   std::vector<int> queue(1, start);
   seen[std::size_t(start)] = 1;
   for(std::size_t q = 0; q < queue.size(); ++q) {
@@ -412,11 +449,38 @@ Rotation_compensation_status rotation_compensated_field(const TriangleMesh& tm, 
   }
   for(std::size_t e = 0; e < ne; ++e) {
     const int h = int(2 * e);
-    if(cone[std::size_t(m.target[std::size_t(h)])] || cone[std::size_t(m.source(h))]) continue;
+    if(cone[std::size_t(m.target[std::size_t(h)])] || cone[std::size_t(m.source(h))] || !seen[std::size_t(m.target[std::size_t(h)])] ||
+       !seen[std::size_t(m.source(h))])
+      continue;
     const double r = alpha[std::size_t(m.target[std::size_t(h)])] - alpha[std::size_t(m.source(h))] - frames.transport(h) - form_at(om, h);
     st.max_inconsistency = (std::max)(st.max_inconsistency, std::abs(std::remainder(r, period)));
   }
-  internal::vertex_field_to_face_angles(m, frames, K, alpha, face_angles);
+  // vertices the cones enclose (no path of vertices reaches them around the cones): their faces
+  // take the field by Levi-Civita transport from faces that have it (the conversion's rule for
+  // faces of cones only: parallel across an edge up to the 1-form's small rotation), and each
+  // such vertex the direction of one of its faces
+  std::vector<double> islands_K;
+  for(std::size_t v = 0; v < nv; ++v)
+    if(!seen[v] && !cone[v] && !m.is_isolated(int(v))) {
+      if(islands_K.empty()) islands_K = K;
+      islands_K[v] = 1;   // not a corner to take the field from
+    }
+  internal::vertex_field_to_face_angles(m, frames, islands_K.empty() ? K : islands_K, alpha, face_angles);
+  if(!islands_K.empty()) {
+    for(std::size_t v = 0; v < nv; ++v) {
+      if(seen[v] || cone[v] || m.is_isolated(int(v))) continue;
+      const int h = m.vertex_out[v];   // a direction of face angle b makes angle b - halfedge_direction(h) with h
+      alpha[v] = double(get(face_angles, m.faces[std::size_t(m.face[std::size_t(h)])])) - internal::halfedge_direction(m, h) +
+                 frames.direction[std::size_t(h)];
+      ++st.enclosed_vertices;
+    }
+    for(std::size_t e = 0; e < ne; ++e) {   // their edges too
+      const int h = int(2 * e), a = m.source(h), b = m.target[std::size_t(h)];
+      if(cone[std::size_t(a)] || cone[std::size_t(b)] || (seen[std::size_t(a)] && seen[std::size_t(b)])) continue;
+      const double r = alpha[std::size_t(b)] - alpha[std::size_t(a)] - frames.transport(h) - form_at(om, h);
+      st.max_enclosed_inconsistency = (std::max)(st.max_enclosed_inconsistency, std::abs(std::remainder(r, period)));
+    }
+  }
   for(std::size_t v = 0; v < nv; ++v) {
     const double a = alpha[v] - 2 * CGAL_PI * std::floor(alpha[v] / (2 * CGAL_PI));
     put(vertex_angles, m.vertices[v], a);

@@ -238,7 +238,8 @@ struct Connection_system
       const int e = edge_of_col_[c];
       // vertex u = source(2e) crosses 2e (sign +1), w = target(2e) crosses 2e + 1 (sign -1)
       const int ru = row_of_vertex_[m_.target[2 * e + 1]], rw = row_of_vertex_[m_.target[2 * e]];
-      if(ru >= 0 && rw >= 0 && rw < ru) { put_entry(rw, -1.); put_entry(ru, 1.); }
+      if(ru >= 0 && ru == rw) {}   // an edge from a vertex to itself (intrinsic triangulations): crossed both ways, 0
+      else if(ru >= 0 && rw >= 0 && rw < ru) { put_entry(rw, -1.); put_entry(ru, 1.); }
       else { if(ru >= 0) put_entry(ru, 1.); if(rw >= 0) put_entry(rw, -1.); }
       for(; k < extra.size() && extra[k].col == c; ++k) {
         double v = extra[k].value;
