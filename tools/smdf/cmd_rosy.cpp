@@ -281,16 +281,9 @@ Json run_rosy(const Args& args)
       for(const auto& c : cones)
         if(!is_border(c.first, mesh)) tc.set_singularity(c.first, std::round(c.second / (2 * CGAL_PI) * N) / N);
       for(const auto& g : opt.turning) on_file(file, [&] { tc.set_generator_turning_number(g.first, g.second); return 0; });
-      if(least_compensation)   // every generator turns by the multiple of 2 pi / N nearest its holonomy
-        for(std::size_t g = 0; g < tc.generators().size(); ++g)
-          tc.set_generator_turning_number(g, std::round(tc.generator_levi_civita_holonomy(g) / (2 * CGAL_PI) * N) / N);
+      if(least_compensation) turn_generators_least(tc, N);
       const SMDF::Trivial_connection_status ts = tc.solve();
-      Json t = Json::object();
-      t["energy"] = ts.energy;
-      t["max_rotation"] = ts.max_rotation;
-      t["max_holonomy_error"] = ts.max_holonomy_error;
-      t["scaled_residual"] = ts.scaled_residual;
-      out["trivial_connection"] = std::move(t);
+      out["trivial_connection"] = trivial_connection_json(ts);
       if(!ts.success) failure = "trivial connection solve failed: " + ts.message;
       else {
         tc.field_angles(angles);

@@ -246,6 +246,22 @@ Rosy_options rosy_options(const Args& args)
   return o;
 }
 
+void turn_generators_least(SMDF::Trivial_connection<Mesh>& tc, int N)
+{
+  for(std::size_t g = 0; g < tc.generators().size(); ++g)
+    tc.set_generator_turning_number(g, std::round(tc.generator_levi_civita_holonomy(g) / (2 * CGAL_PI) * N) / N);
+}
+
+Json trivial_connection_json(const SMDF::Trivial_connection_status& ts)
+{
+  Json t = Json::object();
+  t["energy"] = ts.energy;
+  t["max_rotation"] = ts.max_rotation;
+  t["max_holonomy_error"] = ts.max_holonomy_error;
+  t["scaled_residual"] = ts.scaled_residual;
+  return t;
+}
+
 Json metric_json(const SMDF::Cone_metric_status& cm, const char* on)
 {
   Json metric = Json::object();

@@ -9,6 +9,7 @@
 
 #include "common.h"
 
+#include <CGAL/Surface_mesh_direction_fields/Trivial_connection.h>
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
 
 #include <algorithm>
@@ -108,6 +109,13 @@ Json run_rosy_punched(const Args& args, const std::string& file, Mesh& mesh, int
 // each; returns [{vertex, index, ring}]. The trivial connection with the cones' own indices then
 // gives the field.
 Json spread_to_neighbours(const Mesh& mesh, const std::vector<std::pair<vertex_descriptor, double>>& cones, Vertex_double_property targets);
+
+// The least compensation: every generator of `tc` turns by the multiple of 2 pi / N nearest its
+// Levi-Civita holonomy (as rotation compensation chooses by default).
+void turn_generators_least(SMDF::Trivial_connection<Mesh>& tc, int N);
+
+// {energy, max_rotation, max_holonomy_error, scaled_residual} of a trivial connection's solve.
+Json trivial_connection_json(const SMDF::Trivial_connection_status& ts);
 
 // --hatching-svg: streamlines of the face field `vectors` traced on the mesh, drawn in pen and
 // ink; returns {strokes, total_length}.

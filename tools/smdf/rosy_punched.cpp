@@ -199,14 +199,9 @@ Json run_rosy_punched(const Args& args, const std::string& file, Mesh& mesh, int
       if(c.second < 2 * CGAL_PI - 1e-9 && !is_border(v, *carrier) && carrier->halfedge(v) != Mesh::null_halfedge())
         tc.set_singularity(v, std::round(c.second / (2 * CGAL_PI) * N) / N);
     }
-    for(std::size_t g = 0; g < tc.generators().size(); ++g)
-      tc.set_generator_turning_number(g, std::round(tc.generator_levi_civita_holonomy(g) / (2 * CGAL_PI) * N) / N);
+    turn_generators_least(tc, N);
     const SMDF::Trivial_connection_status ts = tc.solve();
-    Json t = Json::object();
-    t["energy"] = ts.energy;
-    t["max_rotation"] = ts.max_rotation;
-    t["scaled_residual"] = ts.scaled_residual;
-    out["trivial_connection"] = std::move(t);
+    out["trivial_connection"] = trivial_connection_json(ts);
     if(!ts.success) throw fail("trivial connection of the holed surface failed: " + ts.message);
     tc.field_angles(angles);
     tc.field_matching(angles, cmatch);
