@@ -109,8 +109,9 @@ struct Piece_directions
 /// boundary stay exactly so. The matching of an input edge follows the field
 /// from one face's centroid to the other's through the pieces of the two faces: the branch of
 /// the \f$N\f$ directions changes by the intrinsic matching wherever the path crosses an
-/// intrinsic edge, and the rotation is summed piece by piece (every step turns by less than
-/// \f$\pi\f$). So field_singularities() of the result, with its matching, reads the indices of
+/// intrinsic edge, and the rotation is summed piece by piece: inside a piece in steps of less than
+/// a radian, and across an intrinsic edge as the field's intrinsic rotation there (wrapped as
+/// field_singularities() wraps it, its half turns kept) seen through the next piece's map. So field_singularities() of the result, with its matching, reads the indices of
 /// the intrinsic field at the vertices (they are shared) as long as `max_distortion` stays below
 /// \f$\pi/N\f$ (the status says it).
 ///
