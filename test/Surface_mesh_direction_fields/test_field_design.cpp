@@ -631,6 +631,26 @@ void rotation_compensation(const Surface_mesh& g3)
     SMDF_CHECK_MSG(cm.converged, "torus with two cones: " << cm.message);
     if(cm.converged) compensated(torus, flat, cones, 4, "torus with cones +-pi/2");
   }
+  {   // a ring of cones around the tube (+-pi/2 alternating on all 24 vertices of a meridian):
+      // no loop of vertices crosses it, so the loop around the big circle must pass cones (the
+      // propagation over faces serves it; loops of vertices avoiding the cones could not)
+    Surface_mesh torus;
+    smdf_test::soup_to_mesh(smdf_test::torus_soup(40, 24), torus);
+    std::map<Vertex, double> cones;
+    for(int j = 0; j < 24; ++j) cones[Vertex(j)] = (j % 2 ? -M_PI : M_PI) / 2;
+    auto K_target = get(CGAL::dynamic_vertex_property_t<double>(), torus);
+    for(auto v : vertices(torus)) put(K_target, v, cones.count(v) ? cones[v] : 0.);
+    auto out = get(CGAL::dynamic_edge_property_t<double>(), torus);
+    const auto cm = SMDF::compute_cone_metric(torus, K_target, out);
+    SMDF_CHECK_MSG(cm.converged, "torus with a ring of cones: " << cm.message);
+    if(cm.converged) {
+      Surface_mesh mesh;
+      Lengths flat = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:flat_ring", 0).first;
+      if(cm.triangulation_changed) SMDF::copy_intrinsic_triangulation(cm.intrinsic_triangulation, torus, mesh, flat);
+      else { mesh = torus; flat = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:flat_ring", 0).first; for(auto e : edges(mesh)) flat[e] = get(out, e); }
+      compensated(mesh, flat, cones, 4, "torus with a ring of 24 adjacent cones around the tube");
+    }
+  }
   {   // the genus-3 metric of the holonomy table: cones multiples of pi, a line field
     const std::vector<Vertex> cv = extreme_vertices(g3, {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}});
     const double Ks[4] = {-M_PI, -3 * M_PI, -2 * M_PI, -2 * M_PI};

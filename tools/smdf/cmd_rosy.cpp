@@ -324,8 +324,7 @@ Json run_rosy(const Args& args)
       c["handle_turning_numbers"] = std::move(turning);
       c["max_harmonic_residual"] = cs.max_harmonic_residual;
       c["max_inconsistency"] = cs.max_inconsistency;
-      c["enclosed_vertices"] = cs.enclosed_vertices;
-      c["max_enclosed_inconsistency"] = cs.max_enclosed_inconsistency;
+      c["max_rotation"] = cs.max_rotation;
       out["rotation_compensation"] = std::move(c);
       if(!cs.success) failure = cs.message;
       timings["compensation_s"] = clock.lap();
@@ -575,8 +574,7 @@ Command rosy_command()
           "smallest_parallel_order, square_grid and triangular_grid: {compatible, spacing,\n"
           "orientation, max_rotation_deviation, max_translation_deviation, failing_loops},\n"
           "parallel_rosy: {compatible, max_deviation, failing_loops}, rotation_compensation:\n"
-          "{periods, handle_turning_numbers, max_harmonic_residual, max_inconsistency,\n"
-          "enclosed_vertices, max_enclosed_inconsistency} or\n"
+          "{periods, handle_turning_numbers, max_harmonic_residual, max_inconsistency, max_rotation} or\n"
           "trivial_connection: {energy, max_rotation, ...} (with rotation_compensation_failure when\n"
           "it took over from a rotation compensation that failed) or boundary_aligned, edit: {directions,\n"
           "hard_directions, lengths, hard_lengths, max_direction_error, max_length_error,\n"
