@@ -2,9 +2,10 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # The README's two entry points (CONVENTIONS section 9):
 #   ./run.sh example   install missing Debian packages, build smdf (Release), run it on data/spot.off
-#   ./run.sh test      install missing Debian packages, build everything, run ctest (without the
-#                      "sweep" label)
-#   ./run.sh sweep     the sweep of field design over every shared mesh (ctest -L sweep)
+#   ./run.sh test      install missing Debian packages, build everything but the benchmark drivers,
+#                      run ctest (without the "sweep" and "benchmark" labels)
+#   ./run.sh sweep     the sweep of field design over every shared mesh (ctest -L sweep), then the
+#                      benchmark drivers built and run once each on their smallest size
 #   ./run.sh sanitize  the library's tests built with AddressSanitizer + UBSan (build-sanitize/;
 #                      three of the seven unless SMDF_SANITIZE_TESTS=all;
 #                      the smdf tool, examples, benchmarks and the downstream test are left out:
@@ -24,8 +25,9 @@ PACKAGES=(cmake g++ libcgal-dev libeigen3-dev libsuitesparse-dev libboost-dev li
 usage() {
   echo "usage: $0 example|test|sweep|sanitize|fuzz" >&2
   echo "  example  build the smdf tool and run it on data/spot.off (cross field, cone metric, SVGs)" >&2
-  echo "  test     build everything and run the test suite (ctest, without the sweep)" >&2
-  echo "  sweep    run the sweep of field design over every shared mesh (ctest -L sweep)" >&2
+  echo "  test     build the library's tests, tool and examples and run the test suite (ctest, without the sweep)" >&2
+  echo "  sweep    run the sweep of field design over every shared mesh (ctest -L sweep), and build" >&2
+  echo "           the benchmark drivers and run each once on its smallest size (ctest -L benchmark)" >&2
   echo "  sanitize build the library's tests with ASan + UBSan and run them" >&2
   echo "  fuzz     build the libFuzzer targets with clang and run each for a bounded time" >&2
   exit 2
@@ -98,13 +100,14 @@ run_example() {
 
 run_tests() {
   cmake --build "$BUILD_DIR" -j "$JOBS"
-  ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS" -LE sweep
+  ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS" -LE "sweep|benchmark"
 }
 
-# The sweep over every shared mesh (CTest label "sweep"; CI runs it after the tests).
+# The sweep over every shared mesh (CTest label "sweep"), and the benchmark drivers, built here
+# and run once each on their smallest size (label "benchmark"); CI runs this after the tests.
 run_sweep() {
-  cmake --build "$BUILD_DIR" -j "$JOBS" --target smdf
-  ctest --test-dir "$BUILD_DIR" --output-on-failure -L sweep
+  cmake --build "$BUILD_DIR" -j "$JOBS" --target smdf smdf_benchmarks
+  ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS" -L "sweep|benchmark"
 }
 
 run_sanitized_tests() {
