@@ -618,6 +618,27 @@ void compensated(const Surface_mesh& mesh, const LengthMap& flat, const std::map
             << "connection's field " << diff << " rad (primal and dual harmonic forms)" << std::endl;
 }
 
+// The flat cone metric of `cones` on `in` (flips allowed), copied onto the triangulation that
+// carries it, then compensated().
+void compensated_on_cone_metric(const Surface_mesh& in, const std::map<Vertex, double>& cones, int N, const std::string& name)
+{
+  auto K_target = get(CGAL::dynamic_vertex_property_t<double>(), in);
+  for(auto v : vertices(in)) put(K_target, v, cones.count(v) ? cones.at(v) : 0.);
+  auto out = get(CGAL::dynamic_edge_property_t<double>(), in);
+  const auto cm = SMDF::compute_cone_metric(in, K_target, out);
+  SMDF_CHECK_MSG(cm.converged, name << ": " << cm.message);
+  if(!cm.converged) return;
+  Surface_mesh mesh;
+  Lengths flat = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:flat_rc", 0).first;
+  if(cm.triangulation_changed) SMDF::copy_intrinsic_triangulation(cm.intrinsic_triangulation, in, mesh, flat);
+  else {
+    mesh = in;
+    flat = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:flat_rc", 0).first;
+    for(auto e : edges(mesh)) flat[e] = get(out, e);
+  }
+  compensated(mesh, flat, cones, N, name);
+}
+
 void rotation_compensation(const Surface_mesh& g3)
 {
   {   // a torus with cones of +pi/2 and -pi/2: a cross field
@@ -638,35 +659,14 @@ void rotation_compensation(const Surface_mesh& g3)
     smdf_test::soup_to_mesh(smdf_test::torus_soup(40, 24), torus);
     std::map<Vertex, double> cones;
     for(int j = 0; j < 24; ++j) cones[Vertex(j)] = (j % 2 ? -M_PI : M_PI) / 2;
-    auto K_target = get(CGAL::dynamic_vertex_property_t<double>(), torus);
-    for(auto v : vertices(torus)) put(K_target, v, cones.count(v) ? cones[v] : 0.);
-    auto out = get(CGAL::dynamic_edge_property_t<double>(), torus);
-    const auto cm = SMDF::compute_cone_metric(torus, K_target, out);
-    SMDF_CHECK_MSG(cm.converged, "torus with a ring of cones: " << cm.message);
-    if(cm.converged) {
-      Surface_mesh mesh;
-      Lengths flat = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:flat_ring", 0).first;
-      if(cm.triangulation_changed) SMDF::copy_intrinsic_triangulation(cm.intrinsic_triangulation, torus, mesh, flat);
-      else { mesh = torus; flat = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:flat_ring", 0).first; for(auto e : edges(mesh)) flat[e] = get(out, e); }
-      compensated(mesh, flat, cones, 4, "torus with a ring of 24 adjacent cones around the tube");
-    }
+    compensated_on_cone_metric(torus, cones, 4, "torus with a ring of 24 adjacent cones around the tube");
   }
   {   // the genus-3 metric of the holonomy table: cones multiples of pi, a line field
     const std::vector<Vertex> cv = extreme_vertices(g3, {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}});
     const double Ks[4] = {-M_PI, -3 * M_PI, -2 * M_PI, -2 * M_PI};
-    auto K_target = get(CGAL::dynamic_vertex_property_t<double>(), g3);
-    for(auto v : vertices(g3)) put(K_target, v, 0.);
     std::map<Vertex, double> cones;
-    for(int i = 0; i < 4; ++i) { put(K_target, cv[std::size_t(i)], Ks[i]); cones[cv[std::size_t(i)]] = Ks[i]; }
-    auto out = get(CGAL::dynamic_edge_property_t<double>(), g3);
-    const auto cm = SMDF::compute_cone_metric(g3, K_target, out);
-    if(cm.converged) {
-      Surface_mesh mesh;
-      Lengths flat = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:flat_rc", 0).first;
-      if(cm.triangulation_changed) SMDF::copy_intrinsic_triangulation(cm.intrinsic_triangulation, g3, mesh, flat);
-      else { mesh = g3; flat = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:flat_rc", 0).first; for(auto e : edges(mesh)) flat[e] = get(out, e); }
-      compensated(mesh, flat, cones, 2, "genus3_vhacd.off, cones -pi, -3pi, -2pi, -2pi");
-    }
+    for(int i = 0; i < 4; ++i) cones[cv[std::size_t(i)]] = Ks[i];
+    compensated_on_cone_metric(g3, cones, 2, "genus3_vhacd.off, cones -pi, -3pi, -2pi, -2pi");
   }
 }
 
