@@ -234,6 +234,30 @@ void genus_zero(Surface_mesh& spot)
   }
 }
 
+// The flat cone metric with curvatures `cones` on `in` (flips allowed), copied with its lengths
+// onto `mesh`: the input itself, or the intrinsic triangulation the flow flipped to (same vertex
+// indices). False (and a failed check) if the flow does not converge.
+bool cone_metric_carrier(const Surface_mesh& in, const std::map<Vertex, double>& cones, Surface_mesh& mesh, Lengths& flat,
+                         bool& flipped, const std::string& name)
+{
+  auto K_target = get(CGAL::dynamic_vertex_property_t<double>(), in);
+  for(auto v : vertices(in)) put(K_target, v, cones.count(v) ? cones.at(v) : 0.);
+  auto out = get(CGAL::dynamic_edge_property_t<double>(), in);
+  const auto st = SMDF::compute_cone_metric(in, K_target, out);
+  SMDF_CHECK_MSG(st.converged, name << ": flat cone metric: " << st.message);
+  if(!st.converged) return false;
+  flipped = st.triangulation_changed;
+  if(flipped) {
+    flat = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:flat_test", 0).first;
+    SMDF::copy_intrinsic_triangulation(st.intrinsic_triangulation, in, mesh, flat);
+  } else {
+    mesh = in;
+    flat = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:flat_test", 0).first;
+    for(auto e : edges(mesh)) flat[e] = get(out, e);
+  }
+  return true;
+}
+
 void genus_three(const Surface_mesh& input, const std::string& name)
 {
   // Figure 9 of Lai et al.: four cones of -pi, -3 pi, -2 pi, -2 pi (sum 2 pi chi = -8 pi). The
@@ -241,28 +265,17 @@ void genus_three(const Surface_mesh& input, const std::string& name)
   // Surface_mesh with its lengths (same vertices), on which the basis and the group are computed.
   const std::vector<Vertex> cones = extreme_vertices(input, {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}});
   const double Ks[4] = {-M_PI, -3 * M_PI, -2 * M_PI, -2 * M_PI};
-  auto K_target = get(CGAL::dynamic_vertex_property_t<double>(), input);
-  for(auto v : vertices(input)) put(K_target, v, 0.);
   std::map<Vertex, double> curv;
-  for(int i = 0; i < 4; ++i) { put(K_target, cones[std::size_t(i)], Ks[i]); curv[cones[std::size_t(i)]] = Ks[i]; }
-  auto out = get(CGAL::dynamic_edge_property_t<double>(), input);
-  const auto st = SMDF::compute_cone_metric(input, K_target, out);
-  SMDF_CHECK_MSG(st.converged, name << ": flat cone metric: " << st.message);
-  if(!st.converged) return;
+  for(int i = 0; i < 4; ++i) curv[cones[std::size_t(i)]] = Ks[i];
   Surface_mesh mesh;
-  Lengths flat = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:flat_test", 0).first;
-  if(st.triangulation_changed) {
-    SMDF::copy_intrinsic_triangulation(st.intrinsic_triangulation, input, mesh, flat);
-  } else {
-    mesh = input;
-    flat = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:flat_test", 0).first;
-    for(auto e : edges(mesh)) flat[e] = get(out, e);
-  }
+  Lengths flat;
+  bool flipped = false;
+  if(!cone_metric_carrier(input, curv, mesh, flat, flipped, name)) return;
   const auto b = SMDF::homotopy_basis(mesh, cones);   // same vertex indices as the input
   const SMDF::Holonomy_group g = SMDF::holonomy_group(mesh, b, SMDF::parameters::edge_length_map(flat));
-  check_group(mesh, b, g, curv, flat, name + (st.triangulation_changed ? " (intrinsic triangulation)" : ""));
+  check_group(mesh, b, g, curv, flat, name + (flipped ? " (intrinsic triangulation)" : ""));
   std::cout << name << ": holonomy group of the flat cone metric with cones -pi, -3pi, -2pi, -2pi"
-            << (st.triangulation_changed ? " (on its intrinsic triangulation)" : "") << "\n";
+            << (flipped ? " (on its intrinsic triangulation)" : "") << "\n";
   for(std::size_t i = 0; i < b.loops.size(); ++i)
     std::cout << "  loop " << i << " (" << (b.loops[i].kind == SMDF::CONE_LOOP ? "cone" : "handle") << "): rotation "
               << std::fixed << std::setprecision(4) << g.rotations[i] / M_PI << " pi, translation ("
@@ -618,25 +631,13 @@ void compensated(const Surface_mesh& mesh, const LengthMap& flat, const std::map
             << "connection's field " << diff << " rad (primal and dual harmonic forms)" << std::endl;
 }
 
-// The flat cone metric of `cones` on `in` (flips allowed), copied onto the triangulation that
-// carries it, then compensated().
+// The flat cone metric of `cones` on `in` on the triangulation that carries it, compensated().
 void compensated_on_cone_metric(const Surface_mesh& in, const std::map<Vertex, double>& cones, int N, const std::string& name)
 {
-  auto K_target = get(CGAL::dynamic_vertex_property_t<double>(), in);
-  for(auto v : vertices(in)) put(K_target, v, cones.count(v) ? cones.at(v) : 0.);
-  auto out = get(CGAL::dynamic_edge_property_t<double>(), in);
-  const auto cm = SMDF::compute_cone_metric(in, K_target, out);
-  SMDF_CHECK_MSG(cm.converged, name << ": " << cm.message);
-  if(!cm.converged) return;
   Surface_mesh mesh;
-  Lengths flat = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:flat_rc", 0).first;
-  if(cm.triangulation_changed) SMDF::copy_intrinsic_triangulation(cm.intrinsic_triangulation, in, mesh, flat);
-  else {
-    mesh = in;
-    flat = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:flat_rc", 0).first;
-    for(auto e : edges(mesh)) flat[e] = get(out, e);
-  }
-  compensated(mesh, flat, cones, N, name);
+  Lengths flat;
+  bool flipped = false;
+  if(cone_metric_carrier(in, cones, mesh, flat, flipped, name)) compensated(mesh, flat, cones, N, name);
 }
 
 void rotation_compensation(const Surface_mesh& g3)
