@@ -585,6 +585,18 @@ void compensated(const Surface_mesh& mesh, const LengthMap& flat, const std::map
   std::map<Vertex, double> got(ft.singularities.begin(), ft.singularities.end()), want;
   for(const auto& c : cones) want[c.first] = std::round(c.second / (2 * M_PI) * N) / N;
   SMDF_CHECK_MSG(got == want, name << ": the face field read back on the metric has exactly the " << want.size() << " cones (found " << got.size() << ")");
+  {   // the field's own matching: the same field, read back the same with it
+    auto va3 = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+    auto fa3 = get(CGAL::dynamic_face_property_t<double>(), mesh);
+    auto km = get(CGAL::dynamic_edge_property_t<int>(), mesh);
+    const auto st3 = SMDF::rotation_compensated_field(mesh, N, va3, fa3, np.matching(km));
+    const auto ft3 = SMDF::field_singularities(mesh, fa3, SMDF::parameters::symmetry_order(N).edge_length_map(flat).matching(km));
+    std::map<Vertex, double> got3(ft3.singularities.begin(), ft3.singularities.end());
+    double d = 0;
+    for(auto f : faces(mesh)) d = std::max(d, std::abs(std::remainder(get(fa3, f) - get(fa, f), 2 * M_PI)));
+    SMDF_CHECK_MSG(st3.success && got3 == want && d == 0 && st.max_rotation < M_PI / N,
+                   name << ": with its own matching, the same field reads back the cones (largest rotation " << st.max_rotation << " rad)");
+  }
   {   // the paper's construction of the harmonic forms (cut, Dirichlet jump, projection): the same field
     auto va2 = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
     auto fa2 = get(CGAL::dynamic_face_property_t<double>(), mesh);

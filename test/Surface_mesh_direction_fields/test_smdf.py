@@ -1257,9 +1257,9 @@ def test_shared_rosy_dense_cones(smdf, c, meshes, tmp):
     quadrilaterals whose fourth corner is 1e4 times farther than the others, the transfer must
     keep the full turns of a connection that turns by nearly pi across an edge, and rotation
     compensation must serve handles that the cones wall off (no loop of vertices goes around
-    them; it propagates over faces) for N = 2; for N = 3 its 1-form turns the field by more than
-    pi / 3 across long intrinsic edges, and the trivial connection with the same least
-    compensation takes over. Every run reads back exactly on the input."""
+    them; it propagates over faces), and keep its own matching where its 1-form turns the field
+    by more than pi / N across long intrinsic edges (1.19 rad for N = 3). Every run reads back
+    exactly on the input, with the method asked for (the trivial connection for N = 6)."""
     rng = random.Random(133)
     runs = []
     path = os.path.join(meshes, "cheese_cgal.off")
@@ -1277,7 +1277,7 @@ def test_shared_rosy_dense_cones(smdf, c, meshes, tmp):
             while a in cones or any(b in cones for b in adjacent[a]):
                 a = rng.randrange(len(verts))
             cones[a], cones[sorted(adjacent[a])[0]] = 1, -1
-            runs.append((path, N, method, cones, N == 2))   # N = 2: the method must be kept
+            runs.append((path, N, method, cones, True))   # the method must be kept
     path = os.path.join(meshes, "rotor_cgal.off")
     if os.path.isfile(path) and not too_large(meshes, "rotor_cgal.off"):
         runs.append((path, 2, "rotation-compensation", {73: -1, 108: -1, 112: -1, 193: 4, 311: 1, 409: -1, 452: -1}, False))
@@ -1287,8 +1287,8 @@ def test_shared_rosy_dense_cones(smdf, c, meshes, tmp):
     path = os.path.join(meshes, "cheese_cgal.off")
     if os.path.isfile(path) and not too_large(meshes, "cheese_cgal.off"):
         files = {k: os.path.join(tmp, "auto_%s.txt" % k) for k in ("face", "matching")}
-        r = smdf.json(["rosy", path, "--cones", "auto", "--N", "3", "--face-field-out", files["face"], "--matching-out", files["matching"]],
-                      "rosy cheese_cgal.off --cones auto --N 3")
+        r = smdf.json(["rosy", path, "--cones", "auto", "--N", "3", "--method", "trivial-connection", "--face-field-out", files["face"],
+                       "--matching-out", files["matching"]], "rosy cheese_cgal.off --cones auto --N 3 --method trivial-connection")
         if r:
             back = smdf.json(["singularities", path, "--field", files["face"], "--N", "3", "--matching", files["matching"]],
                              "singularities of the cheese's automatic field")

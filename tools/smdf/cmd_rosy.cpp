@@ -296,7 +296,7 @@ Json run_rosy(const Args& args)
     if(method == ROTATION_COMPENSATION) {
       auto compensate = [&](const std::vector<double>& turning) {
         return on_file(file, [&] {
-          return SMDF::rotation_compensated_field(*carrier, N, vertex_angles, angles, np.generator_turning_numbers(turning));
+          return SMDF::rotation_compensated_field(*carrier, N, vertex_angles, angles, np.generator_turning_numbers(turning).matching(matching));
         });
       };
       SMDF::Rotation_compensation_status cs = compensate({});
@@ -327,11 +327,13 @@ Json run_rosy(const Args& args)
       c["max_rotation"] = cs.max_rotation;
       out["rotation_compensation"] = std::move(c);
       if(!cs.success) failure = cs.message;
+      // its own matching: the 1-form may turn the field by pi / N or more across long intrinsic edges
+      have_matching = cs.success && !editing;
+      if(have_matching) out["max_rotation_over_pi_over_N"] = cs.max_rotation / (CGAL_PI / N);
       timings["compensation_s"] = clock.lap();
       if(!cs.success && opt.turning.empty() && !editing) {
-        // cones that cut the vertex graph apart leave no loops of vertices around them: the
-        // trivial connection (on dual cycles, which pass between any cones) with the same least
-        // compensation gives the field rotation compensation was asked for
+        // a numerical failure: the trivial connection with the same least compensation gives the
+        // field rotation compensation was asked for
         out["rotation_compensation_failure"] = cs.message;
         failure.clear();
         method = TRIVIAL_CONNECTION;

@@ -53,8 +53,9 @@ struct Rotation_compensation_status
   /// every edge between vertices that are no cones for the vertex field
   double max_inconsistency = 0;
   /// largest rotation of the face field across an edge beyond Levi-Civita transport (that of
-  /// \f$\omega\f$ between the two faces); below \f$\pi/N\f$, as success requires, the field's
-  /// own matching (the nearest rotation by a multiple of \f$2\pi/N\f$) reads back exactly the cones
+  /// \f$\omega\f$ between the two faces); below \f$\pi/N\f$, the principal matching (the
+  /// nearest rotation by a multiple of \f$2\pi/N\f$) reads back exactly the cones; above, only
+  /// the field's own matching (the `matching` output) does
   double max_rotation = 0;
 };
 
@@ -210,9 +211,13 @@ std::vector<double> face_potentials(const Mesh_arrays<TM>& m, const std::vector<
 /// `std::vector<double>`, one multiple of \f$1/N\f$ per handle loop: the field's total rotation
 /// along it over \f$2\pi\f$; default: the multiple nearest to the loop's holonomy, the least
 /// compensation), `harmonic_form_construction` (default `HARMONIC_PROJECTION`; see
-/// `Harmonic_form_construction`). Throws `Input_error` for meshes with
-/// boundary or several components, \f$N < 1\f$, and the errors of `Intrinsic_mesh`; numerical
-/// failure is in the status.
+/// `Harmonic_form_construction`), and `matching` (an edge property map of `int`: receives the
+/// field's own matching, for `halfedge(e)` in the convention of field_singularities()'s
+/// `matching`: the period jump that makes the rotation across the edge the 1-form's, even where
+/// that is \f$\pi/N\f$ or more). Throws `Input_error` for meshes with boundary or several
+/// components, \f$N < 1\f$, and the errors of `Intrinsic_mesh`; numerical failure is in the
+/// status, and so is a field that turns by \f$\pi/N\f$ or more across an edge when no
+/// `matching` is asked for (the principal matching would read other singularities).
 template <typename TriangleMesh, typename VertexAngleMap, typename FaceAngleMap,
           typename NamedParameters = parameters::Default_named_parameters>
 Rotation_compensation_status rotation_compensated_field(const TriangleMesh& tm, int N, VertexAngleMap vertex_angles,
@@ -385,7 +390,24 @@ Rotation_compensation_status rotation_compensated_field(const TriangleMesh& tm, 
     const double a = alpha[v] - 2 * CGAL_PI * std::floor(alpha[v] / (2 * CGAL_PI));
     put(vertex_angles, m.vertices[v], a);
   }
-  st.success = st.max_inconsistency <= 1e-6 && st.max_rotation < period / 2;
+  constexpr bool with_matching = !parameters::is_default_parameter<NamedParameters, internal_np::matching_t>::value;
+  if constexpr(with_matching) {
+    // k such that the rotation across the edge, w(raw) + k period as field_singularities() reads
+    // it, is rho (raw is rho up to a multiple of the period); raw from the very angles written
+    // (where raw is near a half turn, w(raw) depends on its last bit)
+    auto matching = get_parameter(np, internal_np::matching);
+    auto written = [&](int f) { return double(get(face_angles, m.faces[std::size_t(f)])); };
+    for(std::size_t e = 0; e < ne; ++e) {
+      const int x = int(2 * e), f = m.face[std::size_t(x)], g = m.face[std::size_t(x ^ 1)];
+      int k = 0;
+      if(f >= 0 && g >= 0) {
+        const double raw = written(f) - written(g) - internal::transport_increment(m, x);
+        k = int(std::lround((rho(x) - internal::wrap_angle(raw)) / period));
+      }
+      put(matching, m.edges[e], k);
+    }
+  }
+  st.success = st.max_inconsistency <= 1e-6 && (with_matching || st.max_rotation < period / 2);
   if(!st.success) {
     std::ostringstream os;
     os.precision(3);
