@@ -565,7 +565,7 @@ Command remesh_command()
            {"distortion-bound", "B", "automatic cones: the cone metric's log scale within B (default 2)"},
            {"max-cones", "n", "automatic cones: at most n cones (default 500)"},
            {"uv-out", "FILE", "automatic cones: write the integer-grid map as OBJ, one vt per face corner (a seamless parametrization in grid units; the triangulation is the Delaunay refinement's when the metric needed it)"},
-           {"cone-spacing", "S", "automatic cones: at least S grid edges apart (along the input's edges) where the placement can; default: 0 (never adjacent), then 2 if the map folds"},
+           {"cone-spacing", "S", "automatic cones: at least S grid edges apart (along the input's edges) where the placement can; default: 0 (never adjacent), then 2, 4 and 6 while the map folds"},
            {"progress", "", "report each stage on stderr with the elapsed time"}},
           "regular quad or triangle remesh from a flat cone metric",
           "Lai et al. 2010, section 5: develops a flat cone metric of the mesh (its own edge lengths,\n"
@@ -645,7 +645,7 @@ Command remesh_command()
           "1 (edge_length 1 in grid units). The JSON adds placed_cones: [{vertex, curvature}],\n"
           "placement: {success, message, distortion_bound, scale_spread}, placement_attempts:\n"
           "[{cone_spacing, cones, message, stage_timings}] (a map that folds is tried again with the\n"
-          "cones 2 grid edges apart, unless --cone-spacing is given), stage_timings (the last\n"
+          "cones 2, 4, then 6 grid edges apart, unless --cone-spacing is given), stage_timings (the last\n"
           "attempt's: placement_s, cone_metric_s, cross_field_s, integer_grid_map_s) and integer_grid_map:\n"
           "{success, message, singularities, seams, rounded_values, folded_triangles,\n"
           "stiffening_rounds, seamless_energy, integer_energy, min_area_ratio}. Exit 3 at once when\n"
