@@ -38,6 +38,8 @@
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/Intrinsic_triangulation.h>
 #include <CGAL/Surface_mesh_direction_fields/field_transfer.h>
+#include <CGAL/Surface_mesh_direction_fields/delaunay_refinement.h>
+#include <CGAL/Surface_mesh_direction_fields/refinement_field_transfer.h>
 #include <CGAL/Surface_mesh_direction_fields/curvature_aligned_field.h>
 #include <CGAL/Surface_mesh_direction_fields/vertex_field_from_faces.h>
 

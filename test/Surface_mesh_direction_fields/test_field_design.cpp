@@ -21,6 +21,7 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -784,6 +785,93 @@ void boundary_aligned()
 }
 
 
+// A face field on a refinement brought back to the input (refine_at_edge_points(),
+// transfer_face_field_from_refinement()): random points on random edges (border and interior,
+// some edges twice), the refinement tiles every input face (areas), and a trivial connection
+// with random singularities at input vertices, solved on the refinement, reads back the same
+// singularities on the input faces with the transferred matching. On Surface_mesh and Polyhedron_3.
+template <typename Mesh>
+void refinement_transfer(const Mesh& mesh, const std::string& name, unsigned seed)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor V;
+  typedef typename boost::graph_traits<Mesh>::face_descriptor F;
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> unit(0.05, 0.95);
+  std::vector<std::pair<std::size_t, double>> points;
+  std::size_t border_points = 0;
+  const std::size_t ne = num_edges(mesh);
+  std::vector<typename boost::graph_traits<Mesh>::edge_descriptor> edge_list(edges(mesh).begin(), edges(mesh).end());
+  for(std::size_t e = 0; e < ne; ++e) {
+    if(rng() % 20 != 0 && !(is_border(edge_list[e], mesh) && rng() % 4 == 0)) continue;
+    points.emplace_back(e, unit(rng));
+    if(rng() % 3 == 0) points.emplace_back(e, unit(rng));
+    if(is_border(edge_list[e], mesh)) ++border_points;
+  }
+  Mesh refined;
+  const SMDF::Delaunay_refinement_status rs = SMDF::refine_at_edge_points(mesh, points, refined);
+  SMDF_CHECK_MSG(rs.success && rs.inserted.size() == points.size() && num_vertices(refined) == num_vertices(mesh) + points.size() &&
+                     rs.face_origin.size() == num_faces(refined),
+                 name << ": refinement at " << points.size() << " edge points (" << border_points << " edges on the border): " << rs.message);
+  if(!rs.success) return;
+  {   // the pieces tile each input face
+    auto triangle_area = [](const auto& m, auto f) {
+      const auto vpm = get(CGAL::vertex_point, m);
+      const auto h = halfedge(f, m);
+      return std::sqrt(CGAL::squared_area(get(vpm, source(h, m)), get(vpm, target(h, m)), get(vpm, target(next(h, m), m))));
+    };
+    std::vector<double> area(num_faces(mesh), 0.);
+    std::size_t i = 0;
+    for(F f : faces(refined)) area[rs.face_origin[i++]] += triangle_area(refined, f);
+    double worst = 0;
+    i = 0;
+    for(F f : faces(mesh)) { const double a = triangle_area(mesh, f); worst = std::max(worst, std::abs(area[i++] - a) / a); }
+    SMDF_CHECK_MSG(worst < 1e-10, name << ": the pieces tile every input face (area error " << worst << ")");
+  }
+  // random singularities at interior input vertices, summing to chi: the trivial connection on the refinement
+  const int N = 4;
+  std::vector<V> inner, inner_refined;
+  {
+    std::vector<V> in(vertices(mesh).begin(), vertices(mesh).end()), out(vertices(refined).begin(), vertices(refined).end());
+    for(std::size_t i = 0; i < in.size(); ++i)
+      if(!is_border(in[i], mesh)) { inner.push_back(in[i]); inner_refined.push_back(out[i]); }
+  }
+  const long chi = long(num_vertices(mesh)) - long(ne) + long(num_faces(mesh));
+  std::map<std::size_t, double> want;
+  long units = 0;
+  const long target_units = is_closed(mesh) ? N * chi : 0;   // open: the boundary takes the rest (free turning)
+  for(int k = 0; k < 6 || (is_closed(mesh) && units != target_units); ++k) {
+    const long step = is_closed(mesh) && k >= 6 ? (target_units > units ? 1 : -1) : (rng() % 2 ? 1 : -1);
+    const std::size_t v = rng() % inner.size();
+    if(want.count(v)) continue;
+    want[v] = double(step) / N;
+    units += step;
+  }
+  SMDF::Trivial_connection<Mesh> tc(refined, SMDF::parameters::symmetry_order(N));
+  for(const auto& w : want) tc.set_singularity(inner_refined[w.first], w.second);
+  const SMDF::Trivial_connection_status ts = tc.solve();
+  SMDF_CHECK_MSG(ts.success, name << ": trivial connection on the refinement " << ts.message);
+  if(!ts.success) return;
+  auto angles = get(CGAL::dynamic_face_property_t<double>(), refined);
+  auto matching = get(CGAL::dynamic_edge_property_t<int>(), refined);
+  tc.field_angles(angles);
+  tc.field_matching(angles, matching);
+  auto in_angles = get(CGAL::dynamic_face_property_t<double>(), mesh);
+  auto in_matching = get(CGAL::dynamic_edge_property_t<int>(), mesh);
+  const SMDF::Field_transfer_status st =
+      SMDF::transfer_face_field_from_refinement(refined, mesh, rs, N, angles, matching, in_angles, in_matching);
+  SMDF_CHECK_MSG(st.success, name << ": the field brought back to the input " << st.message);
+  if(!st.success) return;
+  const auto back = SMDF::field_singularities(mesh, in_angles, SMDF::parameters::symmetry_order(N).matching(in_matching));
+  std::map<std::size_t, double> got;
+  {
+    std::map<V, std::size_t> id;
+    for(std::size_t i = 0; i < inner.size(); ++i) id[inner[i]] = i;
+    for(const auto& x : back.singularities) got[id.count(x.first) ? id[x.first] : std::size_t(-1)] = x.second;
+  }
+  SMDF_CHECK_MSG(got == want, name << ": the input faces read back the " << want.size() << " singularities of the refinement ("
+                                   << got.size() << " found; largest turn inside an input face " << st.max_distortion << " rad)");
+}
+
 // The paper's Ricci flow (inversive distance circle packing) against vertex scaling, both on the
 // input triangulation: the input metric is reproduced at u = 0, and every converged metric is
 // checked by recomputing its curvature from the output lengths. Prints the comparison.
@@ -1039,6 +1127,17 @@ int main()
     parallel_field(spot, obelisk, 12, "spot, obelisk metric");
   }
   editing(spot);
+  {
+    Surface_mesh holes;
+    Polyhedron poly;
+    SMDF::read_triangle_mesh(dir + "/meshes/holes_cgal.off", holes);
+    SMDF::read_triangle_mesh(dir + "/meshes/holes_cgal.off", poly);
+    for(unsigned seed : {1u, 2u}) {
+      refinement_transfer(holes, "holes_cgal.off (Surface_mesh, seed " + std::to_string(seed) + ")", seed);
+      refinement_transfer(poly, "holes_cgal.off (Polyhedron_3, seed " + std::to_string(seed) + ")", seed);
+      refinement_transfer(spot, "spot (seed " + std::to_string(seed) + ")", seed);
+    }
+  }
   SMDF::read_triangle_mesh(dir + "/meshes/genus3_vhacd.off", g3);
   genus_three(g3, "genus3_vhacd.off");
   rotation_compensation(g3);

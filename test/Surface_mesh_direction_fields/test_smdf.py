@@ -1156,6 +1156,55 @@ def test_shared_rosy(smdf, c, meshes, tmp):
             c.check(len(vv) == len(verts) and units and vworst < 1e-6,
                     "rosy %s --N %d --boundary %s --field-out: a unit vector per vertex, %s to the boundary at every "
                     "boundary vertex (%.3g)" % (name, N, mode, mode, vworst))
+    # a cone next to the boundary: the flat metric with a geodesic boundary needs a vertex on the
+    # border edge the cone faces (found by the user sweep: the flow stalled at 0.539); smdf rosy
+    # splits that edge and brings the field back to the input's own faces and edges
+    holes = os.path.join(meshes, "holes_cgal.off")
+    if os.path.isfile(holes) and not too_large(meshes, "holes_cgal.off"):
+        verts, faces = read_off(holes)
+        border = border_faces(faces)
+        cones = ("359:-1/2,524:1/2,589:-1/2,745:-1/2,1144:-1/2,1384:-1/2,1921:-1/2,1930:-1/2,1931:1/2,2369:-1/2,2403:-1/2,"
+                 "2560:-1/2,2729:-1/2,3668:-1/2")
+        ff, mm, vf = (os.path.join(tmp, "near_boundary_%s.txt" % k) for k in ("face", "matching", "vertex"))
+        r = smdf.json(["rosy", holes, "--cone-indices", cones, "--N", "2", "--boundary", "orthogonal", "--face-field-out", ff,
+                       "--matching-out", mm, "--field-out", vf], "rosy holes_cgal, a cone of -1/2 next to the boundary")
+        if r:
+            back = smdf.json(["singularities", holes, "--field", ff, "--N", "2", "--matching", mm], "singularities of the holes field")
+            worst = boundary_deviation(verts, faces, border, read_vectors(ff), 2, "orthogonal")
+            c.check(r.get("success") is True and r.get("boundary_refinement", {}).get("inserted_vertices", 0) >= 1
+                    and back is not None and back.get("singularities") == r.get("prescribed") and len(r["prescribed"]) == 14
+                    and len(read_vectors(ff)) == len(faces) and len(read_vectors(vf)) == len(verts) and worst < 1e-6,
+                    "rosy holes_cgal: 14 cones, one next to the boundary: %r border vertices inserted, the input faces read back "
+                    "the cones (%r), orthogonal to the boundary (%.3g)"
+                    % (r.get("boundary_refinement", {}).get("inserted_vertices"), back and len(back.get("singularities", [])), worst))
+    # cones of index 1 touching the boundary (their holes need a ring of interior vertices: the
+    # edges around them are split first), random ones on a disk and an annulus, N = 1
+    rng = random.Random(11)
+    for name, chi in (("mushroom_cgal.off", 1), ("annulus_igltest.obj", 0), ("face_bff.obj", 1)):
+        path = os.path.join(meshes, name)
+        if not os.path.isfile(path) or too_large(meshes, name):
+            continue
+        verts, faces = read_off(path) if name.endswith(".off") else read_obj(path)
+        border = border_faces(faces)
+        bv = {v for e, _ in border for v in e}
+        near = sorted({v for f in faces if any(x in bv for x in f) for v in f if v not in bv})
+        mode = rng.choice(("parallel", "orthogonal"))
+        big = rng.choice(near)
+        cones = {big: 1}
+        while sum(cones.values()) != chi:
+            cones[rng.choice([v for v in near if v not in cones])] = -1
+        arg = ",".join("%d:%d" % kv for kv in sorted(cones.items()))
+        ff, mm = os.path.join(tmp, "touch_face.txt"), os.path.join(tmp, "touch_matching.txt")
+        r = smdf.json(["rosy", path, "--cone-indices", arg, "--N", "1", "--boundary", mode, "--face-field-out", ff, "--matching-out", mm],
+                      "rosy %s, a cone of index 1 touching the boundary (%s)" % (name, arg))
+        if not r:
+            continue
+        back = smdf.json(["singularities", path, "--field", ff, "--N", "1", "--matching", mm], "singularities of the touching field")
+        worst = boundary_deviation(verts, faces, border, read_vectors(ff), 1, mode)
+        c.check(r.get("success") is True and "hole_refinement" in r and back is not None
+                and back.get("singularities") == r.get("prescribed") and worst < 1e-6,
+                "rosy %s --boundary %s, N = 1, cones %s (index 1 at %d, touching the boundary): read back on the input faces (%r), "
+                "deviation %.3g" % (name, mode, arg, big, back and back.get("singularities"), worst))
     annulus = os.path.join(meshes, "annulus_igltest.obj")
     if os.path.isfile(annulus):
         r = smdf.json(["rosy", annulus, "--N", "4"], "rosy annulus, free boundary")

@@ -18,6 +18,7 @@
 #include <CGAL/Surface_mesh_direction_fields/field_editing.h>
 #include <CGAL/Surface_mesh_direction_fields/field_singularities.h>
 #include <CGAL/Surface_mesh_direction_fields/field_transfer.h>
+#include <CGAL/Surface_mesh_direction_fields/refinement_field_transfer.h>
 #include <CGAL/Surface_mesh_direction_fields/holonomy_group.h>
 #include <CGAL/Surface_mesh_direction_fields/homotopy_basis.h>
 #include <CGAL/Surface_mesh_direction_fields/parallel_rosy_field.h>
@@ -167,13 +168,44 @@ Json run_rosy(const Args& args)
     method = TRIVIAL_CONNECTION;
     out["method"] = std::string(method_name(method)) + " (cones of index 1 or more spread to their neighbours)";
   }
-  const Edge_length_property lengths = mesh.add_property_map<edge_descriptor, double>("e:smdf_rosy_length", 0.).first;
-  const Face_angle_property input_angles = mesh.add_property_map<face_descriptor, double>("f:smdf_rosy_angle", 0.).first;
+  Edge_length_property lengths = mesh.add_property_map<edge_descriptor, double>("e:smdf_rosy_length", 0.).first;
+  Face_angle_property input_angles = mesh.add_property_map<face_descriptor, double>("f:smdf_rosy_angle", 0.).first;
   // the flat cone metric (flips allowed); fields along the boundary take its geodesic boundary
   // (Lai et al. 4.3: the double cover's metric restricted to the mesh)
-  const SMDF::Cone_metric_status cm = on_file(file, [&] { return SMDF::compute_cone_metric(mesh, targets, lengths); });
+  SMDF::Cone_metric_status cm = on_file(file, [&] { return SMDF::compute_cone_metric(mesh, targets, lengths); });
+  // open meshes: where a cone next to the boundary stalls the flow, the border edge it faces is
+  // split (on the input surface) and the flow run again; everything below then runs on that
+  // refinement, and the outputs are brought back to the input's faces at the end
+  Mesh original;
+  SMDF::Delaunay_refinement_status refinement;
+  std::vector<std::pair<std::size_t, double>> border_points;
+  int refinement_rounds = 0;
+  for(; open && !cm.converged && refinement_rounds < 6; ++refinement_rounds) {
+    const auto more = border_points_to_insert(refinement_rounds ? original : mesh, mesh, refinement_rounds ? &refinement : nullptr, cm, lengths);
+    if(more.empty()) break;
+    if(refinement_rounds == 0) original = mesh;
+    border_points.insert(border_points.end(), more.begin(), more.end());
+    Mesh refined;
+    refinement = on_file(file, [&] { return SMDF::refine_at_edge_points(original, border_points, refined); });
+    if(!refinement.success) throw Error(file + ": the boundary refinement failed: " + refinement.message);
+    const Vertex_double_property original_targets = original.property_map<vertex_descriptor, double>("v:smdf_rosy_target").first;
+    mesh = std::move(refined);
+    targets = mesh.add_property_map<vertex_descriptor, double>("v:smdf_rosy_target", 0.).first;   // new vertices: straight
+    for(vertex_descriptor v : vertices(original)) targets[v] = original_targets[v];
+    lengths = mesh.add_property_map<edge_descriptor, double>("e:smdf_rosy_length", 0.).first;
+    input_angles = mesh.add_property_map<face_descriptor, double>("f:smdf_rosy_angle", 0.).first;
+    cm = on_file(file, [&] { return SMDF::compute_cone_metric(mesh, targets, lengths); });
+  }
+  const bool refined_input = refinement_rounds > 0 && num_vertices(mesh) > num_vertices(original);
   timings["metric_s"] = clock.lap();
   out["metric"] = metric_json(cm, nullptr);
+  if(refined_input) {
+    Json r = Json::object();
+    r["rounds"] = refinement_rounds;
+    r["inserted_vertices"] = refinement.inserted.size();
+    r["faces"] = refinement.faces;
+    out["boundary_refinement"] = std::move(r);
+  }
   if(open) {
     Json bt = Json::array();
     for(const auto& loop : bgeo.loops) {
@@ -481,17 +513,47 @@ Json run_rosy(const Args& args)
     else if(!(deviation <= 1e-6))
       failure = "the field on the input faces does not follow the boundary (deviation " + std::to_string(deviation) + " rad)";
   }
+  // 7''. after a boundary refinement: the face field and its matching on the input's own faces
+  Face_angle_property coarse_angles;
+  Edge_matching_property coarse_matching;
+  if(failure.empty() && refined_input) {
+    coarse_angles = original.add_property_map<face_descriptor, double>("f:smdf_rosy_coarse_angle", 0.).first;
+    coarse_matching = original.add_property_map<edge_descriptor, int>("e:smdf_rosy_coarse_matching", 0).first;
+    const SMDF::Field_transfer_status ts =
+        SMDF::transfer_face_field_from_refinement(mesh, original, refinement, N, embedded_angles, input_matching, coarse_angles, coarse_matching);
+    const SMDF::Field_topology<Mesh> on_original =
+        ts.success ? SMDF::field_singularities(original, coarse_angles, SMDF::parameters::symmetry_order(N).matching(coarse_matching))
+                   : SMDF::Field_topology<Mesh>();
+    const double deviation = method == BOUNDARY_ALIGNED && ts.success
+        ? SMDF::max_boundary_deviation(original, N, coarse_angles, SMDF::parameters::orthogonal_to_boundary(opt.boundary == ORTHOGONAL_BOUNDARY))
+        : 0.;
+    Json& r = out["boundary_refinement"];
+    r["found"] = found_list(on_original);
+    r["max_distortion"] = ts.max_distortion;
+    if(method == BOUNDARY_ALIGNED) r["max_boundary_deviation"] = deviation;
+    const std::map<vertex_descriptor, double> got(on_original.singularities.begin(), on_original.singularities.end());
+    if(!ts.success) failure = "the field could not be brought back from the boundary refinement to the input faces: " + ts.message;
+    else if(got != prescribed_indices(original, cones, N))
+      failure = "the field on the input faces (brought back from the boundary refinement) reads back other singularities than the cones";
+    else if(!(deviation <= 1e-6))
+      failure = "the field on the input faces (brought back from the boundary refinement) does not follow the boundary (deviation " +
+                std::to_string(deviation) + " rad)";
+  }
   out["success"] = failure.empty();
   out["timings"] = std::move(timings);
   if(!failure.empty()) throw Failed_result{out, file + ": " + failure, 3};
 
   // 8. the files, on the input mesh: vertex and face fields in 3D, the matching, the pictures
+  // (after a boundary refinement: the input's vertices come first in it; its faces through 7'')
+  Mesh& input = refined_input ? original : mesh;
+  const Face_angle_property input_face_angles = refined_input ? coarse_angles : embedded_angles;
+  const Edge_matching_property output_matching = refined_input ? coarse_matching : input_matching;
   if(args.has("field-out") && method != ROTATION_COMPENSATION) {
     // the face field's vertex version: zero at the singularities, exact along a followed boundary
-    auto vv = mesh.add_property_map<vertex_descriptor, K::Vector_3>("v:smdf_rosy_vector").first;
-    SMDF::vertex_field_from_face_field(mesh, N, embedded_angles, input_matching, vv);
+    auto vv = input.add_property_map<vertex_descriptor, K::Vector_3>("v:smdf_rosy_vector").first;
+    SMDF::vertex_field_from_face_field(input, N, input_face_angles, output_matching, vv);
     std::vector<K::Vector_3> v;
-    for(vertex_descriptor x : vertices(mesh)) v.push_back(vv[x]);
+    for(vertex_descriptor x : vertices(input)) v.push_back(vv[x]);
     write_vectors(args.value("field-out"), v);
   } else if(args.has("field-out")) {
     auto vv = mesh.add_property_map<vertex_descriptor, K::Vector_3>("v:smdf_rosy_vector").first;
@@ -502,22 +564,23 @@ Json run_rosy(const Args& args)
       SMDF::vertex_field_to_vectors(mesh, in_angles, vv);
     }
     std::vector<K::Vector_3> v;
-    for(vertex_descriptor x : vertices(mesh)) v.push_back(vv[x] * vertex_lengths[carrier_vertex(x)]);
+    for(vertex_descriptor x : vertices(input)) v.push_back(vv[x] * vertex_lengths[carrier_vertex(x)]);
     write_vectors(args.value("field-out"), v);
   }
   if(args.has("face-field-out") || args.has("svg") || args.has("hatching-svg")) {
-    const Face_vector_property vectors = mesh.add_property_map<face_descriptor, K::Vector_3>("f:smdf_rosy_vector").first;
-    if(on_input) SMDF::field_angles_to_vectors(mesh, angles, vectors, SMDF::parameters::edge_length_map(flat));
+    const Face_vector_property vectors = input.add_property_map<face_descriptor, K::Vector_3>("f:smdf_rosy_vector").first;
+    if(refined_input) SMDF::field_angles_to_vectors(input, coarse_angles, vectors);
+    else if(on_input) SMDF::field_angles_to_vectors(mesh, angles, vectors, SMDF::parameters::edge_length_map(flat));
     else SMDF::field_angles_to_vectors(mesh, input_angles, vectors);
     if(args.has("face-field-out")) {
       std::vector<K::Vector_3> v;
-      for(face_descriptor f : faces(mesh)) v.push_back(vectors[f]);
+      for(face_descriptor f : faces(input)) v.push_back(vectors[f]);
       write_vectors(args.value("face-field-out"), v);
     }
-    if(args.has("svg")) write_field_svg_file(args, mesh, vectors, N, found, svg);
-    if(args.has("hatching-svg")) out["hatching"] = write_hatching_svg(args, file, mesh, vectors, N, svg);
+    if(args.has("svg")) write_field_svg_file(args, input, vectors, N, found, svg);
+    if(args.has("hatching-svg")) out["hatching"] = write_hatching_svg(args, file, input, vectors, N, svg);
   }
-  if(args.has("matching-out")) write_matching(args.value("matching-out"), mesh, input_matching);
+  if(args.has("matching-out")) write_matching(args.value("matching-out"), input, output_matching);
   return out;
 }
 
@@ -559,14 +622,22 @@ Command rosy_command()
           "  trivial-connection     Crane et al. on the same metric, with index K / 2 pi at the cones\n"
           "Cones of index 1 or more (K >= 2 pi) punch a hole (4.1.1): the field of the holed\n"
           "surface's flat metric (parallel, or with the other methods its trivial connection with\n"
-          "the handles' holonomy compensated), the hole filled with the cone's index.\n"
+          "the handles' holonomy compensated), the hole filled with the cone's index. A cone whose\n"
+          "ring touches the boundary or another such cone first gets room: its edges are split\n"
+          "close to it (JSON hole_refinement: {inserted_vertices, faces}); the outputs are on the\n"
+          "input's faces (input_read_back).\n"
           "Open meshes: --boundary free gives the boundary vertices not named in --cones the input's\n"
           "turning angle, changed so that each boundary loop turns by a multiple of 2 pi / N and\n"
           "Gauss-Bonnet holds; --boundary parallel|orthogonal rounds each boundary vertex's turning\n"
           "angle to a multiple of 2 pi / N (pi / N for odd N) and builds the field parallel or\n"
           "orthogonal to every boundary edge (4.3) from the mesh's own flat metric with a geodesic\n"
           "boundary (flips allowed; the double cover's, restricted), with rotation compensation of\n"
-          "the handles.\n"
+          "the handles. Where a cone next to the boundary stalls that metric (its triangle on a\n"
+          "border edge opens to pi; the double cover would flip the edge), the border edges seen\n"
+          "under more than 0.8 pi are split on the input surface and the flow runs again (up to 6\n"
+          "rounds); the field is then brought back to the input's faces and edges and read back\n"
+          "there: boundary_refinement: {rounds, inserted_vertices, faces, found, max_distortion,\n"
+          "max_boundary_deviation}.\n"
           "--edit and --length edit the vertex field (4.2): harmonic interpolation of the rotation\n"
           "and the log-length with the cotan Laplacian; a line without weight is a hard constraint,\n"
           "one with weight lambda a soft one. Directions are projected on the vertex tangent plane.\n"

@@ -160,6 +160,49 @@ void open_mesh_targets(const Mesh& mesh, const Boundary_geometry& b, int N, Boun
                   " (not in (-pi, pi)); give the boundary's turning angles with --cones");
 }
 
+std::vector<std::pair<std::size_t, double>> border_points_to_insert(const Mesh& original, const Mesh& mesh,
+                                                                    const SMDF::Delaunay_refinement_status* refinement,
+                                                                    const SMDF::Cone_metric_status& cm, const Edge_length_property& lengths)
+{
+  // border edges (as vertex pairs of `mesh`) whose apex angle exceeds 0.8 pi: the degenerating triangles
+  std::vector<std::pair<std::size_t, std::size_t>> wide;
+  auto apex_wide = [](double c, double a, double b) { return (a * a + b * b - c * c) / (2 * a * b) < std::cos(0.8 * CGAL_PI); };
+  if(cm.triangulation_changed) {
+    const SMDF::Intrinsic_triangulation& t = cm.intrinsic_triangulation;
+    for(std::size_t f = 0; f < t.number_of_faces(); ++f)
+      for(int k = 0, h = t.halfedge(int(f)); k < 3; ++k, h = t.next(h)) {
+        if(t.face(h ^ 1) >= 0) continue;
+        if(apex_wide(t.length(h >> 1), t.length(t.next(h) >> 1), t.length(t.next(t.next(h)) >> 1)))
+          wide.emplace_back(std::size_t(t.source(h)), std::size_t(t.target(h)));
+      }
+  } else {
+    for(halfedge_descriptor h : halfedges(mesh)) {
+      if(is_border(h, mesh) || !is_border(opposite(h, mesh), mesh)) continue;
+      if(apex_wide(lengths[edge(h, mesh)], lengths[edge(next(h, mesh), mesh)], lengths[edge(prev(h, mesh), mesh)]))
+        wide.emplace_back(index(source(h, mesh)), index(target(h, mesh)));
+    }
+  }
+  // on the edges of the original mesh: a new vertex knows its edge and parameter
+  const std::size_t nv = num_vertices(original);
+  std::vector<std::pair<std::size_t, double>> points;
+  for(const auto& w : wide) {
+    std::size_t e = 0;
+    if(w.first >= nv) e = refinement->inserted[w.first - nv].first;
+    else if(w.second >= nv) e = refinement->inserted[w.second - nv].first;
+    else {
+      const auto h = halfedge(vertex_descriptor(std::uint32_t(w.first)), vertex_descriptor(std::uint32_t(w.second)), original);
+      if(!h.second) continue;
+      e = edge(h.first, original).idx();
+    }
+    const halfedge_descriptor h = halfedge(edge_descriptor(std::uint32_t(e)), original);
+    auto param = [&](std::size_t v) {
+      return v >= nv ? refinement->inserted[v - nv].second : index(source(h, original)) == v ? 0. : 1.;
+    };
+    points.emplace_back(e, 0.5 * (param(w.first) + param(w.second)));
+  }
+  return points;
+}
+
 std::vector<std::pair<vertex_descriptor, double>> automatic_cones(const Args& args, const std::string& file, const Mesh& mesh,
                                                                   int N, Boundary_mode mode, Json& json)
 {

@@ -11,6 +11,7 @@
 
 #include <CGAL/Surface_mesh_direction_fields/Trivial_connection.h>
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
+#include <CGAL/Surface_mesh_direction_fields/delaunay_refinement.h>
 
 #include <algorithm>
 #include <map>
@@ -62,6 +63,17 @@ Boundary_geometry boundary_geometry(const Mesh& mesh);
 //    turning rounded, then moved by a step where the rounding cut most until Gauss-Bonnet holds.
 void open_mesh_targets(const Mesh& mesh, const Boundary_geometry& b, int N, Boundary_mode mode,
                        const std::vector<std::pair<vertex_descriptor, double>>& cones, Vertex_double_property targets);
+
+// Open meshes whose flat cone metric with a geodesic boundary stalled: the points where the
+// boundary needs a vertex. A cone next to the boundary wants the triangle between it and a
+// border edge to open to pi (in the double cover that edge would flip); the middle of every
+// border edge of the stalled triangulation seen from its apex under more than 0.8 pi, as
+// (edge of `original`, parameter from the source of its halfedge). `mesh` is `original`
+// (refinement null) or refine_at_edge_points() of it; `lengths` the stalled lengths on `mesh`'s
+// edges when the flow made no flips.
+std::vector<std::pair<std::size_t, double>> border_points_to_insert(const Mesh& original, const Mesh& mesh,
+                                                                    const SMDF::Delaunay_refinement_status* refinement,
+                                                                    const SMDF::Cone_metric_status& cm, const Edge_length_property& lengths);
 
 // --edit FILE ('vertex x y z [weight]') and --length FILE ('vertex length [weight]'): the pairs
 // and the weight of each (0, no weight given: hard).

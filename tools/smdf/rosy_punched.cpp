@@ -12,6 +12,7 @@
 #include <CGAL/Surface_mesh_direction_fields/field_singularities.h>
 #include <CGAL/Surface_mesh_direction_fields/field_transfer.h>
 #include <CGAL/Surface_mesh_direction_fields/parallel_rosy_field.h>
+#include <CGAL/Surface_mesh_direction_fields/refinement_field_transfer.h>
 #include <CGAL/Surface_mesh_direction_fields/topology.h>
 #include <CGAL/Surface_mesh_direction_fields/vertex_field_from_faces.h>
 
@@ -38,9 +39,88 @@ K::Vector_3 face_normal(const Mesh& mesh, face_descriptor f)
 
 } // namespace
 
+namespace {
+
+// A cone of index >= 1 whose ring touches the boundary, or another such cone within two edges,
+// has no room for its hole: points at one distance eps from it on all its edges make that room.
+// Each face around it then keeps the ear (cone, p, q) in its Delaunay re-triangulation (eps
+// below half of h cos(theta / 2): h the cone's height over the opposite side, theta its angle,
+// the ear's circumcircle stays off the other points), so its new ring lies inside the surface;
+// eps is at most a third of every edge, so two such cones end three edges apart. As (edge index,
+// parameter).
+std::vector<std::pair<std::size_t, double>> hole_room_points(const Mesh& mesh, const std::vector<std::pair<vertex_descriptor, double>>& cones)
+{
+  std::vector<char> big(num_vertices(mesh), 0);
+  for(const auto& c : cones)
+    if(!is_border(c.first, mesh) && !(c.second < 2 * CGAL_PI - 1e-9)) big[c.first.idx()] = 1;
+  std::vector<std::pair<std::size_t, double>> points;
+  for(const auto& c : cones) {
+    const vertex_descriptor v = c.first;
+    if(!big[v.idx()]) continue;
+    bool cramped = false;
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, mesh), mesh)) {
+      const vertex_descriptor w = source(h, mesh);
+      cramped = cramped || is_border(w, mesh) || big[w.idx()];
+      for(halfedge_descriptor g : halfedges_around_target(halfedge(w, mesh), mesh))
+        cramped = cramped || (source(g, mesh) != v && big[source(g, mesh).idx()]);
+    }
+    if(!cramped) continue;
+    double eps = HUGE_VAL;
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, mesh), mesh)) {
+      const double L = std::sqrt(CGAL::squared_distance(mesh.point(source(h, mesh)), mesh.point(v)));
+      eps = (std::min)(eps, L / 3);
+      if(is_border(h, mesh)) continue;
+      const K::Point_3 &a = mesh.point(source(h, mesh)), &b = mesh.point(target(next(h, mesh), mesh)), &o = mesh.point(v);
+      const K::Vector_3 u = a - o, w = b - o;
+      const double theta = std::atan2(std::sqrt(CGAL::cross_product(u, w).squared_length()), u * w);
+      const double height = std::sqrt(CGAL::cross_product(u, w).squared_length() / (b - a).squared_length());
+      eps = (std::min)(eps, 0.5 * height * std::cos(theta / 2));
+    }
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, mesh), mesh)) {
+      const edge_descriptor e = edge(h, mesh);
+      const double t = eps / std::sqrt(CGAL::squared_distance(mesh.point(source(h, mesh)), mesh.point(v)));
+      points.emplace_back(e.idx(), source(halfedge(e, mesh), mesh) == v ? t : 1 - t);
+    }
+  }
+  return points;
+}
+
+// run_rosy_punched() on `mesh`, which is `original` refined by `refinement` when these are
+// given: the outputs are then brought back to the original's faces.
+Json punched_on(const Args& args, const std::string& file, Mesh& mesh, int N,
+                const std::vector<std::pair<vertex_descriptor, double>>& cones, Vertex_double_property targets,
+                Rosy_method method, Boundary_mode mode, const SMDF::Svg_options& svg, std::string* holed_failure,
+                Mesh* original, const SMDF::Delaunay_refinement_status* refinement);
+
+} // namespace
+
 Json run_rosy_punched(const Args& args, const std::string& file, Mesh& mesh, int N,
                       const std::vector<std::pair<vertex_descriptor, double>>& cones, Vertex_double_property targets,
                       Rosy_method method, Boundary_mode mode, const SMDF::Svg_options& svg, std::string* holed_failure)
+{
+  const std::vector<std::pair<std::size_t, double>> points = hole_room_points(mesh, cones);
+  if(points.empty()) return punched_on(args, file, mesh, N, cones, targets, method, mode, svg, holed_failure, nullptr, nullptr);
+  Mesh refined;
+  const SMDF::Delaunay_refinement_status rs = on_file(file, [&] { return SMDF::refine_at_edge_points(mesh, points, refined); });
+  if(!rs.success) throw Error(file + ": the refinement around the cones of index 1 or more failed: " + rs.message);
+  Vertex_double_property refined_targets = refined.add_property_map<vertex_descriptor, double>("v:smdf_rosy_target", 0.).first;
+  for(vertex_descriptor v : vertices(mesh)) refined_targets[v] = targets[v];   // the input's vertices come first
+  Json out = punched_on(args, file, refined, N, cones, refined_targets, method, mode, svg, holed_failure, &mesh, &rs);
+  if(!holed_failure || holed_failure->empty()) {
+    Json r = Json::object();
+    r["inserted_vertices"] = rs.inserted.size();
+    r["faces"] = rs.faces;
+    out["hole_refinement"] = std::move(r);
+  }
+  return out;
+}
+
+namespace {
+
+Json punched_on(const Args& args, const std::string& file, Mesh& mesh, int N,
+                const std::vector<std::pair<vertex_descriptor, double>>& cones, Vertex_double_property targets,
+                Rosy_method method, Boundary_mode mode, const SMDF::Svg_options& svg, std::string* holed_failure,
+                Mesh* original, const SMDF::Delaunay_refinement_status* refinement)
 {
   Json out = Json::object();
   Json timings = Json::object();
@@ -300,25 +380,50 @@ Json run_rosy_punched(const Args& args, const std::string& file, Mesh& mesh, int
   out["success"] = true;
   out["timings"] = std::move(timings);
 
-  // 8. the files
-  SMDF::field_angles_to_vectors(mesh, in_angles, vectors);
+  // 8. the files, on the input's faces (after a refinement: brought back to them and read back there)
+  Mesh& input = original ? *original : mesh;
+  Face_angle_property input_angles = in_angles;
+  Edge_matching_property input_match = in_match;
+  if(original) {
+    input_angles = original->add_property_map<face_descriptor, double>("f:smdf_punched_coarse_angle", 0.).first;
+    input_match = original->add_property_map<edge_descriptor, int>("e:smdf_punched_coarse_matching", 0).first;
+    const SMDF::Field_transfer_status ts =
+        SMDF::transfer_face_field_from_refinement(mesh, *original, *refinement, N, in_angles, in_match, input_angles, input_match);
+    if(!ts.success) throw fail("the field could not be brought back from the refinement around the cones: " + ts.message);
+    const SMDF::Field_topology<Mesh> back = SMDF::field_singularities(*original, input_angles, rnp.matching(input_match));
+    out["input_read_back"] = Json::object();
+    out["input_read_back"]["found"] = found_list(back);
+    out["input_read_back"]["max_distortion"] = ts.max_distortion;
+    if(std::map<vertex_descriptor, double>(back.singularities.begin(), back.singularities.end()) != prescribed_indices(*original, cones, N))
+      throw fail("the field on the input faces (brought back from the refinement around the cones) reads back other singularities than the cones");
+    if(open && mode != FREE_BOUNDARY) {
+      const double worst = SMDF::max_boundary_deviation(*original, N, input_angles,
+                                                        SMDF::parameters::orthogonal_to_boundary(mode == ORTHOGONAL_BOUNDARY));
+      out["input_read_back"]["max_boundary_deviation"] = worst;
+      if(!(worst < 1e-6)) throw fail("the field on the input faces does not follow the boundary everywhere (deviation " + format_real(worst) + " rad)");
+    }
+  }
+  const Face_vector_property input_vectors = input.add_property_map<face_descriptor, K::Vector_3>("f:smdf_punched_output_vector").first;
+  SMDF::field_angles_to_vectors(input, input_angles, input_vectors);
   if(args.has("face-field-out")) {
     std::vector<K::Vector_3> v;
-    for(face_descriptor f : faces(mesh)) v.push_back(vectors[f]);
+    for(face_descriptor f : faces(input)) v.push_back(input_vectors[f]);
     write_vectors(args.value("face-field-out"), v);
   }
-  if(args.has("matching-out")) write_matching(args.value("matching-out"), mesh, in_match);
+  if(args.has("matching-out")) write_matching(args.value("matching-out"), input, input_match);
   if(args.has("field-out")) {   // the vertex version: 0 at the singularities
-    auto vv = mesh.add_property_map<vertex_descriptor, K::Vector_3>("v:smdf_punched_vector").first;
-    SMDF::vertex_field_from_face_field(mesh, N, in_angles, in_match, vv);
+    auto vv = input.add_property_map<vertex_descriptor, K::Vector_3>("v:smdf_punched_vector").first;
+    SMDF::vertex_field_from_face_field(input, N, input_angles, input_match, vv);
     std::vector<K::Vector_3> v;
-    for(vertex_descriptor x : vertices(mesh)) v.push_back(vv[x]);
+    for(vertex_descriptor x : vertices(input)) v.push_back(vv[x]);
     write_vectors(args.value("field-out"), v);
   }
-  if(args.has("svg")) write_field_svg_file(args, mesh, vectors, N, found, svg);
-  if(args.has("hatching-svg")) out["hatching"] = write_hatching_svg(args, file, mesh, vectors, N, svg);
+  if(args.has("svg")) write_field_svg_file(args, input, input_vectors, N, found, svg);
+  if(args.has("hatching-svg")) out["hatching"] = write_hatching_svg(args, file, input, input_vectors, N, svg);
   return out;
 }
+
+} // namespace
 
 Json spread_to_neighbours(const Mesh& mesh, const std::vector<std::pair<vertex_descriptor, double>>& cones, Vertex_double_property targets)
 {

@@ -160,131 +160,22 @@ struct Delaunay_refiner
 
 } // namespace internal
 
-/// \ingroup PkgSurfaceMeshDirectionFieldsRemeshing
-/// Refines `tm` into `out`, a triangulation of the same surface in which every edge is locally
-/// Delaunay, by adding vertices on the edges of `tm` only (a conforming Delaunay refinement).
-///
-/// Each input triangle, with the points of the refinement on its edges, is triangulated by the
-/// Delaunay triangulation of these points (a convex polygon, whose sides, the sub-segments of
-/// the input edges, are therefore edges of it); edges inside a triangle are then Delaunay. An
-/// input edge is split until each of its sub-segments is Delaunay too: the two apexes (the
-/// points of the two adjacent triangles that see it under the largest angle) see it under at
-/// most \f$\pi\f$ together. A sub-segment is split at the foot of the wider apex, kept within
-/// its middle 60 %; one at an input vertex at a power of two of its length from that vertex
-/// (Ruppert's concentric shells), which keeps small input angles from splitting without end.
-///
-/// Use: `compute_cone_metric()` without intrinsic flips needs a triangulation that stays valid
-/// under the target metric; a Delaunay one usually does (e.g. Cheburashka with eight cones of
-/// \f$\pi/2\f$: no convergence on the 13,334 input faces, converged on their 23,196-face
-/// refinement). Every output face lies inside one input face (`face_origin`), so a remesh pulled
-/// back through `out` lies on the input surface.
-///
-/// `out` must be empty (its property maps may exist already, e.g. those of `np_out`). The
-/// input vertices become the first output vertices, in the order of `vertex_index_map`;
-/// the others are listed in the status. Throws `Input_error` for the invalid inputs of
-/// `Intrinsic_mesh`.
-///
-/// \cgalNamedParamsBegin
-///   \cgalParamNBegin{edge_length_map}
-///     \cgalParamDescription{the metric whose Delaunay property is wanted}
-///     \cgalParamDefault{Euclidean lengths from `vertex_point_map`}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{vertex_point_map}
-///     \cgalParamDescription{the positions of `tm`'s vertices; the new vertices are placed by linear interpolation along the input edges}
-///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{number_of_iterations}
-///     \cgalParamDescription{the largest number of vertices to add; beyond it, beyond 1024 on one
-///       input edge (next to a needle triangle), or beyond \f$4096 F + 10^8\f$ points tested for
-///       the Delaunay property (\f$F\f$ input faces; 60 to 310 per face on ordinary meshes), the
-///       status fails with a message}
-///     \cgalParamDefault{64 times the number of faces, plus 4096}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{vertex_index_map, edge_index_map, face_index_map}
-///     \cgalParamDescription{as for `Intrinsic_mesh`: the numbers used in the status}
-///   \cgalParamNEnd
-/// \cgalNamedParamsEnd
-/// `np_out`: `edge_length_map`, a writable property map of `out`'s edges that receives the
-/// refinement's lengths in the metric (along an input edge its length times the parameter
-/// span, inside an input triangle the distance in its layout);
-/// `vertex_point_map` of `out`.
-/// \tparam PolygonMesh a model of `MutableFaceGraph` whose vertex points are constructible from
-/// three doubles
-template <typename TriangleMesh, typename PolygonMesh, typename NamedParameters = parameters::Default_named_parameters,
-          typename NamedParametersOut = parameters::Default_named_parameters>
-Delaunay_refinement_status conforming_delaunay_refinement(const TriangleMesh& tm, PolygonMesh& out,
-                                                          const NamedParameters& np = parameters::default_values(),
-                                                          const NamedParametersOut& np_out = parameters::default_values())
+namespace internal {
+
+// Steps 2 and 3 of a refinement: the output mesh from the points r.inner on the input's edges,
+// each input triangle the Delaunay triangulation of its points; fills the status (vertices,
+// faces, inserted, face_origin, the Delaunay statistics) and returns false with its message
+// when a face cannot be added.
+template <typename TriangleMesh, typename PolygonMesh, typename NamedParameters, typename NamedParametersOut>
+bool write_refinement(const TriangleMesh& tm, const Mesh_arrays<TriangleMesh>& m, const Delaunay_refiner<TriangleMesh>& r,
+                      PolygonMesh& out, const NamedParameters& np, const NamedParametersOut& np_out, Delaunay_refinement_status& st)
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  typedef internal::Delaunay_refiner<TriangleMesh> Refiner;
+  typedef Delaunay_refiner<TriangleMesh> Refiner;
   typedef typename Refiner::P2 P2;
   typedef boost::graph_traits<PolygonMesh> OGT;
-  const Intrinsic_mesh<TriangleMesh> im(tm, np);
-  const internal::Mesh_arrays<TriangleMesh>& m = im.arrays();
   const std::size_t nv = m.number_of_vertices(), ne = m.number_of_edges(), nf = m.number_of_faces();
-  const std::size_t budget = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 64 * nf + 4096);
-  Delaunay_refinement_status st;
-  if(!CGAL::is_empty(out))   // not cleared: that would remove the property maps of np_out
-    throw Input_error(Input_error::INVALID_ARGUMENT, "conforming_delaunay_refinement: the output mesh must be empty");
-  Refiner r(m);
-
-  // 1. split the sub-segments that are not Delaunay, edge by edge, until none is left
-  std::vector<int> work;
-  std::vector<char> queued(ne, 1);
-  for(std::size_t e = ne; e-- > 0;) work.push_back(int(e));
-  std::size_t added = 0;
-  while(!work.empty()) {
-    const int e = work.back();
-    work.pop_back();
-    queued[std::size_t(e)] = 0;
-    std::vector<double>& t = r.inner[std::size_t(e)];
-    const double L = m.length[std::size_t(e)];
-    for(std::size_t i = 0; i <= t.size();) {
-      const double t0 = i == 0 ? 0. : t[i - 1], t1 = i == t.size() ? 1. : t[i];
-      // Delaunay across the input edge: the apexes on its two sides see it under at most pi
-      if(m.is_border_edge(e)) break;
-      double foot0 = 0, foot1 = 0;
-      const double c0 = r.apex_cot(2 * e, t0, t1, foot0), c1 = r.apex_cot(2 * e + 1, t0, t1, foot1);
-      if(c0 + c1 >= -1e-12) { ++i; continue; }   // angles summing to at most pi
-      const double foot = c0 <= c1 ? foot0 : foot1;
-      // at the foot of the wider apex (kept off the ends): fewer splits than the middle
-      double s = t0 + (t1 - t0) * (std::min)(0.8, (std::max)(0.2, foot));
-      if((i == 0) != (i == t.size())) {
-        // one end is an input vertex: split at a power of two from it (points at equal
-        // distances on two edges never encroach each other)
-        const double d = std::exp2(std::round(std::log2((t1 - t0) * L / 2))) / L;
-        s = i == 0 ? d : 1 - d;
-      }
-      // A needle (angle theta) takes about 1/theta points along its long sides, and each test
-      // scans the points of a face: 1024 per edge bounds that (quadratic) work, and a cap on the
-      // points tested the sum of it (60 to 310 per input face on the shared and benchmark meshes).
-      const bool too_much_work = r.tests > 4096 * nf + 100000000;
-      if(!(s > t0 && s < t1) || (t1 - t0) < 1e-13 || t.size() >= 1024 || ++added > budget || too_much_work) {
-        std::ostringstream os;
-        if(added > budget) os << "more than " << budget << " vertices needed (number_of_iterations)";
-        else if(too_much_work) os << "more than " << r.tests << " point tests needed (many needle triangles?)";
-        else {
-          double smallest = CGAL_PI;
-          for(int side = 0; side < 2; ++side)
-            for(int g = 2 * e + side, k = 0; k < 3; ++k, g = m.next[std::size_t(g)]) smallest = (std::min)(smallest, m.angle[std::size_t(g)]);
-          os << "edge " << e << " needs more than " << (t.size() >= 1024 ? "1024 points" : "splits below 1e-13 of its length")
-             << ": its triangles are too thin (smallest angle " << smallest * 180 / CGAL_PI << " degrees)";
-        }
-        st.message = os.str();
-        return st;
-      }
-      t.insert(t.begin() + std::ptrdiff_t(i), s);   // sub-segment i is now (t0, s): check it again
-      for(int side = 0; side < 2; ++side) {
-        const int h = 2 * e + side;
-        if(m.face[std::size_t(h)] < 0) continue;
-        for(int g : {m.next[std::size_t(h)], m.prev(h)})
-          if(!queued[std::size_t(g >> 1)]) { queued[std::size_t(g >> 1)] = 1; work.push_back(g >> 1); }
-      }
-    }
-  }
-
   // 2. the output's vertices: the input's, then the inner points edge by edge
   std::vector<std::size_t> first_inner(ne);
   std::size_t n_out = nv;
@@ -370,7 +261,7 @@ Delaunay_refinement_status conforming_delaunay_refinement(const TriangleMesh& tm
       const typename OGT::face_descriptor of = CGAL::Euler::add_face(vs, out);
       if(of == OGT::null_face()) {
         st.message = "the refinement of face " + std::to_string(f) + " is not manifold (degenerate input face?)";
-        return st;
+        return false;
       }
       st.face_origin.push_back(f);
       if constexpr(has_lengths) {
@@ -395,10 +286,181 @@ Delaunay_refinement_status conforming_delaunay_refinement(const TriangleMesh& tm
       }
   st.vertices = num_vertices(out);
   st.faces = num_faces(out);
+  return true;
+}
+
+} // namespace internal
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsRemeshing
+/// Refines `tm` into `out`, a triangulation of the same surface in which every edge is locally
+/// Delaunay, by adding vertices on the edges of `tm` only (a conforming Delaunay refinement).
+///
+/// Each input triangle, with the points of the refinement on its edges, is triangulated by the
+/// Delaunay triangulation of these points (a convex polygon, whose sides, the sub-segments of
+/// the input edges, are therefore edges of it); edges inside a triangle are then Delaunay. An
+/// input edge is split until each of its sub-segments is Delaunay too: the two apexes (the
+/// points of the two adjacent triangles that see it under the largest angle) see it under at
+/// most \f$\pi\f$ together. A sub-segment is split at the foot of the wider apex, kept within
+/// its middle 60 %; one at an input vertex at a power of two of its length from that vertex
+/// (Ruppert's concentric shells), which keeps small input angles from splitting without end.
+///
+/// Use: `compute_cone_metric()` without intrinsic flips needs a triangulation that stays valid
+/// under the target metric; a Delaunay one usually does (e.g. Cheburashka with eight cones of
+/// \f$\pi/2\f$: no convergence on the 13,334 input faces, converged on their 23,196-face
+/// refinement). Every output face lies inside one input face (`face_origin`), so a remesh pulled
+/// back through `out` lies on the input surface.
+///
+/// `out` must be empty (its property maps may exist already, e.g. those of `np_out`). The
+/// input vertices become the first output vertices, in the order of `vertex_index_map`;
+/// the others are listed in the status. Throws `Input_error` for the invalid inputs of
+/// `Intrinsic_mesh`.
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{edge_length_map}
+///     \cgalParamDescription{the metric whose Delaunay property is wanted}
+///     \cgalParamDefault{Euclidean lengths from `vertex_point_map`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the positions of `tm`'s vertices; the new vertices are placed by linear interpolation along the input edges}
+///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_iterations}
+///     \cgalParamDescription{the largest number of vertices to add; beyond it, beyond 1024 on one
+///       input edge (next to a needle triangle), or beyond \f$4096 F + 10^8\f$ points tested for
+///       the Delaunay property (\f$F\f$ input faces; 60 to 310 per face on ordinary meshes), the
+///       status fails with a message}
+///     \cgalParamDefault{64 times the number of faces, plus 4096}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map, edge_index_map, face_index_map}
+///     \cgalParamDescription{as for `Intrinsic_mesh`: the numbers used in the status}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+/// `np_out`: `edge_length_map`, a writable property map of `out`'s edges that receives the
+/// refinement's lengths in the metric (along an input edge its length times the parameter
+/// span, inside an input triangle the distance in its layout);
+/// `vertex_point_map` of `out`.
+/// \tparam PolygonMesh a model of `MutableFaceGraph` whose vertex points are constructible from
+/// three doubles
+template <typename TriangleMesh, typename PolygonMesh, typename NamedParameters = parameters::Default_named_parameters,
+          typename NamedParametersOut = parameters::Default_named_parameters>
+Delaunay_refinement_status conforming_delaunay_refinement(const TriangleMesh& tm, PolygonMesh& out,
+                                                          const NamedParameters& np = parameters::default_values(),
+                                                          const NamedParametersOut& np_out = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const Intrinsic_mesh<TriangleMesh> im(tm, np);
+  const internal::Mesh_arrays<TriangleMesh>& m = im.arrays();
+  const std::size_t ne = m.number_of_edges(), nf = m.number_of_faces();
+  const std::size_t budget = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 64 * nf + 4096);
+  Delaunay_refinement_status st;
+  if(!CGAL::is_empty(out))   // not cleared: that would remove the property maps of np_out
+    throw Input_error(Input_error::INVALID_ARGUMENT, "conforming_delaunay_refinement: the output mesh must be empty");
+  internal::Delaunay_refiner<TriangleMesh> r(m);
+
+  // 1. split the sub-segments that are not Delaunay, edge by edge, until none is left
+  std::vector<int> work;
+  std::vector<char> queued(ne, 1);
+  for(std::size_t e = ne; e-- > 0;) work.push_back(int(e));
+  std::size_t added = 0;
+  while(!work.empty()) {
+    const int e = work.back();
+    work.pop_back();
+    queued[std::size_t(e)] = 0;
+    std::vector<double>& t = r.inner[std::size_t(e)];
+    const double L = m.length[std::size_t(e)];
+    for(std::size_t i = 0; i <= t.size();) {
+      const double t0 = i == 0 ? 0. : t[i - 1], t1 = i == t.size() ? 1. : t[i];
+      // Delaunay across the input edge: the apexes on its two sides see it under at most pi
+      if(m.is_border_edge(e)) break;
+      double foot0 = 0, foot1 = 0;
+      const double c0 = r.apex_cot(2 * e, t0, t1, foot0), c1 = r.apex_cot(2 * e + 1, t0, t1, foot1);
+      if(c0 + c1 >= -1e-12) { ++i; continue; }   // angles summing to at most pi
+      const double foot = c0 <= c1 ? foot0 : foot1;
+      // at the foot of the wider apex (kept off the ends): fewer splits than the middle
+      double s = t0 + (t1 - t0) * (std::min)(0.8, (std::max)(0.2, foot));
+      if((i == 0) != (i == t.size())) {
+        // one end is an input vertex: split at a power of two from it (points at equal
+        // distances on two edges never encroach each other)
+        const double d = std::exp2(std::round(std::log2((t1 - t0) * L / 2))) / L;
+        s = i == 0 ? d : 1 - d;
+      }
+      // A needle (angle theta) takes about 1/theta points along its long sides, and each test
+      // scans the points of a face: 1024 per edge bounds that (quadratic) work, and a cap on the
+      // points tested the sum of it (60 to 310 per input face on the shared and benchmark meshes).
+      const bool too_much_work = r.tests > 4096 * nf + 100000000;
+      if(!(s > t0 && s < t1) || (t1 - t0) < 1e-13 || t.size() >= 1024 || ++added > budget || too_much_work) {
+        std::ostringstream os;
+        if(added > budget) os << "more than " << budget << " vertices needed (number_of_iterations)";
+        else if(too_much_work) os << "more than " << r.tests << " point tests needed (many needle triangles?)";
+        else {
+          double smallest = CGAL_PI;
+          for(int side = 0; side < 2; ++side)
+            for(int g = 2 * e + side, k = 0; k < 3; ++k, g = m.next[std::size_t(g)]) smallest = (std::min)(smallest, m.angle[std::size_t(g)]);
+          os << "edge " << e << " needs more than " << (t.size() >= 1024 ? "1024 points" : "splits below 1e-13 of its length")
+             << ": its triangles are too thin (smallest angle " << smallest * 180 / CGAL_PI << " degrees)";
+        }
+        st.message = os.str();
+        return st;
+      }
+      t.insert(t.begin() + std::ptrdiff_t(i), s);   // sub-segment i is now (t0, s): check it again
+      for(int side = 0; side < 2; ++side) {
+        const int h = 2 * e + side;
+        if(m.face[std::size_t(h)] < 0) continue;
+        for(int g : {m.next[std::size_t(h)], m.prev(h)})
+          if(!queued[std::size_t(g >> 1)]) { queued[std::size_t(g >> 1)] = 1; work.push_back(g >> 1); }
+      }
+    }
+  }
+
+  if(!internal::write_refinement(tm, m, r, out, np, np_out, st)) return st;
   st.success = st.non_delaunay_edges == 0;
   if(!st.success)
     st.message = std::to_string(st.non_delaunay_edges) + " edges are not Delaunay (largest opposite angle sum " +
                  std::to_string(st.max_opposite_angle_sum) + " rad)";
+  return st;
+}
+
+/// \ingroup PkgSurfaceMeshDirectionFieldsRemeshing
+/// Refines `tm` into `out` by vertices at given points of its edges, each input triangle
+/// re-triangulated inside itself by the Delaunay triangulation (in the metric) of its corners
+/// and of the points on its sides. `out` is a triangulation of the same surface, e.g. `tm` with
+/// border edges split where a flat cone metric with a geodesic boundary needs a vertex (a cone
+/// next to the boundary: see `smdf rosy`), and transfer_face_field_from_refinement() brings a
+/// face field on `out` back to `tm`.
+///
+/// `points` lists (edge index in `edge_index_map`, parameter in (0, 1) from the source of
+/// `halfedge(e, tm)`); repeated points are added once. The status is conforming_delaunay_refinement()'s:
+/// `inserted` (the points in the order of their vertices, after the input's), `face_origin`, and
+/// the largest angle sum opposite an input edge's piece; `success` says that `out` was built (the
+/// refinement need not be Delaunay). Named parameters: `edge_length_map`, `vertex_point_map` and
+/// the index maps (input); `np_out` as for conforming_delaunay_refinement(). Throws
+/// `Input_error` for a parameter outside (0, 1), an edge index out of range, a non-empty `out`
+/// and the invalid inputs of `Intrinsic_mesh`.
+template <typename TriangleMesh, typename PolygonMesh, typename NamedParameters = parameters::Default_named_parameters,
+          typename NamedParametersOut = parameters::Default_named_parameters>
+Delaunay_refinement_status refine_at_edge_points(const TriangleMesh& tm, const std::vector<std::pair<std::size_t, double>>& points,
+                                                 PolygonMesh& out, const NamedParameters& np = parameters::default_values(),
+                                                 const NamedParametersOut& np_out = parameters::default_values())
+{
+  const Intrinsic_mesh<TriangleMesh> im(tm, np);
+  const internal::Mesh_arrays<TriangleMesh>& m = im.arrays();
+  if(!CGAL::is_empty(out))
+    throw Input_error(Input_error::INVALID_ARGUMENT, "refine_at_edge_points: the output mesh must be empty");
+  internal::Delaunay_refiner<TriangleMesh> r(m);
+  for(const std::pair<std::size_t, double>& p : points) {
+    if(p.first >= m.number_of_edges() || !(p.second > 0 && p.second < 1))
+      throw Input_error(Input_error::INVALID_ARGUMENT, "refine_at_edge_points: point (" + std::to_string(p.first) + ", " +
+                                                           std::to_string(p.second) + ") is not inside an edge of the mesh (" +
+                                                           std::to_string(m.number_of_edges()) + " edges, parameters in (0, 1))");
+    r.inner[p.first].push_back(p.second);
+  }
+  for(std::vector<double>& t : r.inner) {
+    std::sort(t.begin(), t.end());
+    t.erase(std::unique(t.begin(), t.end()), t.end());
+  }
+  Delaunay_refinement_status st;
+  st.success = internal::write_refinement(tm, m, r, out, np, np_out, st);
   return st;
 }
 
