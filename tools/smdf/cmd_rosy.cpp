@@ -176,32 +176,17 @@ Json run_rosy(const Args& args)
   // open meshes: where a cone next to the boundary stalls the flow, the border edge it faces is
   // split (on the input surface) and the flow run again; everything below then runs on that
   // refinement, and the outputs are brought back to the input's faces at the end
-  Mesh original;
-  SMDF::Delaunay_refinement_status refinement;
-  std::vector<std::pair<std::size_t, double>> border_points;
-  int refinement_rounds = 0;
-  for(; open && !cm.converged && refinement_rounds < 6; ++refinement_rounds) {
-    const auto more = border_points_to_insert(refinement_rounds ? original : mesh, mesh, refinement_rounds ? &refinement : nullptr, cm, lengths);
-    if(more.empty()) break;
-    if(refinement_rounds == 0) original = mesh;
-    border_points.insert(border_points.end(), more.begin(), more.end());
-    Mesh refined;
-    refinement = on_file(file, [&] { return SMDF::refine_at_edge_points(original, border_points, refined); });
-    if(!refinement.success) throw Error(file + ": the boundary refinement failed: " + refinement.message);
-    const Vertex_double_property original_targets = original.property_map<vertex_descriptor, double>("v:smdf_rosy_target").first;
-    mesh = std::move(refined);
-    targets = mesh.add_property_map<vertex_descriptor, double>("v:smdf_rosy_target", 0.).first;   // new vertices: straight
-    for(vertex_descriptor v : vertices(original)) targets[v] = original_targets[v];
-    lengths = mesh.add_property_map<edge_descriptor, double>("e:smdf_rosy_length", 0.).first;
+  Boundary_refinement br;
+  if(open && !cm.converged && refine_boundary_until_converged(file, mesh, targets, lengths, cm, br))
     input_angles = mesh.add_property_map<face_descriptor, double>("f:smdf_rosy_angle", 0.).first;
-    cm = on_file(file, [&] { return SMDF::compute_cone_metric(mesh, targets, lengths); });
-  }
-  const bool refined_input = refinement_rounds > 0 && num_vertices(mesh) > num_vertices(original);
+  Mesh& original = br.original;
+  const SMDF::Delaunay_refinement_status& refinement = br.status;
+  const bool refined_input = br.rounds > 0;
   timings["metric_s"] = clock.lap();
   out["metric"] = metric_json(cm, nullptr);
   if(refined_input) {
     Json r = Json::object();
-    r["rounds"] = refinement_rounds;
+    r["rounds"] = br.rounds;
     r["inserted_vertices"] = refinement.inserted.size();
     r["faces"] = refinement.faces;
     out["boundary_refinement"] = std::move(r);

@@ -203,6 +203,29 @@ std::vector<std::pair<std::size_t, double>> border_points_to_insert(const Mesh& 
   return points;
 }
 
+bool refine_boundary_until_converged(const std::string& file, Mesh& mesh, Vertex_double_property& targets, Edge_length_property& lengths,
+                                     SMDF::Cone_metric_status& cm, Boundary_refinement& r)
+{
+  std::vector<std::pair<std::size_t, double>> points;
+  for(int round = 0; !cm.converged && round < 6; ++round) {
+    const auto more = border_points_to_insert(r.rounds ? r.original : mesh, mesh, r.rounds ? &r.status : nullptr, cm, lengths);
+    if(more.empty()) break;
+    if(r.rounds == 0) r.original = mesh;
+    points.insert(points.end(), more.begin(), more.end());
+    Mesh refined;
+    r.status = on_file(file, [&] { return SMDF::refine_at_edge_points(r.original, points, refined); });
+    if(!r.status.success) throw Error(file + ": the boundary refinement failed: " + r.status.message);
+    ++r.rounds;
+    const Vertex_double_property original_targets = r.original.property_map<vertex_descriptor, double>("v:smdf_rosy_target").first;
+    mesh = std::move(refined);
+    targets = mesh.add_property_map<vertex_descriptor, double>("v:smdf_rosy_target", 0.).first;   // new vertices: straight
+    for(vertex_descriptor v : vertices(r.original)) targets[v] = original_targets[v];
+    lengths = mesh.add_property_map<edge_descriptor, double>("e:smdf_rosy_length", 0.).first;
+    cm = on_file(file, [&] { return SMDF::compute_cone_metric(mesh, targets, lengths); });
+  }
+  return r.rounds > 0;
+}
+
 std::vector<std::pair<vertex_descriptor, double>> automatic_cones(const Args& args, const std::string& file, const Mesh& mesh,
                                                                   int N, Boundary_mode mode, Json& json)
 {

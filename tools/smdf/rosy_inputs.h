@@ -75,6 +75,22 @@ std::vector<std::pair<std::size_t, double>> border_points_to_insert(const Mesh& 
                                                                     const SMDF::Delaunay_refinement_status* refinement,
                                                                     const SMDF::Cone_metric_status& cm, const Edge_length_property& lengths);
 
+// An open mesh whose flat cone metric `cm` stalled: the border edges border_points_to_insert()
+// finds are split on the input surface and the flow runs again on the refinement, up to 6
+// rounds or until it converges. `mesh` then becomes the refinement (the input's vertices first;
+// its maps "v:smdf_rosy_target", the new vertices straight, and "e:smdf_rosy_length" made again
+// in `targets` and `lengths`) and `r` holds the input and the refinement's status. Returns
+// whether the mesh was refined.
+struct Boundary_refinement
+{
+  Mesh original;
+  SMDF::Delaunay_refinement_status status;
+  int rounds = 0;   // refinements made (0: `mesh` is the input)
+};
+
+bool refine_boundary_until_converged(const std::string& file, Mesh& mesh, Vertex_double_property& targets, Edge_length_property& lengths,
+                                     SMDF::Cone_metric_status& cm, Boundary_refinement& r);
+
 // --edit FILE ('vertex x y z [weight]') and --length FILE ('vertex length [weight]'): the pairs
 // and the weight of each (0, no weight given: hard).
 struct Constraint_lines
