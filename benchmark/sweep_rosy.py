@@ -28,6 +28,9 @@ runs whatever --only and --jobs are):
                     the rest of Gauss-Bonnet.
                   Interior cones are off the boundary; cones of index >= 1 (punched holes) sit
                   two rings away from it and not next to another cone.
+                  Then one run with cones touching the boundary (interior vertices next to a
+                  boundary vertex), --boundary parallel or orthogonal, N from {1, 2, 3, 4, 6};
+                  for N = 1 one of them of index 1 (its hole touches the boundary).
 Every run writes --face-field-out, --matching-out and --field-out, then the face field is read
 back with `smdf singularities MESH --field FACE --N N --matching MATCHING`. A run is OK when rosy
 exits 0 with "success": true and the read-back "singularities" list equals the prescribed cones
@@ -275,6 +278,24 @@ def plan_runs(mesh, seed):
                     c.add(rng.choice((1, -1)))
             args = (["--cone-indices", c.spec()] if c.cones else []) + ["--N", str(N), "--boundary", mode]
             runs.append(dict(mode=mode, N=N, args=args, want=c.want(), ncones=len(c.cones)))
+        # cones touching the boundary (the flat metric may need a vertex on the border edge a
+        # cone faces; for N = 1 one of index 1, whose hole needs room first)
+        touching = sorted(set(mesh.interior) - set(mesh.near_interior))
+        mode, N = rng.choice(("parallel", "orthogonal")), rng.choice(NS)
+        if len(touching) >= 12:
+            c = ConeSet(rng, mesh, N)
+            if N == 1:
+                c.cones[rng.choice(touching)] = 1
+            units = mesh.chi * N if N in (1, 2) else c.total() + rng.choice((-2, -1, 1, 2))
+            for _ in range(10000):
+                if c.total() == units:
+                    break
+                v = rng.choice(touching)
+                if v not in c.cones:
+                    c.cones[v] = 1 if units > c.total() else -1
+            if c.total() == units:
+                args = ["--cone-indices", c.spec(), "--N", str(N), "--boundary", mode]
+                runs.append(dict(mode="touch-" + mode[:4], N=N, args=args, want=c.want(), ncones=len(c.cones)))
     return runs
 
 
@@ -433,7 +454,7 @@ def summary(all_runs, meshes, skipped, args):
     out.append("")
     out.append("per mode:")
     rows = []
-    for mode in ("cones", "auto", "free", "parallel", "orthogonal"):
+    for mode in ("cones", "auto", "free", "parallel", "orthogonal", "touch-para", "touch-orth"):
         rs = [r for m, r in all_runs if r["mode"] == mode]
         if rs:
             rows.append([mode, "%d/%d" % (sum(r["ok"] for r in rs), len(rs))])

@@ -207,7 +207,9 @@ bool refine_boundary_until_converged(const std::string& file, Mesh& mesh, Vertex
                                      SMDF::Cone_metric_status& cm, Boundary_refinement& r)
 {
   std::vector<std::pair<std::size_t, double>> points;
-  for(int round = 0; !cm.converged && round < 6; ++round) {
+  double error = HUGE_VAL;   // each round must halve the stalled flow's error
+  for(int round = 0; !cm.converged && round < 6 && cm.max_curvature_error < 0.5 * error; ++round) {
+    error = cm.max_curvature_error;
     const auto more = border_points_to_insert(r.rounds ? r.original : mesh, mesh, r.rounds ? &r.status : nullptr, cm, lengths);
     if(more.empty()) break;
     if(r.rounds == 0) r.original = mesh;

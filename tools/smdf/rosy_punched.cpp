@@ -20,6 +20,7 @@
 
 #include <cmath>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -85,12 +86,19 @@ std::vector<std::pair<std::size_t, double>> hole_room_points(const Mesh& mesh, c
   return points;
 }
 
-// run_rosy_punched() on `mesh`, which is `original` refined by `refinement` when these are
-// given: the outputs are then brought back to the original's faces.
+// The refinements from the input to the mesh a field is computed on: per step the coarser mesh
+// and the status of its refinement into the next one (stable addresses).
+typedef std::vector<std::pair<Mesh*, const SMDF::Delaunay_refinement_status*>> Refinement_chain;
+
+// run_rosy_punched() on `mesh`, the last refinement of `chain` (the input when it is empty): the
+// outputs are brought back through it to the input's faces. When the holed surface's flow
+// stalls on border edges (border_points_to_insert()) and `stall_points` is given, returns an
+// empty JSON with these points on `mesh`'s edges there, for another refinement, unless the
+// flow's curvature error is not below half of `*stall_error` (the last round's, updated).
 Json punched_on(const Args& args, const std::string& file, Mesh& mesh, int N,
                 const std::vector<std::pair<vertex_descriptor, double>>& cones, Vertex_double_property targets,
                 Rosy_method method, Boundary_mode mode, const SMDF::Svg_options& svg, std::string* holed_failure,
-                Mesh* original, const SMDF::Delaunay_refinement_status* refinement);
+                const Refinement_chain& chain, std::vector<std::pair<std::size_t, double>>* stall_points, double* stall_error);
 
 } // namespace
 
@@ -98,21 +106,43 @@ Json run_rosy_punched(const Args& args, const std::string& file, Mesh& mesh, int
                       const std::vector<std::pair<vertex_descriptor, double>>& cones, Vertex_double_property targets,
                       Rosy_method method, Boundary_mode mode, const SMDF::Svg_options& svg, std::string* holed_failure)
 {
-  const std::vector<std::pair<std::size_t, double>> points = hole_room_points(mesh, cones);
-  if(points.empty()) return punched_on(args, file, mesh, N, cones, targets, method, mode, svg, holed_failure, nullptr, nullptr);
-  Mesh refined;
-  const SMDF::Delaunay_refinement_status rs = on_file(file, [&] { return SMDF::refine_at_edge_points(mesh, points, refined); });
-  if(!rs.success) throw Error(file + ": the refinement around the cones of index 1 or more failed: " + rs.message);
-  Vertex_double_property refined_targets = refined.add_property_map<vertex_descriptor, double>("v:smdf_rosy_target", 0.).first;
-  for(vertex_descriptor v : vertices(mesh)) refined_targets[v] = targets[v];   // the input's vertices come first
-  Json out = punched_on(args, file, refined, N, cones, refined_targets, method, mode, svg, holed_failure, &mesh, &rs);
-  if(!holed_failure || holed_failure->empty()) {
-    Json r = Json::object();
-    r["inserted_vertices"] = rs.inserted.size();
-    r["faces"] = rs.faces;
-    out["hole_refinement"] = std::move(r);
+  // refinements, each of the mesh before: room for the holes, then border edges where the
+  // holed surface's flow stalls (a cone next to the boundary or to a hole), up to 6 rounds
+  std::vector<std::unique_ptr<Mesh>> meshes;
+  std::vector<std::unique_ptr<SMDF::Delaunay_refinement_status>> statuses;
+  Refinement_chain chain;
+  Mesh* current = &mesh;
+  Vertex_double_property current_targets = targets;
+  std::vector<std::pair<std::size_t, double>> points = hole_room_points(mesh, cones), stall;
+  double stall_error = HUGE_VAL;   // a refinement must halve the stalled flow's error, or the fallback is taken
+  for(int round = 0;; ++round) {
+    if(!points.empty()) {
+      meshes.push_back(std::make_unique<Mesh>());
+      Mesh& refined = *meshes.back();
+      statuses.push_back(std::make_unique<SMDF::Delaunay_refinement_status>(
+          on_file(file, [&] { return SMDF::refine_at_edge_points(*current, points, refined); })));
+      if(!statuses.back()->success) throw Error(file + ": the refinement for the holes failed: " + statuses.back()->message);
+      const Vertex_double_property t = refined.add_property_map<vertex_descriptor, double>("v:smdf_rosy_target", 0.).first;
+      for(vertex_descriptor v : vertices(*current)) t[v] = current_targets[v];   // the coarser mesh's vertices come first
+      chain.emplace_back(current, statuses.back().get());
+      current = &refined;
+      current_targets = t;
+    }
+    stall.clear();
+    Json out = punched_on(args, file, *current, N, cones, current_targets, method, mode, svg, holed_failure, chain, round < 6 ? &stall : nullptr,
+                          &stall_error);
+    if(stall.empty()) {
+      if(!chain.empty() && (!holed_failure || holed_failure->empty())) {
+        Json r = Json::object();
+        r["refinements"] = chain.size();
+        r["inserted_vertices"] = num_vertices(*current) - num_vertices(mesh);
+        r["faces"] = num_faces(*current);
+        out["hole_refinement"] = std::move(r);
+      }
+      return out;
+    }
+    points = stall;
   }
-  return out;
 }
 
 namespace {
@@ -120,7 +150,7 @@ namespace {
 Json punched_on(const Args& args, const std::string& file, Mesh& mesh, int N,
                 const std::vector<std::pair<vertex_descriptor, double>>& cones, Vertex_double_property targets,
                 Rosy_method method, Boundary_mode mode, const SMDF::Svg_options& svg, std::string* holed_failure,
-                Mesh* original, const SMDF::Delaunay_refinement_status* refinement)
+                const Refinement_chain& chain, std::vector<std::pair<std::size_t, double>>* stall_points, double* stall_error)
 {
   Json out = Json::object();
   Json timings = Json::object();
@@ -234,6 +264,18 @@ Json punched_on(const Args& args, const std::string& file, Mesh& mesh, int N,
     out["timings"] = timings;
     return Failed_result{out, file + ": " + why, 3};
   };
+  if(!cm.converged && stall_points && cm.max_curvature_error < 0.5 * *stall_error) {
+    *stall_error = cm.max_curvature_error;
+    // border edges of the holed surface are edges of `mesh` (the same vertices)
+    for(const auto& p : border_points_to_insert(holed, holed, nullptr, cm, hlen)) {
+      const halfedge_descriptor hh = halfedge(edge_descriptor(Mesh::size_type(p.first)), holed);
+      const auto ih = halfedge(vertex_descriptor(source(hh, holed).idx()), vertex_descriptor(target(hh, holed).idx()), mesh);
+      if(!ih.second) continue;
+      const edge_descriptor ie = edge(ih.first, mesh);
+      stall_points->emplace_back(ie.idx(), halfedge(ie, mesh) == ih.first ? p.second : 1 - p.second);
+    }
+    if(!stall_points->empty()) return Json();
+  }
   if(!cm.converged) {
     if(fallback) {
       *holed_failure = "flat cone metric of the holed surface not converged: " + cm.message;
@@ -381,45 +423,54 @@ Json punched_on(const Args& args, const std::string& file, Mesh& mesh, int N,
   out["timings"] = std::move(timings);
 
   // 8. the files, on the input's faces (after a refinement: brought back to them and read back there)
-  Mesh& input = original ? *original : mesh;
+  Mesh* input = &mesh;
   Face_angle_property input_angles = in_angles;
   Edge_matching_property input_match = in_match;
-  if(original) {
-    input_angles = original->add_property_map<face_descriptor, double>("f:smdf_punched_coarse_angle", 0.).first;
-    input_match = original->add_property_map<edge_descriptor, int>("e:smdf_punched_coarse_matching", 0).first;
+  double distortion = 0;
+  for(auto step = chain.rbegin(); step != chain.rend(); ++step) {
+    Mesh& coarse = *step->first;
+    const Face_angle_property a = coarse.add_property_map<face_descriptor, double>("f:smdf_punched_coarse_angle", 0.).first;
+    const Edge_matching_property k = coarse.add_property_map<edge_descriptor, int>("e:smdf_punched_coarse_matching", 0).first;
     const SMDF::Field_transfer_status ts =
-        SMDF::transfer_face_field_from_refinement(mesh, *original, *refinement, N, in_angles, in_match, input_angles, input_match);
-    if(!ts.success) throw fail("the field could not be brought back from the refinement around the cones: " + ts.message);
-    const SMDF::Field_topology<Mesh> back = SMDF::field_singularities(*original, input_angles, rnp.matching(input_match));
-    out["input_read_back"] = Json::object();
-    out["input_read_back"]["found"] = found_list(back);
-    out["input_read_back"]["max_distortion"] = ts.max_distortion;
-    if(std::map<vertex_descriptor, double>(back.singularities.begin(), back.singularities.end()) != prescribed_indices(*original, cones, N))
-      throw fail("the field on the input faces (brought back from the refinement around the cones) reads back other singularities than the cones");
+        SMDF::transfer_face_field_from_refinement(*input, coarse, *step->second, N, input_angles, input_match, a, k);
+    if(!ts.success) throw fail("the field could not be brought back from the refinement for the holes: " + ts.message);
+    distortion = (std::max)(distortion, ts.max_distortion);
+    input = &coarse;
+    input_angles = a;
+    input_match = k;
+  }
+  if(!chain.empty()) {
+    const SMDF::Field_topology<Mesh> back = SMDF::field_singularities(*input, input_angles, rnp.matching(input_match));
+    Json r = Json::object();
+    r["found"] = found_list(back);
+    r["max_distortion"] = distortion;
+    if(std::map<vertex_descriptor, double>(back.singularities.begin(), back.singularities.end()) != prescribed_indices(*input, cones, N))
+      throw fail("the field on the input faces (brought back from the refinement for the holes) reads back other singularities than the cones");
     if(open && mode != FREE_BOUNDARY) {
-      const double worst = SMDF::max_boundary_deviation(*original, N, input_angles,
+      const double worst = SMDF::max_boundary_deviation(*input, N, input_angles,
                                                         SMDF::parameters::orthogonal_to_boundary(mode == ORTHOGONAL_BOUNDARY));
-      out["input_read_back"]["max_boundary_deviation"] = worst;
+      r["max_boundary_deviation"] = worst;
       if(!(worst < 1e-6)) throw fail("the field on the input faces does not follow the boundary everywhere (deviation " + format_real(worst) + " rad)");
     }
+    out["input_read_back"] = std::move(r);
   }
-  const Face_vector_property input_vectors = input.add_property_map<face_descriptor, K::Vector_3>("f:smdf_punched_output_vector").first;
-  SMDF::field_angles_to_vectors(input, input_angles, input_vectors);
+  const Face_vector_property input_vectors = input->add_property_map<face_descriptor, K::Vector_3>("f:smdf_punched_output_vector").first;
+  SMDF::field_angles_to_vectors(*input, input_angles, input_vectors);
   if(args.has("face-field-out")) {
     std::vector<K::Vector_3> v;
-    for(face_descriptor f : faces(input)) v.push_back(input_vectors[f]);
+    for(face_descriptor f : faces(*input)) v.push_back(input_vectors[f]);
     write_vectors(args.value("face-field-out"), v);
   }
-  if(args.has("matching-out")) write_matching(args.value("matching-out"), input, input_match);
+  if(args.has("matching-out")) write_matching(args.value("matching-out"), *input, input_match);
   if(args.has("field-out")) {   // the vertex version: 0 at the singularities
-    auto vv = input.add_property_map<vertex_descriptor, K::Vector_3>("v:smdf_punched_vector").first;
-    SMDF::vertex_field_from_face_field(input, N, input_angles, input_match, vv);
+    auto vv = input->add_property_map<vertex_descriptor, K::Vector_3>("v:smdf_punched_vector").first;
+    SMDF::vertex_field_from_face_field(*input, N, input_angles, input_match, vv);
     std::vector<K::Vector_3> v;
-    for(vertex_descriptor x : vertices(input)) v.push_back(vv[x]);
+    for(vertex_descriptor x : vertices(*input)) v.push_back(vv[x]);
     write_vectors(args.value("field-out"), v);
   }
-  if(args.has("svg")) write_field_svg_file(args, input, input_vectors, N, found, svg);
-  if(args.has("hatching-svg")) out["hatching"] = write_hatching_svg(args, file, input, input_vectors, N, svg);
+  if(args.has("svg")) write_field_svg_file(args, *input, input_vectors, N, found, svg);
+  if(args.has("hatching-svg")) out["hatching"] = write_hatching_svg(args, file, *input, input_vectors, N, svg);
   return out;
 }
 
