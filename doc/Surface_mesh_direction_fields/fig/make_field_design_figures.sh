@@ -79,7 +79,7 @@ fi
 # boundary loop of a face with three holes (eyes and mouth); automatic singularities of a
 # curvature-aligned field on a metric that needs flips (Cheburashka), hatched on the input
 if [ -f "$meshes/homer_cgal.off" ]; then
-  run rosy "$meshes/homer_cgal.off" --cone-indices 100:2 --N 1 --svg "$here/homer_index_2_spread.svg" --view 0,10,y --width 500
+  run rosy "$meshes/homer_cgal.off" --cone-indices 100:2 --N 1 --svg "$here/homer_index_2_punched.svg" --view 0,10,y --width 500
 fi
 if [ -f "$meshes/alex_ghm.off" ]; then
   run rosy "$meshes/alex_ghm.off" --N 4 --boundary parallel --hatching-svg "$here/alex_boundary_parallel.svg" --view 180,0,y --width 500
