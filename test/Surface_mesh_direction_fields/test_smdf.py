@@ -998,9 +998,15 @@ def test_rosy(smdf, c, torus, tmp):
                 and back is not None and back.get("singularities") == [{"vertex": 100, "index": 2}],
                 "rosy --cones 100:4pi --N 1: one singularity of index +2 at the punched vertex, read back on the input (%r)"
                 % (back and back.get("singularities")))
-    p2 = smdf.json(["rosy", spot, "--cones", "100:2pi,2000:2pi", "--N", "2"], "rosy spot, two cones of index 1, N = 2")
+    p2 = smdf.json(["rosy", spot, "--cones", "100:2pi,2000:2pi", "--N", "2", "--holonomy"], "rosy spot, two cones of index 1, N = 2")
     c.check(p2 is not None and p2.get("success") is True and p2.get("found") == [{"vertex": 100, "index": 1}, {"vertex": 2000, "index": 1}],
             "rosy: two cones of index 1 (line field), read back")
+    # --holonomy with holes: the holed surface's group (a sphere with two holes: one boundary
+    # loop), every loop compatible with the parallel field that was built on it
+    loops = (p2 or {}).get("holonomy")
+    c.check(isinstance(loops, list) and len(loops) == 1 and loops[0].get("kind") == "boundary"
+            and all(l.get("compatible") is True for l in loops),
+            "rosy --holonomy with two punched holes: one boundary loop, compatible with N = 2 (%r)" % loops)
     smdf.error(["rosy", spot, "--cones", "0:2pi,1:0"], "rosy: cone of index 1 breaking Gauss-Bonnet", 1, "Gauss-Bonnet")
     # the other methods: the trivial connection of the punched metric (on a sphere, the parallel
     # field itself), with its hatching

@@ -37,11 +37,6 @@ namespace smdf_cli {
 
 namespace {
 
-const char* loop_kind_name(SMDF::Homotopy_loop_kind k)
-{
-  return k == SMDF::HANDLE_LOOP ? "handle" : k == SMDF::BOUNDARY_LOOP ? "boundary" : "cone";
-}
-
 Json index_list(const std::vector<std::size_t>& v)
 {
   Json a = Json::array();
@@ -158,7 +153,7 @@ Json run_rosy(const Args& args)
   bool punch = false;
   for(const auto& c : cones) punch = punch || (!is_border(c.first, mesh) && !(c.second < 2 * CGAL_PI));
   if(punch) {
-    for(const char* o : {"edit", "length", "turning", "holonomy"})
+    for(const char* o : {"edit", "length", "turning"})
       if(args.has(o)) throw Usage_error(std::string("--") + o + " is not available with cones of index 1 or more (punched holes)");
     std::string holed_failure;
     Json punched = run_rosy_punched(args, file, mesh, N, cones, targets, opt.method, opt.boundary, svg, &holed_failure);
@@ -241,21 +236,7 @@ Json run_rosy(const Args& args)
   const auto basis = on_file(file, [&] { return SMDF::homotopy_basis(*carrier, cone_vertices, SMDF::parameters::edge_length_map(flat)); });
   const SMDF::Holonomy_group group = SMDF::holonomy_group(*carrier, basis, SMDF::parameters::edge_length_map(flat));
   const SMDF::Rosy_compatibility rc = SMDF::parallel_rosy_compatibility(group, N);
-  if(args.has("holonomy")) {
-    std::vector<char> failing(basis.loops.size(), 0);
-    for(std::size_t i : rc.failing_loops) failing[i] = 1;
-    Json loops = Json::array();
-    for(std::size_t i = 0; i < basis.loops.size(); ++i) {
-      Json l = Json::object();
-      l["kind"] = loop_kind_name(basis.loops[i].kind);
-      if(basis.loops[i].kind == SMDF::CONE_LOOP) l["cone"] = index(basis.loops[i].cone);
-      l["rotation_over_pi"] = group.rotations[i] / CGAL_PI;
-      l["translation"] = Json::pair(group.motions[i].translation.x(), group.motions[i].translation.y());
-      l["compatible"] = !failing[i];
-      loops.push_back(std::move(l));
-    }
-    out["holonomy"] = std::move(loops);
-  }
+  if(args.has("holonomy")) out["holonomy"] = holonomy_loops_json(basis, group, rc);
   Json compatible_N = Json::array();
   for(int n = 1; n <= 24; ++n) if(SMDF::parallel_rosy_compatibility(group, n).compatible) compatible_N.push_back(n);
   out["compatible_N"] = std::move(compatible_N);
@@ -611,7 +592,8 @@ Command rosy_command()
           "ring touches the boundary or another such cone first gets room: its edges are split\n"
           "close to it; where the holed surface's flow stalls next to a border edge (of the mesh\n"
           "or of a hole), that edge is split as below (JSON hole_refinement: {refinements,\n"
-          "inserted_vertices, faces}); the outputs are on the input's faces (input_read_back).\n"
+          "inserted_vertices, faces}); the outputs are on the input's faces (input_read_back);\n"
+          "--holonomy lists the holed surface's loops (the holes are boundary loops).\n"
           "Open meshes: --boundary free gives the boundary vertices not named in --cones the input's\n"
           "turning angle, changed so that each boundary loop turns by a multiple of 2 pi / N and\n"
           "Gauss-Bonnet holds; --boundary parallel|orthogonal rounds each boundary vertex's turning\n"

@@ -228,6 +228,24 @@ bool refine_boundary_until_converged(const std::string& file, Mesh& mesh, Vertex
   return r.rounds > 0;
 }
 
+Json holonomy_loops_json(const SMDF::Homotopy_basis<Mesh>& basis, const SMDF::Holonomy_group& group, const SMDF::Rosy_compatibility& rc)
+{
+  std::vector<char> failing(basis.loops.size(), 0);
+  for(std::size_t i : rc.failing_loops) failing[i] = 1;
+  Json loops = Json::array();
+  for(std::size_t i = 0; i < basis.loops.size(); ++i) {
+    const SMDF::Homotopy_loop_kind k = basis.loops[i].kind;
+    Json l = Json::object();
+    l["kind"] = k == SMDF::HANDLE_LOOP ? "handle" : k == SMDF::BOUNDARY_LOOP ? "boundary" : "cone";
+    if(k == SMDF::CONE_LOOP) l["cone"] = index(basis.loops[i].cone);
+    l["rotation_over_pi"] = group.rotations[i] / CGAL_PI;
+    l["translation"] = Json::pair(group.motions[i].translation.x(), group.motions[i].translation.y());
+    l["compatible"] = !failing[i];
+    loops.push_back(std::move(l));
+  }
+  return loops;
+}
+
 std::vector<std::pair<vertex_descriptor, double>> automatic_cones(const Args& args, const std::string& file, const Mesh& mesh,
                                                                   int N, Boundary_mode mode, Json& json)
 {

@@ -12,6 +12,8 @@
 #include <CGAL/Surface_mesh_direction_fields/Trivial_connection.h>
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/delaunay_refinement.h>
+#include <CGAL/Surface_mesh_direction_fields/holonomy_group.h>
+#include <CGAL/Surface_mesh_direction_fields/homotopy_basis.h>
 
 #include <algorithm>
 #include <map>
@@ -114,6 +116,10 @@ std::vector<std::pair<vertex_descriptor, double>> automatic_cones(const Args& ar
 // The indices the cones prescribe at interior vertices (rounded to multiples of 1/N, zeros left out).
 std::map<vertex_descriptor, double> prescribed_indices(const Mesh& mesh, const std::vector<std::pair<vertex_descriptor, double>>& cones,
                                                        int N);
+
+// --holonomy: per loop of the basis {kind: handle|boundary|cone, cone (its vertex), rotation_over_pi,
+// translation, compatible (with the N-RoSy test of `rc`)}.
+Json holonomy_loops_json(const SMDF::Homotopy_basis<Mesh>& basis, const SMDF::Holonomy_group& group, const SMDF::Rosy_compatibility& rc);
 
 // The JSON of a flat cone metric: {converged, iterations, max_curvature_error,
 // triangulation_changed, on} (`on` only when given: what the metric lives on).

@@ -294,6 +294,18 @@ Json punched_on(const Args& args, const std::string& file, Mesh& mesh, int N,
     SMDF::copy_intrinsic_triangulation(cm.intrinsic_triangulation, holed, flat_mesh, flat);
     carrier = &flat_mesh;
   }
+  if(args.has("holonomy")) {
+    // the holed surface's: its hole loops are boundary loops, the other cones keep their loops
+    std::vector<vertex_descriptor> inner_cones;
+    for(const auto& c : cones) {
+      const vertex_descriptor v(c.first.idx());
+      if(c.second < 2 * CGAL_PI - 1e-9 && carrier->halfedge(v) != Mesh::null_halfedge() && !is_border(v, *carrier))
+        inner_cones.push_back(v);
+    }
+    const auto basis = on_file(file, [&] { return SMDF::homotopy_basis(*carrier, inner_cones, SMDF::parameters::edge_length_map(flat)); });
+    const SMDF::Holonomy_group group = SMDF::holonomy_group(*carrier, basis, SMDF::parameters::edge_length_map(flat));
+    out["holonomy"] = holonomy_loops_json(basis, group, SMDF::parallel_rosy_compatibility(group, N));
+  }
   const Face_angle_property angles = carrier->add_property_map<face_descriptor, double>("f:smdf_angle", 0.).first;
   const Edge_matching_property cmatch = carrier->add_property_map<edge_descriptor, int>("e:smdf_matching", 0).first;
   if(aligned) {
