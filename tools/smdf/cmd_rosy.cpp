@@ -18,7 +18,6 @@
 #include <CGAL/Surface_mesh_direction_fields/field_editing.h>
 #include <CGAL/Surface_mesh_direction_fields/field_singularities.h>
 #include <CGAL/Surface_mesh_direction_fields/field_transfer.h>
-#include <CGAL/Surface_mesh_direction_fields/refinement_field_transfer.h>
 #include <CGAL/Surface_mesh_direction_fields/holonomy_group.h>
 #include <CGAL/Surface_mesh_direction_fields/homotopy_basis.h>
 #include <CGAL/Surface_mesh_direction_fields/parallel_rosy_field.h>
@@ -480,40 +479,19 @@ Json run_rosy(const Args& args)
       failure = "the field on the input faces does not follow the boundary (deviation " + std::to_string(deviation) + " rad)";
   }
   // 7''. after a boundary refinement: the face field and its matching on the input's own faces
-  Face_angle_property coarse_angles;
-  Edge_matching_property coarse_matching;
-  if(failure.empty() && refined_input) {
-    coarse_angles = original.add_property_map<face_descriptor, double>("f:smdf_rosy_coarse_angle", 0.).first;
-    coarse_matching = original.add_property_map<edge_descriptor, int>("e:smdf_rosy_coarse_matching", 0).first;
-    const SMDF::Field_transfer_status ts =
-        SMDF::transfer_face_field_from_refinement(mesh, original, refinement, N, embedded_angles, input_matching, coarse_angles, coarse_matching);
-    const SMDF::Field_topology<Mesh> on_original =
-        ts.success ? SMDF::field_singularities(original, coarse_angles, SMDF::parameters::symmetry_order(N).matching(coarse_matching))
-                   : SMDF::Field_topology<Mesh>();
-    const double deviation = method == BOUNDARY_ALIGNED && ts.success
-        ? SMDF::max_boundary_deviation(original, N, coarse_angles, SMDF::parameters::orthogonal_to_boundary(opt.boundary == ORTHOGONAL_BOUNDARY))
-        : 0.;
-    Json& r = out["boundary_refinement"];
-    r["found"] = found_list(on_original);
-    r["max_distortion"] = ts.max_distortion;
-    if(method == BOUNDARY_ALIGNED) r["max_boundary_deviation"] = deviation;
-    const std::map<vertex_descriptor, double> got(on_original.singularities.begin(), on_original.singularities.end());
-    if(!ts.success) failure = "the field could not be brought back from the boundary refinement to the input faces: " + ts.message;
-    else if(got != prescribed_indices(original, cones, N))
-      failure = "the field on the input faces (brought back from the boundary refinement) reads back other singularities than the cones";
-    else if(!(deviation <= 1e-6))
-      failure = "the field on the input faces (brought back from the boundary refinement) does not follow the boundary (deviation " +
-                std::to_string(deviation) + " rad)";
-  }
+  Face_field output{&mesh, embedded_angles, input_matching};
+  if(failure.empty() && refined_input)
+    failure = bring_back_to_input({{&original, &refinement}}, output, N, cones, method == BOUNDARY_ALIGNED,
+                                  opt.boundary == ORTHOGONAL_BOUNDARY, "the boundary refinement", out["boundary_refinement"]);
   out["success"] = failure.empty();
   out["timings"] = std::move(timings);
   if(!failure.empty()) throw Failed_result{out, file + ": " + failure, 3};
 
   // 8. the files, on the input mesh: vertex and face fields in 3D, the matching, the pictures
   // (after a boundary refinement: the input's vertices come first in it; its faces through 7'')
-  Mesh& input = refined_input ? original : mesh;
-  const Face_angle_property input_face_angles = refined_input ? coarse_angles : embedded_angles;
-  const Edge_matching_property output_matching = refined_input ? coarse_matching : input_matching;
+  Mesh& input = *output.mesh;
+  const Face_angle_property input_face_angles = output.angles;
+  const Edge_matching_property output_matching = output.matching;
   if(args.has("field-out") && method != ROTATION_COMPENSATION) {
     // the face field's vertex version: zero at the singularities, exact along a followed boundary
     auto vv = input.add_property_map<vertex_descriptor, K::Vector_3>("v:smdf_rosy_vector").first;
@@ -535,7 +513,7 @@ Json run_rosy(const Args& args)
   }
   if(args.has("face-field-out") || args.has("svg") || args.has("hatching-svg")) {
     const Face_vector_property vectors = input.add_property_map<face_descriptor, K::Vector_3>("f:smdf_rosy_vector").first;
-    if(refined_input) SMDF::field_angles_to_vectors(input, coarse_angles, vectors);
+    if(refined_input) SMDF::field_angles_to_vectors(input, output.angles, vectors);
     else if(on_input) SMDF::field_angles_to_vectors(mesh, angles, vectors, SMDF::parameters::edge_length_map(flat));
     else SMDF::field_angles_to_vectors(mesh, input_angles, vectors);
     if(args.has("face-field-out")) {

@@ -6,11 +6,15 @@
 #include "rosy_inputs.h"
 
 #include <CGAL/Surface_mesh_direction_fields/curvature_aligned_field.h>
+#include <CGAL/Surface_mesh_direction_fields/boundary_aligned_field.h>
+#include <CGAL/Surface_mesh_direction_fields/field_singularities.h>
+#include <CGAL/Surface_mesh_direction_fields/refinement_field_transfer.h>
 
 #include <CGAL/Surface_mesh_direction_fields/topology.h>
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -244,6 +248,37 @@ Json holonomy_loops_json(const SMDF::Homotopy_basis<Mesh>& basis, const SMDF::Ho
     loops.push_back(std::move(l));
   }
   return loops;
+}
+
+std::string bring_back_to_input(const Refinement_chain& chain, Face_field& field, int N,
+                                const std::vector<std::pair<vertex_descriptor, double>>& cones, bool aligned, bool orthogonal,
+                                const std::string& what, Json& json)
+{
+  double distortion = 0;
+  for(auto step = chain.rbegin(); step != chain.rend(); ++step) {
+    Mesh& coarse = *step->first;
+    const Face_field on_coarse{&coarse, coarse.add_property_map<face_descriptor, double>("f:smdf_coarse_angle", 0.).first,
+                               coarse.add_property_map<edge_descriptor, int>("e:smdf_coarse_matching", 0).first};
+    const SMDF::Field_transfer_status ts = SMDF::transfer_face_field_from_refinement(
+        *field.mesh, coarse, *step->second, N, field.angles, field.matching, on_coarse.angles, on_coarse.matching);
+    if(!ts.success) return "the field could not be brought back from " + what + " to the input faces: " + ts.message;
+    distortion = (std::max)(distortion, ts.max_distortion);
+    field = on_coarse;
+  }
+  const SMDF::Field_topology<Mesh> back =
+      SMDF::field_singularities(*field.mesh, field.angles, SMDF::parameters::symmetry_order(N).matching(field.matching));
+  json["found"] = found_list(back);
+  json["max_distortion"] = distortion;
+  if(std::map<vertex_descriptor, double>(back.singularities.begin(), back.singularities.end()) != prescribed_indices(*field.mesh, cones, N))
+    return "the field on the input faces (brought back from " + what + ") reads back other singularities than the cones";
+  if(aligned) {
+    const double worst = SMDF::max_boundary_deviation(*field.mesh, N, field.angles, SMDF::parameters::orthogonal_to_boundary(orthogonal));
+    json["max_boundary_deviation"] = worst;
+    if(!(worst <= 1e-6))
+      return "the field on the input faces (brought back from " + what + ") does not follow the boundary (deviation " +
+             format_real(worst) + " rad)";
+  }
+  return std::string();
 }
 
 std::vector<std::pair<vertex_descriptor, double>> automatic_cones(const Args& args, const std::string& file, const Mesh& mesh,

@@ -93,6 +93,28 @@ struct Boundary_refinement
 bool refine_boundary_until_converged(const std::string& file, Mesh& mesh, Vertex_double_property& targets, Edge_length_property& lengths,
                                      SMDF::Cone_metric_status& cm, Boundary_refinement& r);
 
+// Refinements of the input (refine_at_edge_points()), each of the mesh before: per step the
+// coarser mesh and the status of its refinement into the next one (stable addresses).
+typedef std::vector<std::pair<Mesh*, const SMDF::Delaunay_refinement_status*>> Refinement_chain;
+
+// A face field (angles in the embedded face frames) with its matching, on one mesh.
+struct Face_field
+{
+  Mesh* mesh;
+  Face_angle_property angles;
+  Edge_matching_property matching;
+};
+
+// `field`, on the last refinement of `chain`, brought back through every step to the input's
+// faces (transfer_face_field_from_refinement()) and read back there: its singularities must be
+// the cones' (indices as prescribed_indices()), and with `aligned` it must follow the boundary
+// (orthogonal or parallel). `field` then describes the field on the input; `json` receives
+// {found, max_distortion, max_boundary_deviation (aligned)}. Returns why not, empty on success;
+// `what` names the refinement in the messages.
+std::string bring_back_to_input(const Refinement_chain& chain, Face_field& field, int N,
+                                const std::vector<std::pair<vertex_descriptor, double>>& cones, bool aligned, bool orthogonal,
+                                const std::string& what, Json& json);
+
 // --edit FILE ('vertex x y z [weight]') and --length FILE ('vertex length [weight]'): the pairs
 // and the weight of each (0, no weight given: hard).
 struct Constraint_lines

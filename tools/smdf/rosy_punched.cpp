@@ -12,7 +12,6 @@
 #include <CGAL/Surface_mesh_direction_fields/field_singularities.h>
 #include <CGAL/Surface_mesh_direction_fields/field_transfer.h>
 #include <CGAL/Surface_mesh_direction_fields/parallel_rosy_field.h>
-#include <CGAL/Surface_mesh_direction_fields/refinement_field_transfer.h>
 #include <CGAL/Surface_mesh_direction_fields/topology.h>
 #include <CGAL/Surface_mesh_direction_fields/vertex_field_from_faces.h>
 
@@ -85,10 +84,6 @@ std::vector<std::pair<std::size_t, double>> hole_room_points(const Mesh& mesh, c
   }
   return points;
 }
-
-// The refinements from the input to the mesh a field is computed on: per step the coarser mesh
-// and the status of its refinement into the next one (stable addresses).
-typedef std::vector<std::pair<Mesh*, const SMDF::Delaunay_refinement_status*>> Refinement_chain;
 
 // run_rosy_punched() on `mesh`, the last refinement of `chain` (the input when it is empty): the
 // outputs are brought back through it to the input's faces. When the holed surface's flow
@@ -435,37 +430,17 @@ Json punched_on(const Args& args, const std::string& file, Mesh& mesh, int N,
   out["timings"] = std::move(timings);
 
   // 8. the files, on the input's faces (after a refinement: brought back to them and read back there)
-  Mesh* input = &mesh;
-  Face_angle_property input_angles = in_angles;
-  Edge_matching_property input_match = in_match;
-  double distortion = 0;
-  for(auto step = chain.rbegin(); step != chain.rend(); ++step) {
-    Mesh& coarse = *step->first;
-    const Face_angle_property a = coarse.add_property_map<face_descriptor, double>("f:smdf_punched_coarse_angle", 0.).first;
-    const Edge_matching_property k = coarse.add_property_map<edge_descriptor, int>("e:smdf_punched_coarse_matching", 0).first;
-    const SMDF::Field_transfer_status ts =
-        SMDF::transfer_face_field_from_refinement(*input, coarse, *step->second, N, input_angles, input_match, a, k);
-    if(!ts.success) throw fail("the field could not be brought back from the refinement for the holes: " + ts.message);
-    distortion = (std::max)(distortion, ts.max_distortion);
-    input = &coarse;
-    input_angles = a;
-    input_match = k;
-  }
+  Face_field output{&mesh, in_angles, in_match};
   if(!chain.empty()) {
-    const SMDF::Field_topology<Mesh> back = SMDF::field_singularities(*input, input_angles, rnp.matching(input_match));
     Json r = Json::object();
-    r["found"] = found_list(back);
-    r["max_distortion"] = distortion;
-    if(std::map<vertex_descriptor, double>(back.singularities.begin(), back.singularities.end()) != prescribed_indices(*input, cones, N))
-      throw fail("the field on the input faces (brought back from the refinement for the holes) reads back other singularities than the cones");
-    if(open && mode != FREE_BOUNDARY) {
-      const double worst = SMDF::max_boundary_deviation(*input, N, input_angles,
-                                                        SMDF::parameters::orthogonal_to_boundary(mode == ORTHOGONAL_BOUNDARY));
-      r["max_boundary_deviation"] = worst;
-      if(!(worst < 1e-6)) throw fail("the field on the input faces does not follow the boundary everywhere (deviation " + format_real(worst) + " rad)");
-    }
+    const std::string why = bring_back_to_input(chain, output, N, cones, open && mode != FREE_BOUNDARY, mode == ORTHOGONAL_BOUNDARY,
+                                                "the refinement for the holes", r);
     out["input_read_back"] = std::move(r);
+    if(!why.empty()) throw fail(why);
   }
+  Mesh* const input = output.mesh;
+  const Face_angle_property input_angles = output.angles;
+  const Edge_matching_property input_match = output.matching;
   const Face_vector_property input_vectors = input->add_property_map<face_descriptor, K::Vector_3>("f:smdf_punched_output_vector").first;
   SMDF::field_angles_to_vectors(*input, input_angles, input_vectors);
   if(args.has("face-field-out")) {
