@@ -451,6 +451,53 @@ def write_cube_off(path, n):
             f.write("3 %d %d %d\n" % t)
 
 
+def uv_map_read_back(path):
+    """An integer-grid map written by remesh --uv-out, read back from the file alone: (faces,
+    faces whose image is not counterclockwise, the largest deviation of an interior edge's two
+    images from a grid symmetry (rotation by k 90 degrees, integer translation), the largest
+    deviation of a border edge from a grid line (its U or V constant and an integer))."""
+    vts, fcs = [], []
+    for line in open(path):
+        w = line.split()
+        if w and w[0] == "vt":
+            vts.append((float(w[1]), float(w[2])))
+        elif w and w[0] == "f":
+            fcs.append([tuple(int(x) for x in c.split("/")) for c in w[1:]])
+    corner = {}
+    flipped = 0
+    for k, f in enumerate(fcs):
+        p = [vts[t - 1] for _, t in f]
+        area = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[2][0] - p[0][0]) * (p[1][1] - p[0][1])
+        flipped += area <= 0
+        for i in range(3):
+            corner[(k, f[i][0])] = p[i]
+    edge_faces = {}
+    for k, f in enumerate(fcs):
+        for i in range(3):
+            a, b = f[i][0], f[(i + 1) % 3][0]
+            edge_faces.setdefault((min(a, b), max(a, b)), []).append(k)
+    worst, border = 0.0, 0.0
+    for (a, b), ks in edge_faces.items():
+        if len(ks) == 1:
+            pa, pb = corner[(ks[0], a)], corner[(ks[0], b)]
+            border = max(border, min(max(abs(pa[i] - pb[i]), abs(pa[i] - round(pa[i]))) for i in range(2)))
+            continue
+        if len(ks) != 2:
+            worst = float("inf")
+            continue
+        pa, pb = corner[(ks[0], a)], corner[(ks[0], b)]
+        qa, qb = corner[(ks[1], a)], corner[(ks[1], b)]
+        best = float("inf")
+        for turn in range(4):
+            rot = lambda x, y: [(x, y), (-y, x), (-x, -y), (y, -x)][turn]
+            ra, rb = rot(*pa), rot(*pb)
+            t = (qa[0] - ra[0], qa[1] - ra[1])
+            off = max(abs(rb[0] + t[0] - qb[0]), abs(rb[1] + t[1] - qb[1]), abs(t[0] - round(t[0])), abs(t[1] - round(t[1])))
+            best = min(best, off)
+        worst = max(worst, best)
+    return len(fcs), flipped, worst, border
+
+
 def test_remesh(smdf, c, torus, tmp):
     """smdf remesh: a cube (its own metric: 8 cones of pi/2) into quads, the shipped Spot through
     the box polycube, and the failures (grid incompatible with the metric, a metric that is not
@@ -588,52 +635,21 @@ def test_remesh(smdf, c, torus, tmp):
         r = smdf.json(["remesh", path, "--faces", "2500", "--uv-out", uvf, "--out", out], "remesh %s --uv-out" % name)
         if not r:
             continue
-        vts, fcs = [], []
-        for line in open(uvf):
-            w = line.split()
-            if w and w[0] == "vt":
-                vts.append((float(w[1]), float(w[2])))
-            elif w and w[0] == "f":
-                fcs.append([tuple(int(x) for x in c.split("/")) for c in w[1:]])
-        corner = {}
-        flipped = 0
-        for k, f in enumerate(fcs):
-            p = [vts[t - 1] for _, t in f]
-            area = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[2][0] - p[0][0]) * (p[1][1] - p[0][1])
-            flipped += area <= 0
-            for i in range(3):
-                corner[(k, f[i][0])] = p[i]
-        edge_faces = {}
-        for k, f in enumerate(fcs):
-            for i in range(3):
-                a, b = f[i][0], f[(i + 1) % 3][0]
-                edge_faces.setdefault((min(a, b), max(a, b)), []).append(k)
-        worst = 0.0
-        for (a, b), ks in edge_faces.items():
-            if len(ks) != 2:
-                worst = float("inf")
-                continue
-            pa, pb = corner[(ks[0], a)], corner[(ks[0], b)]
-            qa, qb = corner[(ks[1], a)], corner[(ks[1], b)]
-            best = float("inf")
-            for turn in range(4):
-                rot = lambda x, y: [(x, y), (-y, x), (-x, -y), (y, -x)][turn]
-                ra, rb = rot(*pa), rot(*pb)
-                t = (qa[0] - ra[0], qa[1] - ra[1])
-                off = max(abs(rb[0] + t[0] - qb[0]), abs(rb[1] + t[1] - qb[1]), abs(t[0] - round(t[0])), abs(t[1] - round(t[1])))
-                best = min(best, off)
-            worst = max(worst, best)
-        c.check(len(fcs) > 0 and flipped == 0 and worst < 1e-6,
+        nf, flipped, worst, border = uv_map_read_back(uvf)
+        c.check(nf > 0 and flipped == 0 and worst < 1e-6,
                 "remesh %s --uv-out: %d faces, none flipped (%d), every edge's two images a grid symmetry apart (off by %g)"
-                % (name, len(fcs), flipped, worst))
+                % (name, nf, flipped, worst))
     smdf.error(["remesh", cube, "--uv-out", os.path.join(tmp, "cube_uv.obj"), "--faces", "100", "--out", out], "remesh cube --uv-out (its own metric)", 1, "--uv-out")
     smdf.error(["remesh", spot, "--polycube", "box", "--uv-out", os.path.join(tmp, "x.obj"), "--faces", "100", "--out", out], "remesh --uv-out with a polycube", 2, "--uv-out")
-    # an open surface that is not flat: automatic cones need a closed mesh (exit 1, one line);
-    # a flat square's own metric (corners of pi/2) is tessellated as it is
+    # an open surface of three triangles: too few vertices for the four corners a disk needs, no
+    # two adjacent (exit 3, one line saying so); a flat square's own metric (corners of pi/2) is
+    # tessellated as it is
     open_tet = os.path.join(tmp, "open_tet.off")
     with open(open_tet, "w") as fh:
         fh.write("OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 2\n3 0 2 1\n3 0 1 3\n3 0 3 2\n")
-    smdf.error(["remesh", open_tet, "--faces", "100", "--out", out], "remesh an open curved mesh (automatic cones)", 1, "closed")
+    rc, o, err = smdf.run(["remesh", open_tet, "--faces", "100", "--out", out])
+    c.check(rc == 3 and len(err.decode().strip().splitlines()) == 1 and b"no vertex is left" in err,
+            "remesh three triangles (automatic cones): exit 3, one line (rc=%s, %r)" % (rc, err[:200]))
     square = os.path.join(tmp, "square.off")
     with open(square, "w") as fh:
         fh.write("OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n")
@@ -2138,10 +2154,100 @@ def test_shared(smdf, c, shared):
     test_shared_cone_metric(smdf, c, meshes)
     with tempfile.TemporaryDirectory(prefix="smdf_refine_") as tmp:
         test_shared_remesh_refinement(smdf, c, meshes, tmp)
+        test_shared_remesh_open(smdf, c, meshes, tmp)
     with tempfile.TemporaryDirectory(prefix="smdf_rosy_") as tmp:
         test_shared_rosy(smdf, c, meshes, tmp)
         test_shared_rosy_flips(smdf, c, meshes, tmp)
         test_shared_rosy_dense_cones(smdf, c, meshes, tmp)
+
+
+def polygon_topology(verts, faces):
+    """Euler characteristic, boundary loops and per vertex (degree, on the border) of a polygon mesh."""
+    edges = {}
+    for f in faces:
+        for i in range(len(f)):
+            a, b = f[i], f[(i + 1) % len(f)]
+            edges[(min(a, b), max(a, b))] = edges.get((min(a, b), max(a, b)), 0) + 1
+    parent = {}
+
+    def find(x):
+        while parent.setdefault(x, x) != x:
+            parent[x] = parent[parent[x]]
+            x = parent[x]
+        return x
+    degree, border = [0] * len(verts), [False] * len(verts)
+    for (a, b), n in edges.items():
+        degree[a] += 1
+        degree[b] += 1
+        if n == 1:
+            border[a] = border[b] = True
+            parent[find(a)] = find(b)
+    loops = len({find(v) for v in parent})
+    used = {v for f in faces for v in f}
+    return len(used) - len(edges) + len(faces), loops, degree, border
+
+
+def test_shared_remesh_open(smdf, c, meshes, tmp):
+    """smdf remesh with automatic cones on open shared meshes of genus 0 and 1, one and two
+    boundary loops (#37 item 4): the boundary runs along grid lines. Read back from the remesh
+    alone: pure quads, the input's Euler characteristic and boundary loops, every interior
+    vertex of valence 4 but the placed interior cones (4 - K/(pi/2)), every boundary vertex of
+    valence 3 but the placed corners (3 - k at a corner turning by k pi/2), min scaled Jacobian
+    > 0, no face flipped, on the input; and from --uv-out: every border edge on a grid line."""
+    cases = (("annulus_igltest.obj", 3000, []), ("punctured-torus_bff.obj", 3000, []))
+    for name, quads, extra in cases:
+        path = os.path.join(meshes, name)
+        if not os.path.isfile(path):
+            c.check(False, "remesh open: %s not found" % name)
+            continue
+        out, uvf = os.path.join(tmp, "open_%s.obj" % name), os.path.join(tmp, "open_uv_%s.obj" % name)
+        r = smdf.json(["remesh", path, "--faces", str(quads), "--out", out, "--uv-out", uvf] + extra, "remesh %s (open, automatic cones)" % name)
+        if not r:
+            continue
+        iv, ifc = read_obj(path) if name.endswith(".obj") else read_off(path)
+        chi_in, loops_in, _, border_in = polygon_topology(iv, ifc)
+        rv, rf = read_obj(out)
+        chi, loops, degree, border = polygon_topology(rv, rf)
+        at = {}
+        for k, p in enumerate(rv):
+            at[tuple(round(x, 9) for x in p)] = k
+        want_inside, got_inside, corner_bad = [], [], []
+        placed = r.get("placed_cones", [])
+        cone_vertices = set()
+        for x in placed:
+            k = at.get(tuple(round(t, 9) for t in iv[x["vertex"]]))
+            if k is None:
+                corner_bad.append(("missing", x["vertex"]))
+                continue
+            cone_vertices.add(k)
+            q = round(x["curvature"] / (math.pi / 2))
+            if border_in[x["vertex"]]:
+                if not border[k] or degree[k] != 3 - q:
+                    corner_bad.append((x["vertex"], q, degree[k]))
+            else:
+                want_inside.append(4 - q)
+        for k in range(len(rv)):
+            if k in cone_vertices:
+                if not border[k]:
+                    got_inside.append(degree[k])
+            elif degree[k] != (3 if border[k] else 4):
+                got_inside.append(("irregular", k, degree[k], border[k]))
+        q = r.get("quality", {})
+        d = r.get("distance_over_edge_length", {})
+        c.check(r.get("success") is True and all(len(f) == 4 for f in rf) and chi == chi_in and loops == loops_in
+                and sorted(map(str, got_inside)) == sorted(map(str, want_inside)) and not corner_bad,
+                "remesh %s: pure quads, chi %d (input %d), %d boundary loops (input %d), the only irregular vertices the %d placed "
+                "cones, corners of valence 3 - k (%r vs %r, %r)" % (name, chi, chi_in, loops, loops_in, len(placed),
+                                                                    sorted(map(str, got_inside))[:8], sorted(want_inside)[:8], corner_bad[:4]))
+        c.check(q.get("min_scaled_jacobian", -1) > 0 and r.get("flipped_faces") == 0 and r.get("inverted_faces") == 0
+                and d.get("vertices_to_input", 1) < 1e-9 and d.get("remesh_to_input", 9) <= 1.0 and abs(r.get("area_ratio", 0) - 1) < 0.03,
+                "remesh %s: min scaled Jacobian %r > 0, no face flipped, on the input, distance %r, area ratio %r"
+                % (name, q.get("min_scaled_jacobian"), d.get("remesh_to_input"), r.get("area_ratio")))
+        nf, flipped, worst, off_line = uv_map_read_back(uvf)
+        g = r.get("integer_grid_map", {})
+        c.check(nf > 0 and flipped == 0 and worst < 1e-6 and off_line < 1e-6 and g.get("boundary_lines", 0) >= loops_in,
+                "remesh %s --uv-out: none of %d faces flipped (%d), seams grid symmetries (off by %g), every border edge on a grid "
+                "line (off by %g), %r boundary lines" % (name, nf, flipped, worst, off_line, g.get("boundary_lines")))
 
 
 def test_shared_remesh_refinement(smdf, c, meshes, tmp):

@@ -4,6 +4,7 @@
 #include "remesh_placed_cones.h"
 #include "remesh_measures.h"
 
+#include <CGAL/Surface_mesh_direction_fields/boundary_aligned_field.h>
 #include <CGAL/Surface_mesh_direction_fields/compute_trivial_connection.h>
 #include <CGAL/Surface_mesh_direction_fields/cone_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/integer_grid_map.h>
@@ -174,14 +175,30 @@ Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, M
   stage("cross field and integer-grid map");
   auto adjustment = on.add_property_map<edge_descriptor, double>("e:smdf_remesh_adjustment", 0.).first;
   auto field = on.add_property_map<face_descriptor, double>("f:smdf_remesh_field", 0.).first;
-  const SMDF::Trivial_connection_status ts = on_file(file, [&] {
-    return SMDF::compute_trivial_connection(on, indices, adjustment, SMDF::parameters::edge_length_map(lengths).symmetry_order(4)
-                                                                       .smoothest_generator_turning_numbers(true).face_angle_map(field));
-  });
-  if(!ts.success) {
+  // closed: the trivial connection with the interior cones as singularities, its turning around
+  // the handles the smoothest; open: the field parallel to the boundary (straight between the
+  // corners under the metric), compensated around the handles the same way
+  bool field_ok = false;
+  std::string field_message;
+  if(CGAL::is_closed(on)) {
+    const SMDF::Trivial_connection_status ts = on_file(file, [&] {
+      return SMDF::compute_trivial_connection(on, indices, adjustment, SMDF::parameters::edge_length_map(lengths).symmetry_order(4)
+                                                                           .smoothest_generator_turning_numbers(true).face_angle_map(field));
+    });
+    field_ok = ts.success;
+    field_message = ts.message;
+  } else {
+    auto matching = on.add_property_map<edge_descriptor, int>("e:smdf_remesh_matching", 0).first;
+    const SMDF::Boundary_aligned_field_status bs = on_file(file, [&] {
+      return SMDF::boundary_aligned_field_of_metric(on, 4, field, matching, SMDF::parameters::edge_length_map(lengths));
+    });
+    field_ok = bs.success;
+    field_message = bs.message;
+  }
+  if(!field_ok) {
     out["metric"] = metric;
     out["success"] = false;
-    throw Failed_result{out, file + ": the cross field of the placed cones failed: " + ts.message, 3};
+    throw Failed_result{out, file + ": the cross field of the placed cones failed: " + field_message, 3};
   }
   timed("cross_field_s");
   const double hm = requested_h > 0 ? requested_h : std::sqrt(metric_area(on, lengths) / double(requested_faces));
@@ -195,6 +212,8 @@ Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, M
   ig["message"] = gs.message;
   ig["singularities"] = gs.singularities.size();
   ig["seams"] = gs.arcs;
+  ig["boundary_corners"] = gs.boundary_corners.size();
+  ig["boundary_lines"] = gs.boundary_lines;
   ig["rounded_values"] = gs.rounded;
   ig["folded_triangles"] = gs.folded_triangles;
   ig["stiffening_rounds"] = gs.stiffening_rounds;
@@ -223,9 +242,9 @@ Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Me
                                          const std::function<void(const char*)>& stage)
 {
   const SMDF::Mesh_topology<Mesh> topo = SMDF::mesh_topology(mesh);
-  if(topo.components.size() != 1 || !topo.is_closed())
-    throw Error(file + ": automatic cones need a closed mesh of one component; this one has " + std::to_string(topo.components.size()) +
-                " component(s) and " + std::to_string(topo.boundary_loops.size()) + " boundary loop(s) [invalid_input]");
+  if(topo.components.size() != 1)
+    throw Error(file + ": automatic cones need a mesh of one component; this one has " + std::to_string(topo.components.size()) +
+                " [invalid_input]");
   // Automatic spacing: cones only kept apart (0) first, then 2, 4 and 6 grid edges apart while
   // the map folds (measured at 4,000 quads: the casting and the botijo unfold at 2, the fertility
   // folds at 2 and not at 0; at 500 quads the bunny and the triple torus need 2; at 20,000 quads

@@ -4,11 +4,11 @@
 #ifndef CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTEGER_GRID_MAP_H
 #define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTEGER_GRID_MAP_H
 
-// An integer-grid map of a closed mesh of any genus from a cross field and a scale (mixed-
-// integer quadrangulation, Bommes, Zimmer and Kobbelt 2009): a seamless parametrisation whose
-// gradients follow the field, scaled by the flat cone metric's conformal factor, then the seam
-// translations and the singularities rounded to integers. Its edge lengths are a flat cone
-// metric that tessellate_flat_metric() grids exactly.
+// An integer-grid map of a mesh of any genus and any number of boundary loops from a cross field
+// and a scale (mixed-integer quadrangulation, Bommes, Zimmer and Kobbelt 2009): a seamless
+// parametrisation whose gradients follow the field, scaled by the flat cone metric's conformal
+// factor, then the seam translations, the singularities and the boundary's grid lines rounded to
+// integers. Its edge lengths are a flat cone metric that tessellate_flat_metric() grids exactly.
 
 #include <CGAL/Surface_mesh_direction_fields/Intrinsic_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/errors.h>
@@ -49,6 +49,12 @@ struct Integer_grid_map_status
   std::size_t folded_triangles = 0;
   std::size_t seamless_folded_triangles = 0;   ///< the same count for the seamless map, before rounding
   int stiffening_rounds = 0;   ///< re-solves with the faces around folded ones weighted more
+  /// boundary vertices where the boundary turns (by a multiple of \f$\pi/2\f$ under the metric):
+  /// integer points of the map, in vertex order, with the quarter turns there
+  std::vector<std::pair<std::size_t, int>> boundary_corners;
+  /// straight runs of the boundary between corners and seams: each lies on one grid line, one
+  /// integer value each
+  std::size_t boundary_lines = 0;
   /// the smallest ratio, over the triangles, of the image's signed area to the area the target
   /// scale asks for (1 where the map is exactly the target, negative for a folded triangle)
   double min_area_ratio = 0;
@@ -99,11 +105,13 @@ struct Corner_expression
 } // namespace internal
 
 /// \ingroup PkgSurfaceMeshDirectionFieldsRemeshing
-/// Computes an integer-grid map of a closed triangle mesh (mixed-integer quadrangulation,
-/// Bommes, Zimmer and Kobbelt 2009): per corner, coordinates \f$P = U + iV\f$ such that
+/// Computes an integer-grid map of a triangle mesh (mixed-integer quadrangulation, Bommes, Zimmer
+/// and Kobbelt 2009), closed or open: per corner, coordinates \f$P = U + iV\f$ such that
 /// - across every edge the two faces' images differ by a symmetry of the square grid: a rotation
 ///   by a multiple of \f$\pi/2\f$ (the field's matching) and an integer translation;
 /// - every singularity of the field is an integer point;
+/// - on an open mesh, every boundary edge lies on a grid line (\f$U\f$ or \f$V\f$ an integer
+///   along it) and every boundary corner is an integer point: the boundary runs along the grid;
 /// - in each face the map is as close as possible (least squares, cotan weights) to the face's
 ///   shape under the metric, rotated so that the field's direction becomes the \f$U\f$ axis and
 ///   scaled so that one grid unit measures \f$h\f$. Under a flat cone metric whose cones are the
@@ -125,7 +133,15 @@ struct Corner_expression
 /// not fixed again). The read-back counts folded triangles: rounding can fold the map where
 /// singularities are closer than about one grid unit; the status then fails.
 ///
-/// \param tm a closed triangle mesh of one component
+/// <b>Boundary.</b> On an open mesh the cut graph's seams end on the boundary, and the boundary
+/// splits into straight runs at its corners (vertices where it turns under the metric) and where
+/// seams end. A run lies on one grid line: each of its vertices keeps one unknown (its position
+/// along the line) and the run one small unknown (the line), rounded with the translations; each
+/// corner is a small unknown like a singularity. The field must follow the boundary (e.g.
+/// boundary_aligned_field_of_metric() on a flat cone metric whose boundary is straight between
+/// corners that turn by multiples of \f$\pi/2\f$); the status fails with a message otherwise.
+///
+/// \param tm a triangle mesh of one component, closed or with boundary
 /// \param face_angles the cross field (\f$N = 4\f$): per face, the angle of one of its four
 ///   directions, counterclockwise from `halfedge(f)` in the face's frame under the metric of `np`
 ///   (as the package's field functions compute it with that `edge_length_map`)
@@ -135,7 +151,7 @@ struct Corner_expression
 /// \param np `edge_length_map` (the metric, e.g. a flat cone metric on `tm`'s edges) or
 ///   `vertex_point_map`, index maps
 ///
-/// Throws `Input_error` for open meshes, several components, or \f$h \le 0\f$.
+/// Throws `Input_error` for several components, or \f$h \le 0\f$.
 template <typename TriangleMesh, typename FaceAngleMap, typename HalfedgeUVMap,
           typename NamedParameters = parameters::Default_named_parameters>
 Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngleMap& face_angles, double h, HalfedgeUVMap uv_map,
@@ -149,10 +165,9 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   const Intrinsic_mesh<TriangleMesh> im = internal::get_intrinsic_mesh(tm, np);
   const internal::Mesh_arrays<TriangleMesh>& m = im.arrays();
   const internal::Topology_arrays& topo = im.topology_arrays();
-  if(topo.components.size() != 1 || !topo.loops.empty())
-    throw Input_error(Input_error::INVALID_ARGUMENT, "integer_grid_map() needs a closed mesh of one component; this one has " +
-                                                     std::to_string(topo.components.size()) + " components and " +
-                                                     std::to_string(topo.loops.size()) + " boundary loops");
+  if(topo.components.size() != 1)
+    throw Input_error(Input_error::INVALID_ARGUMENT, "integer_grid_map() needs a mesh of one component; this one has " +
+                                                     std::to_string(topo.components.size()));
   const std::size_t nv = m.number_of_vertices(), ne = m.number_of_edges(), nf = m.number_of_faces();
   const double quarter = CGAL_PI / 2;
 
@@ -178,7 +193,7 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   // matching r_e: crossing from face(2e+1) into face(2e), theta_L = theta_R + transport + r pi/2
   std::vector<int> r(ne, 0);
   for(std::size_t e = 0; e < ne; ++e) {
-    if(tree_edge[e]) continue;
+    if(tree_edge[e] || m.face[2 * e] < 0 || m.face[2 * e + 1] < 0) continue;   // border edges: no matching
     const double d = theta[std::size_t(m.face[2 * e])] - theta[std::size_t(m.face[2 * e + 1])] - internal::transport_increment(m, int(2 * e));
     r[e] = int(std::lround(d / quarter));
   }
@@ -191,14 +206,17 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
     turns[std::size_t(m.target[2 * e])] -= r[e];
   }
   std::vector<char> singular(nv, 0);
-  for(std::size_t v = 0; v < nv; ++v) singular[v] = !m.is_isolated(int(v)) && ((turns[v] % 4) + 4) % 4 != 0;
+  for(std::size_t v = 0; v < nv; ++v)
+    singular[v] = !m.is_isolated(int(v)) && !m.is_boundary_vertex(int(v)) && ((turns[v] % 4) + 4) % 4 != 0;
   std::vector<char> cut(ne, 0);
   std::vector<int> degree(nv, 0);
   for(std::size_t e = 0; e < ne; ++e)
-    if(!tree_edge[e]) { cut[e] = 1; ++degree[std::size_t(m.source(int(2 * e)))]; ++degree[std::size_t(m.target[2 * e])]; }
+    if(!tree_edge[e] && m.face[2 * e] >= 0 && m.face[2 * e + 1] >= 0) { cut[e] = 1; ++degree[std::size_t(m.source(int(2 * e)))]; ++degree[std::size_t(m.target[2 * e])]; }
   {
     std::vector<int> leaves;
-    for(std::size_t v = 0; v < nv; ++v) if(degree[v] == 1 && !singular[v]) leaves.push_back(int(v));
+    // a seam that reaches the boundary stays: it ends there
+    auto prunable = [&](int v) { return !singular[std::size_t(v)] && !m.is_boundary_vertex(v); };
+    for(std::size_t v = 0; v < nv; ++v) if(degree[v] == 1 && prunable(int(v))) leaves.push_back(int(v));
     while(!leaves.empty()) {
       const int v = leaves.back();
       leaves.pop_back();
@@ -209,7 +227,7 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
       cut[std::size_t(x >> 1)] = 0;
       degree[std::size_t(v)] = 0;
       const int w = m.target[std::size_t(x)];
-      if(--degree[std::size_t(w)] == 1 && !singular[std::size_t(w)]) leaves.push_back(w);
+      if(--degree[std::size_t(w)] == 1 && prunable(w)) leaves.push_back(w);
     }
   }
   for(std::size_t e = 0; e < ne; ++e) st.cut_edges += cut[e];
@@ -217,7 +235,7 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   std::vector<int> arc(ne, -1);
   std::vector<char> arc_forward(ne, 1);   // halfedge 2e runs along its arc
   int narcs = 0;
-  auto is_node = [&](int v) { return degree[std::size_t(v)] != 2 || singular[std::size_t(v)]; };
+  auto is_node = [&](int v) { return degree[std::size_t(v)] != 2 || singular[std::size_t(v)] || m.is_boundary_vertex(v); };
   auto next_cut_out = [&](int x) {   // at target(x), the other cut edge (degree-2 vertex)
     const int v = m.target[std::size_t(x)];
     int y = m.vertex_out[std::size_t(v)], y0 = y;
@@ -256,35 +274,101 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
       return st;
     }
   }
-  // 4. corner expressions. Small unknowns: 0..narcs-1 the arcs' translations, then one position
-  // per singularity. Walking counterclockwise around v from a corner, crossing the edge of
-  // halfedge y (from face(y) into face of ccw_out... ) applies that edge's motion.
+  // 4. the boundary (open meshes): corners where it turns under the metric, and each border
+  // edge's direction in its face's target frame (the field rotated onto U: a power of i)
+  std::vector<char> bcorner(nv, 0);
+  std::vector<int> turn_quarters(nv, 0);
+  for(std::size_t v = 0; v < nv; ++v) {
+    if(!m.is_boundary_vertex(int(v))) continue;
+    double sum = 0;
+    int x = m.vertex_out[v];
+    for(;;) {
+      sum += m.angle[std::size_t(x)];
+      const int y = m.ccw_out(x);
+      if(m.face[std::size_t(y)] < 0) break;
+      x = y;
+    }
+    const double turning = CGAL_PI - sum;
+    if(std::abs(turning) > quarter / 2) { bcorner[v] = 1; turn_quarters[v] = int(std::lround(turning / quarter)); }
+  }
+  std::vector<Cplx> border_dir(ne, Cplx(0, 0));   // per border edge, its direction in the frame of its face
+  for(const auto& loop : topo.loops)
+    for(int b : loop) {
+      const int x = b ^ 1;   // the edge's halfedge in its face
+      const double a = internal::halfedge_direction(m, x) - theta[std::size_t(m.face[std::size_t(x)])];
+      const double k = std::round(a / quarter);
+      if(std::abs(a - k * quarter) > 1e-3) {
+        st.message = "the field is not aligned with the boundary at edge " + std::to_string(x >> 1) + " (" + std::to_string(std::abs(a - k * quarter)) +
+                     " rad off): an open mesh needs a cross field that follows its boundary";
+        return st;
+      }
+      border_dir[std::size_t(x >> 1)] = unit_power(int(k));
+    }
+  // boundary lines: runs of border edges between corners and seam ends, one small unknown each
+  std::vector<int> line_of(ne, -1);
+  int nlines = 0;
+  for(const auto& loop : topo.loops) {
+    const std::size_t n = loop.size();
+    auto breaks = [&](int b) {   // the run stops at the source of border halfedge b
+      const int v = m.target[std::size_t(b ^ 1)];
+      return bcorner[std::size_t(v)] || degree[std::size_t(v)] > 0;
+    };
+    std::size_t first = 0;
+    while(first < n && !breaks(loop[first])) ++first;
+    if(first == n) first = 0;   // a loop with neither corner nor seam: one line
+    for(std::size_t i = 0; i < n; ++i) {
+      const int b = loop[(first + i) % n];
+      if(i == 0 || breaks(b)) ++nlines;
+      line_of[std::size_t(b >> 1)] = nlines - 1;
+    }
+  }
+  st.boundary_lines = std::size_t(nlines);
+  // 5. corner expressions. Small unknowns: 0..narcs-1 the arcs' translations, then the boundary
+  // lines (the real part their integer coordinate), then one position per singularity and per
+  // boundary corner. The other vertices are the big unknowns: a complex one inside, a real one
+  // (the position along its line, in the direction d) on the boundary: P = d (s + i line).
+  // Walking counterclockwise around v from a corner, crossing the edge of halfedge y (from
+  // face(y) into face of ccw_out... ) applies that edge's motion.
   std::vector<int> sing_index(nv, -1);
-  int nsmall = narcs;
-  for(std::size_t v = 0; v < nv; ++v) if(singular[v]) sing_index[v] = nsmall++;
+  int nsmall = narcs + nlines;
+  for(std::size_t v = 0; v < nv; ++v) if(singular[v] || bcorner[v]) sing_index[v] = nsmall++;
   std::vector<int> big(nv, -1);
+  std::vector<Cplx> big_dir;   // per big unknown: 0 (complex) or its line's direction (real)
+  std::vector<int> big_line;
   int nbig = 0;
-  for(std::size_t v = 0; v < nv; ++v) if(!singular[v] && !m.is_isolated(int(v))) big[v] = nbig++;
+  for(std::size_t v = 0; v < nv; ++v) {
+    if(sing_index[v] >= 0 || m.is_isolated(int(v))) continue;
+    big[v] = nbig++;
+    const bool on_border = m.is_boundary_vertex(int(v));
+    big_dir.push_back(on_border ? border_dir[std::size_t(m.vertex_out[v] >> 1)] : Cplx(0, 0));
+    big_line.push_back(on_border ? line_of[std::size_t(m.vertex_out[v] >> 1)] : -1);
+  }
   std::vector<Expr> corner(2 * ne);   // per halfedge x with a face: the corner at source(x)
   struct Closing { std::vector<std::pair<int, Cplx>> t; };   // sum c_k s_k = 0
   std::vector<Closing> closings;
   for(std::size_t v = 0; v < nv; ++v) {
     if(m.is_isolated(int(v))) continue;
-    // start right after a cut edge if there is one, so no wedge wraps around
+    const bool on_border = m.is_boundary_vertex(int(v));
+    // start right after a cut edge if there is one, so no wedge wraps around; on the boundary at
+    // the fan's first face
     int start = m.vertex_out[v];
-    {
+    if(!on_border) {
       int x = start;
       do { if(cut[std::size_t(x >> 1)]) { start = x; break; } x = m.ccw_out(x); } while(x != start);
     }
     Expr e;
-    if(singular[v]) { e.vertex = -1; e.add(sing_index[v], Cplx(1, 0)); }
-    else e.vertex = big[v];
+    if(sing_index[v] >= 0) { e.vertex = -1; e.add(sing_index[v], Cplx(1, 0)); }
+    else {
+      e.vertex = big[v];
+      if(on_border) e.add(narcs + big_line[std::size_t(big[v])], big_dir[std::size_t(big[v])] * Cplx(0, 1));
+    }
     int x = start;
     do {
       corner[std::size_t(x)] = e;   // corner of face(x) at v = source(x)
       // next corner counterclockwise: in the face of ccw_out(x) = opposite(prev(x)), across the
       // edge of prev(x), from face(x) into face(prev(x) ^ 1)
       const int y = m.prev(x);
+      if(m.face[std::size_t(y ^ 1)] < 0) break;   // the fan ends at the boundary
       const std::size_t ey = std::size_t(y >> 1);
       if(cut[ey]) {
         // crossing from face(y) into face(y ^ 1); y = 2e crosses L -> R, y = 2e + 1 crosses R -> L
@@ -297,8 +381,8 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
       }
       x = m.ccw_out(x);
     } while(x != start);
+    if(on_border) continue;   // no fan to close: the seams that end here are free
     // closing: the expression reached must equal the start one
-    const Expr& s0 = corner[std::size_t(start)];
     Closing c;
     // e = a Z + sum, s0 = Z (big) or the singularity's small unknown
     if(!singular[v]) {
@@ -316,18 +400,49 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
       closings.push_back(c);
     }
   }
-  for(std::size_t v = 0; v < nv; ++v)
+  for(std::size_t v = 0; v < nv; ++v) {
     if(singular[v]) {
       int k = ((turns[v] % 4) + 4) % 4;
       st.singularities.emplace_back(v, k > 2 ? k - 4 : k);
     }
-  // 5. the energy: per face and side x (corner a = source(x), b = target(x)), the cotan weight of
+    if(bcorner[v]) st.boundary_corners.emplace_back(v, turn_quarters[v]);
+  }
+  // the boundary's conditions, real rows on the small unknowns: at both ends of every border
+  // edge, Im(conj(d) P) is its line's value (d its direction in its face)
+  struct Line_condition { std::vector<std::pair<int, Cplx>> t; int line; };   // Im(sum t) = Re(line)
+  std::vector<Line_condition> line_conditions;
+  for(const auto& loop : topo.loops)
+    for(int b : loop) {
+      const int x = b ^ 1;
+      const Cplx dc = std::conj(border_dir[std::size_t(x >> 1)]);
+      for(int c : {x, m.next[std::size_t(x)]}) {
+        const Expr& p = corner[std::size_t(c)];
+        if(p.vertex >= 0 && std::abs((dc * p.a * big_dir[std::size_t(p.vertex)]).imag()) > 1e-9) {
+          st.message = "the boundary turns at vertex " + std::to_string(m.source(c)) + " by an angle that is not a multiple of pi/2 under the metric";
+          return st;
+        }
+        Line_condition lc;
+        lc.line = narcs + line_of[std::size_t(x >> 1)];
+        for(const auto& s : p.small) lc.t.emplace_back(s.first, dc * s.second);
+        line_conditions.push_back(lc);
+      }
+    }
+  // 6. the energy: per face and side x (corner a = source(x), b = target(x)), the cotan weight of
   // the opposite corner times |P_b - P_a - s_f e^{-i theta_f} (z_b - z_a)|^2, in real unknowns:
-  // big 2 per vertex, small 2 per small unknown
-  const bool pin = st.singularities.empty();   // no singularity: one vertex holds the translation
-  const int pinned = pin ? 0 : -1;
-  auto bigcol = [&](int b) { return pin ? (b == pinned ? -1 : (b > pinned ? b - 1 : b)) : b; };
-  const int nb = 2 * (pin ? nbig - 1 : nbig), ns = 2 * nsmall;
+  // big 2 per vertex inside and 1 on the boundary, small 2 per small unknown. The translation of
+  // the whole map: with a singularity or a corner, the first one is at the origin (a condition
+  // below); else on the boundary the first line is at 0 and one of its vertices holds the
+  // position along it; else one vertex holds it.
+  const int first_point = narcs + nlines < nsmall ? narcs + nlines : -1;
+  const int pinned = first_point >= 0 ? -1 : nlines > 0 ? big[std::size_t(m.source(topo.loops[0][0] ^ 1))] : 0;
+  std::vector<int> big_col(std::size_t(nbig), -1);
+  int nb = 0;
+  for(int b = 0; b < nbig; ++b) {
+    if(b == pinned) continue;
+    big_col[std::size_t(b)] = nb;
+    nb += big_dir[std::size_t(b)] == Cplx(0, 0) ? 2 : 1;
+  }
+  const int ns = 2 * nsmall;
   std::vector<Eigen::Triplet<double>> tbb, tbs;
   Eigen::MatrixXd Hss;
   Eigen::VectorXd gb, gs;
@@ -352,10 +467,16 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
     re = Term(); imr = Term();
     auto put_big = [&](int v, Cplx c) {
       if(v < 0) return;
-      const int col = bigcol(v);
+      const int col = big_col[std::size_t(v)];
       if(col < 0) return;
-      re.b.emplace_back(2 * col, c.real()); re.b.emplace_back(2 * col + 1, -c.imag());
-      imr.b.emplace_back(2 * col, c.imag()); imr.b.emplace_back(2 * col + 1, c.real());
+      const Cplx d = big_dir[std::size_t(v)];
+      if(d != Cplx(0, 0)) {   // a real unknown s along d: c d s
+        re.b.emplace_back(col, (c * d).real());
+        imr.b.emplace_back(col, (c * d).imag());
+        return;
+      }
+      re.b.emplace_back(col, c.real()); re.b.emplace_back(col + 1, -c.imag());
+      imr.b.emplace_back(col, c.imag()); imr.b.emplace_back(col + 1, c.real());
     };
     auto put_small = [&](int k, Cplx c) {
       re.s.emplace_back(2 * k, c.real()); re.s.emplace_back(2 * k + 1, -c.imag());
@@ -401,7 +522,7 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
       add_row(imr, wpos * stiffness[f]);
     }
   }
-  // 6. the seamless map: Schur complement on the small unknowns, S = Hss - Hbs^T Hbb^-1 Hbs, one
+  // 7. the seamless map: Schur complement on the small unknowns, S = Hss - Hbs^T Hbb^-1 Hbs, one
   // back-substitution per column of Hbs, none kept (a dense Hbb^-1 Hbs took 1.4 GB on armadillo):
   // the vertex unknowns are solved again from y where needed
   xg = Eigen::VectorXd::Zero(nb);
@@ -457,11 +578,18 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
     add_condition(imr, 0);
   }
   auto unit_row = [&](int k) { Eigen::VectorXd e = Eigen::VectorXd::Zero(ns); e[k] = 1; return e; };
-  if(!pin) {   // the first singularity at the origin
-    const int k = sing_index[st.singularities[0].first];
-    add_condition(unit_row(2 * k), 0);
-    add_condition(unit_row(2 * k + 1), 0);
+  for(int k = narcs; k < narcs + nlines; ++k) add_condition(unit_row(2 * k + 1), 0);   // the lines' values are real
+  for(const Line_condition& lc : line_conditions) {   // Im(sum c_k S_k) - Re(line) = 0
+    Eigen::VectorXd row = Eigen::VectorXd::Zero(ns);
+    for(const auto& p : lc.t) { row[2 * p.first] += p.second.imag(); row[2 * p.first + 1] += p.second.real(); }
+    row[2 * lc.line] -= 1;
+    if(row.cwiseAbs().maxCoeff() > 1e-12) add_condition(row, 0);   // inside a line: 0 = 0, no projection
   }
+  if(first_point >= 0) {   // the first singularity or corner at the origin
+    add_condition(unit_row(2 * first_point), 0);
+    add_condition(unit_row(2 * first_point + 1), 0);
+  } else if(nlines > 0)
+    add_condition(unit_row(2 * narcs), 0);
   // minimise y^T S y - 2 rs^T y subject to Q y = delta (independent rows): the KKT system
   auto solve_small = [&](Eigen::VectorXd& y) {
     const Eigen::Index mq = Eigen::Index(Q.size());
@@ -482,8 +610,9 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   auto value = [&](const Expr& e) {
     Cplx p(0, 0);
     if(e.vertex >= 0) {
-      const int col = bigcol(e.vertex);
-      if(col >= 0) p += e.a * Cplx(z[2 * col], z[2 * col + 1]);
+      const int col = big_col[std::size_t(e.vertex)];
+      const Cplx d = big_dir[std::size_t(e.vertex)];
+      if(col >= 0) p += d != Cplx(0, 0) ? e.a * d * z[col] : e.a * Cplx(z[col], z[col + 1]);
     }
     for(const auto& s : e.small) p += s.second * Cplx(y[2 * s.first], y[2 * s.first + 1]);
     return p;
@@ -528,7 +657,7 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   };
   if(!solve_small(y)) { st.message = "the seams' conditions are inconsistent"; return st; }
   const Eigen::VectorXd y_seamless = y;
-  // 7. rounding: singularity positions, then translations, the nearest to an integer first.
+  // 8. rounding: singularity positions, then translations, the nearest to an integer first.
   // Rounding one value can imply others through the closings with a non-unit coefficient (a seam
   // that leaves and re-enters the same singularity: 1 - i^k); the value is then moved to the next
   // integers until every implied value is an integer too.
@@ -560,7 +689,7 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   for(int phase = 0; phase < 2; ++phase) {
     std::vector<int> todo;
     for(int k = 0; k < nsmall; ++k)
-      if((phase == 0) == (k >= narcs)) { todo.push_back(2 * k); todo.push_back(2 * k + 1); }
+      if((phase == 0) == (k >= narcs + nlines)) { todo.push_back(2 * k); todo.push_back(2 * k + 1); }
     while(!todo.empty()) {
       // the implied ones first: checked, not fixed
       bool any = false;
@@ -624,7 +753,7 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
     y[k] = std::round(y[k]);
   }
   if(!unfold()) { if(st.message.empty()) st.message = "the stiffened system could not be solved"; return st; }
-  // 8. the vertex unknowns, the corners' images and the read-back
+  // 9. the vertex unknowns, the corners' images and the read-back
   auto folds = [&]() {
     std::size_t n = 0;
     for(std::size_t f = 0; f < nf; ++f) n += folded(f);
