@@ -2194,7 +2194,8 @@ def test_shared_remesh_open(smdf, c, meshes, tmp):
     vertex of valence 4 but the placed interior cones (4 - K/(pi/2)), every boundary vertex of
     valence 3 but the placed corners (3 - k at a corner turning by k pi/2), min scaled Jacobian
     > 0, no face flipped, on the input; and from --uv-out: every border edge on a grid line."""
-    cases = (("annulus_igltest.obj", 3000, []), ("punctured-torus_bff.obj", 3000, []))
+    cases = (("annulus_igltest.obj", 3000, []), ("punctured-torus_bff.obj", 3000, []), ("mushroom_cgal.off", 4000, []),
+             ("holes_cgal.off", 4000, []))
     for name, quads, extra in cases:
         path = os.path.join(meshes, name)
         if not os.path.isfile(path):

@@ -96,10 +96,14 @@ Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, M
   Edge_length_property placed = mesh.add_property_map<edge_descriptor, double>("e:smdf_placed_length", 0.).first;
   // the grid's edge length on the input, roughly (the metric scales it by e^u, u within the bound)
   const double h_input = requested_h > 0 ? requested_h : std::sqrt(CGAL::Polygon_mesh_processing::area(mesh) / double(requested_faces));
+  // interior cones at least one grid edge from the boundary where the placement can (closer, the
+  // rounding puts their grid point on the boundary's line or across it and the map folds)
+  const double boundary_spacing = (std::max)(cone_spacing, 1.);
   const auto ps = on_file(file, [&] {
     return SMDF::place_remeshing_cones(mesh, placed, SMDF::parameters::symmetry_order(4).distortion_bound(distortion_bound)
                                                          .maximum_number_of_cones(int(max_cones))
-                                                         .minimum_cone_distance(cone_spacing * h_input));
+                                                         .minimum_cone_distance(cone_spacing * h_input)
+                                                         .minimum_boundary_distance(boundary_spacing * h_input));
   });
   Json pl = Json::object(), pc = Json::array();
   for(const auto& c : ps.cones) {

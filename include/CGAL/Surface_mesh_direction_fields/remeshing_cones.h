@@ -177,7 +177,9 @@ inline double spread(const std::vector<double>& u, const std::vector<char>& near
 /// of the total curvature spread evenly by area, the vertex where \f$u\f$ is farthest from its
 /// area-weighted mean becomes a cone of \f$\pm 2\pi/N\f$, of the sign that flattens it there
 /// (a quad vertex of valence 3 or 5; a boundary corner of angle \f$\pi/2\f$ or \f$3\pi/2\f$),
-/// never next to another cone, until the spread \f$\max u - \min u\f$ away from the cones and
+/// never next to another cone, and on the boundary only where the boundary itself turns that way
+/// (a convex corner where the input's angle is below \f$3\pi/4\f$, a concave one above
+/// \f$5\pi/4\f$: elsewhere the corner's quads would have an angle near \f$\pi\f$), until the spread \f$\max u - \min u\f$ away from the cones and
 /// their neighbours (where the log scale of a cone metric is singular) is within the bound and
 /// the cones sum to \f$2\pi\chi\f$. One sparse Cholesky factorisation serves every step (one
 /// back-substitution each).
@@ -198,7 +200,8 @@ inline double spread(const std::vector<double>& u, const std::vector<char>& near
 ///   `minimum_cone_distance` (default 0: only adjacent cones are excluded; a length of the input
 ///   metric, along edges: a new cone goes closer than that to another only when no other vertex
 ///   of the sign needed is left; a remesh of edge length \f$h\f$ wants its cones a few \f$h\f$
-///   apart), `edge_length_map` or
+///   apart), `minimum_boundary_distance` (default: `minimum_cone_distance`; the same for interior
+///   cones and the boundary), `edge_length_map` or
 ///   `vertex_point_map` (the input metric), `conformal_factor_map` (receives \f$u\f$) and the
 ///   index maps.
 ///
@@ -221,6 +224,9 @@ Remeshing_cones_status<TriangleMesh> place_remeshing_cones(const TriangleMesh& t
   const double min_distance = choose_parameter(get_parameter(np, internal_np::minimum_cone_distance), 0.);
   if(!(min_distance >= 0) || !std::isfinite(min_distance))
     throw Input_error(Input_error::INVALID_ARGUMENT, "minimum_cone_distance must be finite and not negative");
+  const double boundary_distance = choose_parameter(get_parameter(np, internal_np::minimum_boundary_distance), min_distance);
+  if(!(boundary_distance >= 0) || !std::isfinite(boundary_distance))
+    throw Input_error(Input_error::INVALID_ARGUMENT, "minimum_boundary_distance must be finite and not negative");
   st.N = N;
   st.distortion_bound = bound;
   const Intrinsic_mesh<TriangleMesh> im = internal::get_intrinsic_mesh(tm, np);
@@ -269,6 +275,43 @@ Remeshing_cones_status<TriangleMesh> place_remeshing_cones(const TriangleMesh& t
     }
     for(std::size_t w : touched) reach[w] = std::numeric_limits<double>::infinity();
   };
+  // a boundary vertex becomes a corner only where the boundary itself turns that way (its angle
+  // below 3 pi/4 for a convex corner, a quad's corner there; above 5 pi/4 for a concave one,
+  // three quads): a corner on a straight or smooth stretch gives a quad with an angle near pi
+  std::vector<double> boundary_angle(nv, CGAL_PI);
+  for(std::size_t v = 0; v < nv; ++v) {
+    if(!m.is_boundary_vertex(int(v))) continue;
+    double sum = 0;
+    for(int h = m.vertex_out[v];; h = m.ccw_out(h)) { sum += m.angle[std::size_t(h)]; if(m.face[std::size_t(m.ccw_out(h))] < 0) break; }
+    boundary_angle[v] = sum;
+  }
+  auto corner_fits = [&](std::size_t v, int sv) {
+    return !m.is_boundary_vertex(int(v)) || (sv > 0 ? boundary_angle[v] < 0.75 * CGAL_PI : boundary_angle[v] > 1.25 * CGAL_PI);
+  };
+  // interior vertices closer than minimum_boundary_distance to the boundary (along edges): a
+  // cone there only when no other vertex of the sign needed is left (its grid point would be
+  // rounded onto the boundary's grid line, or across it)
+  std::vector<char> near_boundary(nv, 0);
+  if(boundary_distance > 0) {
+    typedef std::pair<double, std::size_t> Item;
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+    std::vector<double> dist(nv, std::numeric_limits<double>::infinity());
+    for(std::size_t v = 0; v < nv; ++v) if(m.is_boundary_vertex(int(v))) { dist[v] = 0; queue.emplace(0., v); }
+    while(!queue.empty()) {
+      const Item it = queue.top();
+      queue.pop();
+      if(it.first > dist[it.second]) continue;
+      near_boundary[it.second] = !m.is_boundary_vertex(int(it.second));
+      for(int h = m.vertex_out[it.second], h0 = h;;) {
+        const std::size_t w = std::size_t(m.target[std::size_t(h)]);
+        const double dw = it.first + m.length[std::size_t(h >> 1)];
+        if(dw < boundary_distance && dw < dist[w]) { dist[w] = dw; queue.emplace(dw, w); }
+        if(m.face[std::size_t(h)] < 0) break;
+        h = m.ccw_out(h);
+        if(h == h0) break;
+      }
+    }
+  }
   long ksum = 0;
   auto step = [&](const std::vector<double>& u, int s) {
     // s = 0: either sign, by the farthest vertex's side of the mean
@@ -279,7 +322,7 @@ Remeshing_cones_status<TriangleMesh> place_remeshing_cones(const TriangleMesh& t
       for(std::size_t v = 0; v < nv; ++v) {
         const double d = u[v] - mean;
         const int sv = s != 0 ? s : (d > 0 ? 1 : -1);
-        if(d * sv <= 0 || near_cone[v] || (pass == 0 && crowded[v])) continue;   // one quantum per cone, none adjacent
+        if(d * sv <= 0 || near_cone[v] || (pass == 0 && (crowded[v] || near_boundary[v])) || !corner_fits(v, sv)) continue;   // one quantum per cone, none adjacent
         if(std::abs(d) > best_d) { best = v; best_d = std::abs(d); }
       }
     }
@@ -302,11 +345,13 @@ Remeshing_cones_status<TriangleMesh> place_remeshing_cones(const TriangleMesh& t
   auto cone_count = [&] { std::size_t c = 0; for(int x : k) c += x != 0; return c; };
   // the vertices the spread leaves out: the cones' neighbourhoods, within minimum_cone_distance
   // when it is given (a peak there can take no cone of its own: counting it made the placement
-  // add cones elsewhere up to the maximum, 80 -> 500 on homer at 2 quad sides)
+  // add cones elsewhere up to the maximum, 80 -> 500 on homer at 2 quad sides), the same near
+  // the boundary and on its straight or smooth stretches (500 cones on the alex and the beetle)
   std::vector<char> unmeasured;
   auto left_out = [&]() -> const std::vector<char>& {
     unmeasured = near_cone;
-    for(std::size_t v = 0; v < nv; ++v) unmeasured[v] = unmeasured[v] || crowded[v];
+    for(std::size_t v = 0; v < nv; ++v)
+      unmeasured[v] = unmeasured[v] || crowded[v] || near_boundary[v] || (!corner_fits(v, 1) && !corner_fits(v, -1));
     return unmeasured;
   };
   auto vertex_map = get(CGAL::dynamic_vertex_property_t<double>(), tm);
