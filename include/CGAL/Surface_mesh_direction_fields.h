@@ -30,6 +30,7 @@
 #include <CGAL/Surface_mesh_direction_fields/polyhedron_remeshing.h>
 #include <CGAL/Surface_mesh_direction_fields/remeshing_cones.h>
 #include <CGAL/Surface_mesh_direction_fields/integer_grid_map.h>
+#include <CGAL/Surface_mesh_direction_fields/seamless_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/huge_pages.h>
 #include <CGAL/Surface_mesh_direction_fields/Trivial_connection.h>
 #include <CGAL/Surface_mesh_direction_fields/compute_trivial_connection.h>

@@ -2250,6 +2250,18 @@ def test_shared_remesh_open(smdf, c, meshes, tmp):
                 "remesh %s --uv-out: none of %d faces flipped (%d), seams grid symmetries (off by %g), every border edge on a grid "
                 "line (off by %g), %r boundary lines" % (name, nf, flipped, worst, off_line, g.get("boundary_lines")))
 
+    # a closed genus-1 mesh whose handles' holonomies the seamless metric can reach (0.27 rad):
+    # the map is then the metric's own development (seamless energy ~0, was 0.02)
+    bob = os.path.join(meshes, "bob_small_gc.off")
+    r = smdf.json(["remesh", bob, "--faces", "4000", "--out", os.path.join(tmp, "bob.obj")], "remesh bob (seamless metric)")
+    if r:
+        sm = r.get("metric", {}).get("seamless", {})
+        g = r.get("integer_grid_map", {})
+        c.check(sm.get("success") is True and sm.get("loops") == 2 and sm.get("initial_holonomy_error", 0) > 0.1
+                and sm.get("holonomy_error", 1) < 1e-9 and g.get("seamless_energy", 1) < 1e-12 and g.get("success") is True,
+                "remesh bob: seamless metric (holonomy %r -> %r), the map's seamless energy %r"
+                % (sm.get("initial_holonomy_error"), sm.get("holonomy_error"), g.get("seamless_energy")))
+
 
 def test_shared_remesh_refinement(smdf, c, meshes, tmp):
     """smdf remesh --cones on Cheburashka: its triangulation cannot carry the flat metric of

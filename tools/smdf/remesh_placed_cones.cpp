@@ -10,6 +10,7 @@
 #include <CGAL/Surface_mesh_direction_fields/integer_grid_map.h>
 #include <CGAL/Surface_mesh_direction_fields/intrinsic_geometry.h>
 #include <CGAL/Surface_mesh_direction_fields/remeshing_cones.h>
+#include <CGAL/Surface_mesh_direction_fields/seamless_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/topology.h>
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
@@ -175,6 +176,25 @@ Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, M
     out["success"] = false;
     throw Failed_result{out, file + ": the flat cone metric of the placed cones converges neither on the input's edges, nor on its Delaunay "
                                  "refinement, nor with intrinsic flips: " + cm.message, 3};
+  }
+  // metric compensation, rotational part: the handles' holonomies made multiples of pi/2, so
+  // that the parallel cross field closes and the map can follow the metric exactly
+  if(SMDF::mesh_topology(on).components[0].genus > 0) {
+    stage("seamless metric");
+    auto seamless = on.add_property_map<edge_descriptor, double>("e:smdf_remesh_seamless", 0.).first;
+    const SMDF::Seamless_metric_status ss = on_file(file, [&] { return SMDF::seamless_cone_metric(on, lengths, seamless); });
+    Json sj = Json::object();
+    sj["success"] = ss.success;
+    sj["message"] = ss.message;
+    sj["loops"] = ss.loops;
+    sj["iterations"] = ss.iterations;
+    sj["initial_holonomy_error"] = ss.initial_holonomy_error;
+    sj["holonomy_error"] = ss.holonomy_error;
+    sj["max_log_length_change"] = ss.max_log_length_change;
+    metric["seamless"] = std::move(sj);
+    if(ss.success) for(edge_descriptor e : edges(on)) lengths[e] = seamless[e];
+    on.remove_property_map(seamless);
+    timed("seamless_metric_s");
   }
   stage("cross field and integer-grid map");
   auto adjustment = on.add_property_map<edge_descriptor, double>("e:smdf_remesh_adjustment", 0.).first;
