@@ -3,7 +3,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """Developer test of the smdf command-line tool (python3 standard library only).
 
-usage: test_smdf.py SMDF SHARED_DATA_DIR [--torus OFF] [--part all|torus|shared|sweep]
+usage: test_smdf.py SMDF SHARED_DATA_DIR [--torus OFF] [--part all|torus|shared|sweep|remesh_sweep]
 
 Part "torus" runs every subcommand on data/torus.off and checks invariants (topology,
 generator cycles against the faces of the file, Gauss-Bonnet, holonomy under a scaled metric)
@@ -25,6 +25,7 @@ input with smdf singularities (test_sweep()).
 Prints one line per check and "N passed, N failed"; exits 1 on failure.
 """
 
+import concurrent.futures
 import argparse
 import csv
 import json
@@ -35,6 +36,7 @@ import random
 import subprocess
 import sys
 import tempfile
+import time
 import xml.etree.ElementTree as ET
 
 SKIP = 77
@@ -2187,13 +2189,58 @@ def polygon_topology(verts, faces):
     return len(used) - len(edges) + len(faces), loops, degree, border
 
 
+def automatic_remesh_read_back(c, name, path, out, r, label):
+    """The read-back of an automatic remesh (smdf remesh --faces N without a metric) from its OBJ
+    alone: pure quads, the input's Euler characteristic and boundary loops, every interior vertex
+    of valence 4 but the placed interior cones (4 - K/(pi/2)), every boundary vertex of valence 3
+    but the placed corners (3 - k at a corner turning by k pi/2), min scaled Jacobian > 0, no face
+    flipped, on the input. Returns whether every check passed."""
+    iv, ifc = read_obj(path) if name.endswith(".obj") else read_off(path)
+    chi_in, loops_in, _, border_in = polygon_topology(iv, ifc)
+    rv, rf = read_obj(out)
+    chi, loops, degree, border = polygon_topology(rv, rf)
+    at = {}
+    for k, p in enumerate(rv):
+        at[tuple(round(x, 9) for x in p)] = k
+    want_inside, got_inside, corner_bad = [], [], []
+    placed = r.get("placed_cones", [])
+    cone_vertices = set()
+    for x in placed:
+        k = at.get(tuple(round(t, 9) for t in iv[x["vertex"]]))
+        if k is None:
+            corner_bad.append(("missing", x["vertex"]))
+            continue
+        cone_vertices.add(k)
+        q = round(x["curvature"] / (math.pi / 2))
+        if border_in[x["vertex"]]:
+            if not border[k] or degree[k] != 3 - q:
+                corner_bad.append((x["vertex"], q, degree[k]))
+        else:
+            want_inside.append(4 - q)
+    for k in range(len(rv)):
+        if k in cone_vertices:
+            if not border[k]:
+                got_inside.append(degree[k])
+        elif degree[k] != (3 if border[k] else 4):
+            got_inside.append(("irregular", k, degree[k], border[k]))
+    q = r.get("quality", {})
+    d = r.get("distance_over_edge_length", {})
+    good = c.check(r.get("success") is True and all(len(f) == 4 for f in rf) and chi == chi_in and loops == loops_in
+                   and sorted(map(str, got_inside)) == sorted(map(str, want_inside)) and not corner_bad,
+                   "%s: pure quads, chi %d (input %d), %d boundary loops (input %d), the only irregular vertices the %d placed "
+                   "cones, corners of valence 3 - k (%r vs %r, %r)" % (label, chi, chi_in, loops, loops_in, len(placed),
+                                                                       sorted(map(str, got_inside))[:8], sorted(want_inside)[:8], corner_bad[:4]))
+    return c.check(q.get("min_scaled_jacobian", -1) > 0 and r.get("flipped_faces") == 0 and r.get("inverted_faces") == 0
+                   and d.get("vertices_to_input", 1) < 1e-9,
+                   "%s: min scaled Jacobian %r > 0, no face flipped, every vertex on the input (distance %r, area ratio %r)"
+                   % (label, q.get("min_scaled_jacobian"), d.get("remesh_to_input"), r.get("area_ratio"))) and good
+
+
 def test_shared_remesh_open(smdf, c, meshes, tmp):
-    """smdf remesh with automatic cones on open shared meshes of genus 0 and 1, one and two
+    """smdf remesh with automatic cones on open shared meshes of genus 0 and 1, one to seven
     boundary loops (#37 item 4): the boundary runs along grid lines. Read back from the remesh
-    alone: pure quads, the input's Euler characteristic and boundary loops, every interior
-    vertex of valence 4 but the placed interior cones (4 - K/(pi/2)), every boundary vertex of
-    valence 3 but the placed corners (3 - k at a corner turning by k pi/2), min scaled Jacobian
-    > 0, no face flipped, on the input; and from --uv-out: every border edge on a grid line."""
+    alone (automatic_remesh_read_back(), and a distance of at most one edge length, area within
+    3 %); and from --uv-out: every border edge on a grid line."""
     cases = (("annulus_igltest.obj", 3000, []), ("punctured-torus_bff.obj", 3000, []), ("mushroom_cgal.off", 4000, []),
              ("holes_cgal.off", 4000, []))
     for name, quads, extra in cases:
@@ -2205,51 +2252,16 @@ def test_shared_remesh_open(smdf, c, meshes, tmp):
         r = smdf.json(["remesh", path, "--faces", str(quads), "--out", out, "--uv-out", uvf] + extra, "remesh %s (open, automatic cones)" % name)
         if not r:
             continue
-        iv, ifc = read_obj(path) if name.endswith(".obj") else read_off(path)
-        chi_in, loops_in, _, border_in = polygon_topology(iv, ifc)
-        rv, rf = read_obj(out)
-        chi, loops, degree, border = polygon_topology(rv, rf)
-        at = {}
-        for k, p in enumerate(rv):
-            at[tuple(round(x, 9) for x in p)] = k
-        want_inside, got_inside, corner_bad = [], [], []
-        placed = r.get("placed_cones", [])
-        cone_vertices = set()
-        for x in placed:
-            k = at.get(tuple(round(t, 9) for t in iv[x["vertex"]]))
-            if k is None:
-                corner_bad.append(("missing", x["vertex"]))
-                continue
-            cone_vertices.add(k)
-            q = round(x["curvature"] / (math.pi / 2))
-            if border_in[x["vertex"]]:
-                if not border[k] or degree[k] != 3 - q:
-                    corner_bad.append((x["vertex"], q, degree[k]))
-            else:
-                want_inside.append(4 - q)
-        for k in range(len(rv)):
-            if k in cone_vertices:
-                if not border[k]:
-                    got_inside.append(degree[k])
-            elif degree[k] != (3 if border[k] else 4):
-                got_inside.append(("irregular", k, degree[k], border[k]))
-        q = r.get("quality", {})
+        automatic_remesh_read_back(c, name, path, out, r, "remesh " + name)
         d = r.get("distance_over_edge_length", {})
-        c.check(r.get("success") is True and all(len(f) == 4 for f in rf) and chi == chi_in and loops == loops_in
-                and sorted(map(str, got_inside)) == sorted(map(str, want_inside)) and not corner_bad,
-                "remesh %s: pure quads, chi %d (input %d), %d boundary loops (input %d), the only irregular vertices the %d placed "
-                "cones, corners of valence 3 - k (%r vs %r, %r)" % (name, chi, chi_in, loops, loops_in, len(placed),
-                                                                    sorted(map(str, got_inside))[:8], sorted(want_inside)[:8], corner_bad[:4]))
-        c.check(q.get("min_scaled_jacobian", -1) > 0 and r.get("flipped_faces") == 0 and r.get("inverted_faces") == 0
-                and d.get("vertices_to_input", 1) < 1e-9 and d.get("remesh_to_input", 9) <= 1.0 and abs(r.get("area_ratio", 0) - 1) < 0.03,
-                "remesh %s: min scaled Jacobian %r > 0, no face flipped, on the input, distance %r, area ratio %r"
-                % (name, q.get("min_scaled_jacobian"), d.get("remesh_to_input"), r.get("area_ratio")))
+        c.check(d.get("remesh_to_input", 9) <= 1.0 and abs(r.get("area_ratio", 0) - 1) < 0.03,
+                "remesh %s: distance %r <= 1 edge length, area ratio %r within 3%%" % (name, d.get("remesh_to_input"), r.get("area_ratio")))
         nf, flipped, worst, off_line = uv_map_read_back(uvf)
         g = r.get("integer_grid_map", {})
+        _, loops_in, _, _ = polygon_topology(*(read_obj(path) if name.endswith(".obj") else read_off(path)))
         c.check(nf > 0 and flipped == 0 and worst < 1e-6 and off_line < 1e-6 and g.get("boundary_lines", 0) >= loops_in,
                 "remesh %s --uv-out: none of %d faces flipped (%d), seams grid symmetries (off by %g), every border edge on a grid "
                 "line (off by %g), %r boundary lines" % (name, nf, flipped, worst, off_line, g.get("boundary_lines")))
-
     # a closed genus-1 mesh whose handles' holonomies the seamless metric can reach (0.27 rad):
     # the map is then the metric's own development (seamless energy ~0, was 0.02)
     bob = os.path.join(meshes, "bob_small_gc.off")
@@ -2907,13 +2919,51 @@ def test_sweep(smdf, c, shared):
     c.check(runs > 0 and ok == runs, "sweep: %d of %d runs succeed (all)" % (ok, runs))
 
 
+def test_remesh_sweep(smdf, c, shared):
+    """Automatic quad remeshing (smdf remesh MESH --faces 4000, no metric given) of every valid
+    shared mesh of one component and at most 120k faces, closed or open (#37). Each run either
+    succeeds, and then its remesh reads back from the OBJ alone (automatic_remesh_read_back():
+    pure quads, the input's topology, irregular vertices exactly the placed cones and corners, no
+    face flipped, on the input), or exits 3 with one line saying why. Measured 2026-12-06: 21 of
+    28 succeed (15 of 20 closed, 6 of 8 open: the alex now exits 3 for a quad folded at a corner);
+    fewer fails the test."""
+    meshes = os.path.join(shared, "meshes")
+    with open(os.path.join(shared, "MANIFEST.tsv"), newline="") as f:
+        rows = list(csv.DictReader(f, delimiter="\t"))
+    names = [r["file"] for r in rows
+             if r["manifold"] == "yes" and r["pure_tri"] == "yes" and r["orientable"] == "yes" and r["components"] == "1"
+             and int(r["degenerate_faces"]) == 0 and int(r["F"]) <= 120000 and r["file"] not in TOO_LARGE and not too_large(meshes, r["file"])]
+    with tempfile.TemporaryDirectory(prefix="smdf_remesh_sweep_") as tmp:
+        def run(name):
+            out = os.path.join(tmp, name + ".obj")
+            t = time.time()
+            rc, o, err = smdf.run(["remesh", os.path.join(meshes, name), "--faces", "4000", "--out", out])
+            return name, out, rc, o, err, time.time() - t
+        with concurrent.futures.ThreadPoolExecutor(2) as pool:
+            results = list(pool.map(run, names))
+        ok = 0
+        for name, out, rc, o, err, seconds in results:
+            lines = err.decode("utf-8", "replace").strip().splitlines()
+            if rc == 3 and len(lines) == 1:
+                print("remesh sweep: %-28s exit 3 %6.1f s: %s" % (name, seconds, lines[0][-150:]))
+                continue
+            if not c.check(rc == 0, "remesh sweep: %s exits 0 or 3 with one line (rc=%s, %r)" % (name, rc, lines[-1:])):
+                continue
+            r = json.loads(o.decode())
+            if automatic_remesh_read_back(c, name, os.path.join(meshes, name), out, r, "remesh sweep: " + name):
+                ok += 1
+            print("remesh sweep: %-28s exit 0 %6.1f s: %s quads, %d cones" % (name, seconds, r.get("faces_by_size", {}).get("4"),
+                                                                             len(r.get("placed_cones", []))))
+    c.check(ok >= 21, "remesh sweep: %d of %d shared meshes remeshed and read back (at least 21, as measured)" % (ok, len(names)))
+
+
 def main():
     here = os.path.dirname(os.path.abspath(__file__))
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("smdf", help="path of the smdf executable")
     ap.add_argument("shared", help="shared data directory (holds MANIFEST.tsv and meshes/)")
     ap.add_argument("--torus", default=os.path.join(here, "..", "..", "data", "torus.off"))
-    ap.add_argument("--part", choices=("all", "torus", "shared", "sweep"), default="all")
+    ap.add_argument("--part", choices=("all", "torus", "shared", "sweep", "remesh_sweep"), default="all")
     args = ap.parse_args()
 
     c = Checker()
@@ -2935,6 +2985,11 @@ def main():
             test_sweep(smdf, c, args.shared)
         else:
             skipped = "%s/MANIFEST.tsv not found (../shared absent): the sweep is skipped" % args.shared
+    if args.part == "remesh_sweep":
+        if os.path.isfile(os.path.join(args.shared, "MANIFEST.tsv")):
+            test_remesh_sweep(smdf, c, args.shared)
+        else:
+            skipped = "%s/MANIFEST.tsv not found (../shared absent): the remesh sweep is skipped" % args.shared
     return c.finish(skipped)
 
 

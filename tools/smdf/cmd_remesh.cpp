@@ -528,6 +528,15 @@ Json run_remesh(const Args& args)
     out["inverted_faces"] = inverted;
     check_flipped_faces(remesh, success, failure);
     out["quality"] = remesh_quality(remesh);
+    // automatic cones promise a valid quad mesh: a quad still folded at a corner after untangling
+    // (scaled Jacobian <= 0) fails it (the polycube routes report such quads and keep exit 0)
+    if(place && success) {
+      const std::size_t folded_quads = nonconvex_quads(remesh);
+      if(folded_quads > 0) {
+        success = false;
+        failure = std::to_string(folded_quads) + " quads are folded at a corner (scaled Jacobian <= 0) after untangling";
+      }
+    }
     // (the integer-grid map's grid edge is 1 in its own units: on the surface, the mean quad's side)
     out["distance_over_edge_length"] = remesh_distances(mesh, remesh, place ? std::sqrt(CGAL::Polygon_mesh_processing::area(mesh) / double(num_faces(remesh))) : h);
     out["area_ratio"] = remesh_area_ratio(mesh, remesh);

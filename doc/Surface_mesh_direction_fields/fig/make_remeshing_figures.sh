@@ -28,7 +28,7 @@ shared=$root/../shared/data/meshes
 if [ -d "$shared" ]; then
   # automatic remeshes of open meshes: the boundary along grid lines
   run remesh "$shared/holes_cgal.off" --faces 4000 --out /tmp/smdf_holes.obj --svg "$here/holes_auto_4000.svg" --view 30,35,z --width 500
-  for spec in spot_c3d.obj:60,20,y rocker-arm_c3d.obj:30,25,z genus3_vhacd.off:30,35,z punctured-torus_bff.obj:30,35,z alex_ghm.off:30,35,z; do
+  for spec in spot_c3d.obj:60,20,y rocker-arm_c3d.obj:30,25,z genus3_vhacd.off:30,35,z punctured-torus_bff.obj:30,35,z annulus_igltest.obj:30,35,z; do
     mesh=${spec%%:*}
     python3 "$root/benchmark/compare_quadriflow.py" "$smdf" "$shared" --faces 4000 --meshes "$mesh" --svg-dir "$here" --view "${spec#*:}" > /dev/null ||
       echo "  (compare_quadriflow.py failed on $mesh)"
