@@ -4,8 +4,9 @@
 #   ./run.sh example   install missing Debian packages, build smdf (Release), run it on data/spot.off
 #   ./run.sh test      install missing Debian packages, build everything but the benchmark drivers,
 #                      run ctest (without the "sweep" and "benchmark" labels)
-#   ./run.sh sweep     the sweep of field design over every shared mesh (ctest -L sweep), then the
-#                      benchmark drivers built and run once each on their smallest size
+#   ./run.sh sweep     the sweeps over every shared mesh (ctest -L sweep: field design, and automatic
+#                      quad remeshing), then the benchmark drivers built and run once each on their
+#                      smallest size
 #   ./run.sh sanitize  the library's tests built with AddressSanitizer + UBSan (build-sanitize/;
 #                      three of the seven unless SMDF_SANITIZE_TESTS=all;
 #                      the smdf tool, examples, benchmarks and the downstream test are left out:
@@ -26,7 +27,7 @@ usage() {
   echo "usage: $0 example|test|sweep|sanitize|fuzz" >&2
   echo "  example  build the smdf tool and run it on data/spot.off (cross field, cone metric, SVGs)" >&2
   echo "  test     build the library's tests, tool and examples and run the test suite (ctest, without the sweep)" >&2
-  echo "  sweep    run the sweep of field design over every shared mesh (ctest -L sweep), and build" >&2
+  echo "  sweep    run the sweeps of field design and automatic remeshing over every shared mesh (ctest -L sweep), and build" >&2
   echo "           the benchmark drivers and run each once on its smallest size (ctest -L benchmark)" >&2
   echo "  sanitize build the library's tests with ASan + UBSan and run them" >&2
   echo "  fuzz     build the libFuzzer targets with clang and run each for a bounded time" >&2

@@ -22,6 +22,8 @@ it exits 77 (skipped) when SHARED_DATA_DIR is absent.
 Part "sweep" (CTest label "sweep", run by CI after the tests) runs smdf rosy on every valid
 shared mesh with random cone sets and every boundary mode, and reads every result back on the
 input with smdf singularities (test_sweep()).
+Part "remesh_sweep" (label "sweep" too) runs smdf remesh --faces 4000 with automatic cones on
+every valid shared mesh, closed and open, and reads every remesh back (test_remesh_sweep()).
 Prints one line per check and "N passed, N failed"; exits 1 on failure.
 """
 
