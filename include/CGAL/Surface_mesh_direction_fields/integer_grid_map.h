@@ -17,6 +17,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/development.h>
 
 #include <CGAL/Surface_mesh_direction_fields/internal/map_vertex_factor.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/seam_layout.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
@@ -63,46 +64,6 @@ struct Integer_grid_map_status
   double seamless_energy = 0, integer_energy = 0;
 };
 
-namespace internal {
-
-typedef std::complex<double> Cplx;
-
-// i^k
-inline Cplx unit_power(int k)
-{
-  switch(((k % 4) + 4) % 4) {
-    case 0: return Cplx(1, 0);
-    case 1: return Cplx(0, 1);
-    case 2: return Cplx(-1, 0);
-    default: return Cplx(0, -1);
-  }
-}
-
-// A corner's image as an affine function of the unknowns: coefficient `a` times the vertex
-// unknown plus sum c_k s_k over small unknowns (seam translations, singularity positions).
-struct Corner_expression
-{
-  int vertex = -1;                    // big unknown (-1: none, e.g. a singularity's own corner)
-  Cplx a = Cplx(1, 0);
-  std::vector<std::pair<int, Cplx>> small;
-
-  void add(int k, Cplx c)
-  {
-    for(auto& s : small) if(s.first == k) { s.second += c; return; }
-    small.emplace_back(k, c);
-  }
-  // this expression mapped by P -> m P + t_k (t_k the small unknown k, scaled by tc)
-  Corner_expression mapped(Cplx m, int k, Cplx tc) const
-  {
-    Corner_expression e = *this;
-    e.a *= m;
-    for(auto& s : e.small) s.second *= m;
-    if(k >= 0) e.add(k, tc);
-    return e;
-  }
-};
-
-} // namespace internal
 
 /// \ingroup PkgSurfaceMeshDirectionFieldsRemeshing
 /// Computes an integer-grid map of a triangle mesh (mixed-integer quadrangulation, Bommes, Zimmer
@@ -169,237 +130,41 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
     throw Input_error(Input_error::INVALID_ARGUMENT, "integer_grid_map() needs a mesh of one component; this one has " +
                                                      std::to_string(topo.components.size()));
   const std::size_t nv = m.number_of_vertices(), ne = m.number_of_edges(), nf = m.number_of_faces();
-  const double quarter = CGAL_PI / 2;
 
-  // 1. the field combed along a breadth-first tree of the faces: matching 0 across tree edges
-  std::vector<double> theta(nf);
-  for(std::size_t f = 0; f < nf; ++f) theta[f] = get(face_angles, m.faces[f]);
-  std::vector<char> tree_edge(ne, 0), seen(nf, 0);
-  std::vector<int> queue{0};
-  seen[0] = 1;
-  for(std::size_t q = 0; q < queue.size(); ++q) {
-    int x = m.face_halfedge[std::size_t(queue[q])];
-    for(int i = 0; i < 3; ++i, x = m.next[std::size_t(x)]) {
-      const int g = m.face[std::size_t(x ^ 1)];
-      if(g < 0 || seen[std::size_t(g)]) continue;
-      seen[std::size_t(g)] = 1;
-      tree_edge[std::size_t(x >> 1)] = 1;
-      // the field carried into g, and g's direction nearest to it
-      const double carried = theta[std::size_t(queue[q])] + internal::transport_increment(m, x ^ 1);
-      theta[std::size_t(g)] += quarter * std::round((carried - theta[std::size_t(g)]) / quarter);
-      queue.push_back(g);
-    }
-  }
-  // matching r_e: crossing from face(2e+1) into face(2e), theta_L = theta_R + transport + r pi/2
-  std::vector<int> r(ne, 0);
-  for(std::size_t e = 0; e < ne; ++e) {
-    if(tree_edge[e] || m.face[2 * e] < 0 || m.face[2 * e + 1] < 0) continue;   // border edges: no matching
-    const double d = theta[std::size_t(m.face[2 * e])] - theta[std::size_t(m.face[2 * e + 1])] - internal::transport_increment(m, int(2 * e));
-    r[e] = int(std::lround(d / quarter));
-  }
-  // 2. the cut graph: the edges the tree does not cross, pruned of branches to regular vertices
-  std::vector<int> turns(nv, 0);   // quarter turns of the rotation around each vertex
-  for(std::size_t e = 0; e < ne; ++e) {
-    // around the source of halfedge 2e counterclockwise, the walk crosses from face(2e) ... the
-    // sign only matters modulo 4 for the test below; the exact rotation comes from the walk
-    turns[std::size_t(m.source(int(2 * e)))] += r[e];
-    turns[std::size_t(m.target[2 * e])] -= r[e];
-  }
-  std::vector<char> singular(nv, 0);
-  for(std::size_t v = 0; v < nv; ++v)
-    singular[v] = !m.is_isolated(int(v)) && !m.is_boundary_vertex(int(v)) && ((turns[v] % 4) + 4) % 4 != 0;
-  std::vector<char> cut(ne, 0);
-  std::vector<int> degree(nv, 0);
-  for(std::size_t e = 0; e < ne; ++e)
-    if(!tree_edge[e] && m.face[2 * e] >= 0 && m.face[2 * e + 1] >= 0) { cut[e] = 1; ++degree[std::size_t(m.source(int(2 * e)))]; ++degree[std::size_t(m.target[2 * e])]; }
+  // 1.-4. the field combed, its matching and singularities, the cut graph, its arcs and the
+  // boundary's corners and straight runs (internal/Integer_grid_map/seam_layout.h)
+  internal::Seam_layout seams;
   {
-    std::vector<int> leaves;
-    // a seam that reaches the boundary stays: it ends there
-    auto prunable = [&](int v) { return !singular[std::size_t(v)] && !m.is_boundary_vertex(v); };
-    for(std::size_t v = 0; v < nv; ++v) if(degree[v] == 1 && prunable(int(v))) leaves.push_back(int(v));
-    while(!leaves.empty()) {
-      const int v = leaves.back();
-      leaves.pop_back();
-      if(degree[std::size_t(v)] != 1) continue;
-      // its one cut edge
-      int x = m.vertex_out[std::size_t(v)], x0 = x;
-      do { if(cut[std::size_t(x >> 1)]) break; x = m.ccw_out(x); } while(x != x0);
-      cut[std::size_t(x >> 1)] = 0;
-      degree[std::size_t(v)] = 0;
-      const int w = m.target[std::size_t(x)];
-      if(--degree[std::size_t(w)] == 1 && prunable(w)) leaves.push_back(w);
-    }
+    std::vector<double> theta0(nf);
+    for(std::size_t f = 0; f < nf; ++f) theta0[f] = get(face_angles, m.faces[f]);
+    if(!internal::lay_out_seams(m, topo, std::move(theta0), seams, st.message)) return st;
   }
-  for(std::size_t e = 0; e < ne; ++e) st.cut_edges += cut[e];
-  // 3. arcs: chains of cut edges between nodes (degree != 2 or singular); one small unknown each
-  std::vector<int> arc(ne, -1);
-  std::vector<char> arc_forward(ne, 1);   // halfedge 2e runs along its arc
-  int narcs = 0;
-  auto is_node = [&](int v) { return degree[std::size_t(v)] != 2 || singular[std::size_t(v)] || m.is_boundary_vertex(v); };
-  auto next_cut_out = [&](int x) {   // at target(x), the other cut edge (degree-2 vertex)
-    const int v = m.target[std::size_t(x)];
-    int y = m.vertex_out[std::size_t(v)], y0 = y;
-    do { if(cut[std::size_t(y >> 1)] && (y >> 1) != (x >> 1)) return y; y = m.ccw_out(y); } while(y != y0);
-    return -1;
-  };
-  auto trace = [&](int x) {   // an arc from halfedge x
-    for(;;) {
-      arc[std::size_t(x >> 1)] = narcs;
-      arc_forward[std::size_t(x >> 1)] = (x & 1) == 0;
-      if(is_node(m.target[std::size_t(x)])) break;
-      x = next_cut_out(x);
-      if(x < 0 || arc[std::size_t(x >> 1)] >= 0) break;
-    }
-    ++narcs;
-  };
-  for(std::size_t v = 0; v < nv; ++v) {
-    if(!is_node(int(v)) || degree[v] == 0) continue;
-    int x = m.vertex_out[v], x0 = x;
-    do { if(cut[std::size_t(x >> 1)] && arc[std::size_t(x >> 1)] < 0) trace(x); x = m.ccw_out(x); } while(x != x0);
-  }
-  for(std::size_t e = 0; e < ne; ++e)   // closed loops without a node (a cut graph that is one circle)
-    if(cut[e] && arc[e] < 0) trace(int(2 * e));
+  const std::vector<double>& theta = seams.theta;
+  const std::vector<int>& turns = seams.turns;
+  const std::vector<char>& singular = seams.singular;
+  const std::vector<char>& cut = seams.cut;
+  const std::vector<int>& arc = seams.arc;
+  const std::vector<char>& arc_forward = seams.arc_forward;
+  const std::vector<int>& arc_q = seams.arc_q;
+  const int narcs = seams.narcs, nlines = seams.nlines;
+  const std::vector<char>& bcorner = seams.boundary_corner;
+  const std::vector<int>& turn_quarters = seams.turn_quarters;
+  const std::vector<Cplx>& border_dir = seams.border_dir;
+  const std::vector<int>& line_of = seams.line_of;
+  st.cut_edges = seams.cut_edges;
   st.arcs = std::size_t(narcs);
-  // per arc its rotation q: image on its left = i^q image on its right + t
-  std::vector<int> arc_q(std::size_t(narcs), 0);
-  std::vector<char> arc_q_set(std::size_t(narcs), 0);
-  for(std::size_t e = 0; e < ne; ++e) {
-    if(!cut[e]) continue;
-    // across e from face(2e+1) (R) into face(2e) (L): P_L = i^{-r} P_R + t
-    const int q = arc_forward[e] ? -r[e] : r[e];
-    const std::size_t a = std::size_t(arc[e]);
-    if(!arc_q_set[a]) { arc_q[a] = q; arc_q_set[a] = 1; }
-    else if(((arc_q[a] - q) % 4 + 4) % 4 != 0) {
-      st.message = "the field's matching changes along a seam between two regular vertices (a singularity the cut graph misses)";
-      return st;
-    }
-  }
-  // 4. the boundary (open meshes): corners where it turns under the metric, and each border
-  // edge's direction in its face's target frame (the field rotated onto U: a power of i)
-  std::vector<char> bcorner(nv, 0);
-  std::vector<int> turn_quarters(nv, 0);
-  for(std::size_t v = 0; v < nv; ++v) {
-    if(!m.is_boundary_vertex(int(v))) continue;
-    double sum = 0;
-    int x = m.vertex_out[v];
-    for(;;) {
-      sum += m.angle[std::size_t(x)];
-      const int y = m.ccw_out(x);
-      if(m.face[std::size_t(y)] < 0) break;
-      x = y;
-    }
-    const double turning = CGAL_PI - sum;
-    if(std::abs(turning) > quarter / 2) { bcorner[v] = 1; turn_quarters[v] = int(std::lround(turning / quarter)); }
-  }
-  std::vector<Cplx> border_dir(ne, Cplx(0, 0));   // per border edge, its direction in the frame of its face
-  for(const auto& loop : topo.loops)
-    for(int b : loop) {
-      const int x = b ^ 1;   // the edge's halfedge in its face
-      const double a = internal::halfedge_direction(m, x) - theta[std::size_t(m.face[std::size_t(x)])];
-      const double k = std::round(a / quarter);
-      if(std::abs(a - k * quarter) > 1e-3) {
-        st.message = "the field is not aligned with the boundary at edge " + std::to_string(x >> 1) + " (" + std::to_string(std::abs(a - k * quarter)) +
-                     " rad off): an open mesh needs a cross field that follows its boundary";
-        return st;
-      }
-      border_dir[std::size_t(x >> 1)] = unit_power(int(k));
-    }
-  // boundary lines: runs of border edges between corners and seam ends, one small unknown each
-  std::vector<int> line_of(ne, -1);
-  int nlines = 0;
-  for(const auto& loop : topo.loops) {
-    const std::size_t n = loop.size();
-    auto breaks = [&](int b) {   // the run stops at the source of border halfedge b
-      const int v = m.target[std::size_t(b ^ 1)];
-      return bcorner[std::size_t(v)] || degree[std::size_t(v)] > 0;
-    };
-    std::size_t first = 0;
-    while(first < n && !breaks(loop[first])) ++first;
-    if(first == n) first = 0;   // a loop with neither corner nor seam: one line
-    for(std::size_t i = 0; i < n; ++i) {
-      const int b = loop[(first + i) % n];
-      if(i == 0 || breaks(b)) ++nlines;
-      line_of[std::size_t(b >> 1)] = nlines - 1;
-    }
-  }
   st.boundary_lines = std::size_t(nlines);
-  // 5. corner expressions. Small unknowns: 0..narcs-1 the arcs' translations, then the boundary
-  // lines (the real part their integer coordinate), then one position per singularity and per
-  // boundary corner. The other vertices are the big unknowns: a complex one inside, a real one
-  // (the position along its line, in the direction d) on the boundary: P = d (s + i line).
-  // Walking counterclockwise around v from a corner, crossing the edge of halfedge y (from
-  // face(y) into face of ccw_out... ) applies that edge's motion.
-  std::vector<int> sing_index(nv, -1);
-  int nsmall = narcs + nlines;
-  for(std::size_t v = 0; v < nv; ++v) if(singular[v] || bcorner[v]) sing_index[v] = nsmall++;
-  std::vector<int> big(nv, -1);
-  std::vector<Cplx> big_dir;   // per big unknown: 0 (complex) or its line's direction (real)
-  std::vector<int> big_line;
-  int nbig = 0;
-  for(std::size_t v = 0; v < nv; ++v) {
-    if(sing_index[v] >= 0 || m.is_isolated(int(v))) continue;
-    big[v] = nbig++;
-    const bool on_border = m.is_boundary_vertex(int(v));
-    big_dir.push_back(on_border ? border_dir[std::size_t(m.vertex_out[v] >> 1)] : Cplx(0, 0));
-    big_line.push_back(on_border ? line_of[std::size_t(m.vertex_out[v] >> 1)] : -1);
-  }
-  std::vector<Expr> corner(2 * ne);   // per halfedge x with a face: the corner at source(x)
-  struct Closing { std::vector<std::pair<int, Cplx>> t; };   // sum c_k s_k = 0
-  std::vector<Closing> closings;
-  for(std::size_t v = 0; v < nv; ++v) {
-    if(m.is_isolated(int(v))) continue;
-    const bool on_border = m.is_boundary_vertex(int(v));
-    // start right after a cut edge if there is one, so no wedge wraps around; on the boundary at
-    // the fan's first face
-    int start = m.vertex_out[v];
-    if(!on_border) {
-      int x = start;
-      do { if(cut[std::size_t(x >> 1)]) { start = x; break; } x = m.ccw_out(x); } while(x != start);
-    }
-    Expr e;
-    if(sing_index[v] >= 0) { e.vertex = -1; e.add(sing_index[v], Cplx(1, 0)); }
-    else {
-      e.vertex = big[v];
-      if(on_border) e.add(narcs + big_line[std::size_t(big[v])], big_dir[std::size_t(big[v])] * Cplx(0, 1));
-    }
-    int x = start;
-    do {
-      corner[std::size_t(x)] = e;   // corner of face(x) at v = source(x)
-      // next corner counterclockwise: in the face of ccw_out(x) = opposite(prev(x)), across the
-      // edge of prev(x), from face(x) into face(prev(x) ^ 1)
-      const int y = m.prev(x);
-      if(m.face[std::size_t(y ^ 1)] < 0) break;   // the fan ends at the boundary
-      const std::size_t ey = std::size_t(y >> 1);
-      if(cut[ey]) {
-        // crossing from face(y) into face(y ^ 1); y = 2e crosses L -> R, y = 2e + 1 crosses R -> L
-        const bool from_left_of_arc = ((y & 1) == 0) == bool(arc_forward[ey]);
-        const int q = arc_q[std::size_t(arc[ey])];
-        if(from_left_of_arc)   // P_R = i^{-q} (P_L - t)
-          e = e.mapped(unit_power(-q), arc[ey], -unit_power(-q));
-        else                   // P_L = i^{q} P_R + t
-          e = e.mapped(unit_power(q), arc[ey], Cplx(1, 0));
-      }
-      x = m.ccw_out(x);
-    } while(x != start);
-    if(on_border) continue;   // no fan to close: the seams that end here are free
-    // closing: the expression reached must equal the start one
-    Closing c;
-    // e = a Z + sum, s0 = Z (big) or the singularity's small unknown
-    if(!singular[v]) {
-      if(std::abs(e.a - Cplx(1, 0)) > 1e-9) {
-        st.message = "vertex " + std::to_string(v) + ": the field turns around it but it was not found singular";
-        return st;
-      }
-      for(const auto& s : e.small) if(std::abs(s.second) > 1e-9) c.t.push_back(s);
-      if(!c.t.empty()) closings.push_back(c);
-    } else {
-      // e.small holds (a) times the singularity's own unknown plus the translations: e - s0 = 0
-      Expr d = e;
-      d.add(sing_index[v], Cplx(-1, 0));
-      for(const auto& s : d.small) if(std::abs(s.second) > 1e-9) c.t.push_back(s);
-      closings.push_back(c);
-    }
-  }
+  // 5. corner expressions in the unknowns, the closings around the vertices and the boundary's
+  // line conditions (internal/Integer_grid_map/seam_layout.h)
+  internal::Corner_layout layout;
+  if(!internal::write_corner_expressions(m, topo, seams, layout, st.message)) return st;
+  const std::vector<int>& sing_index = layout.sing_index;
+  const std::vector<int>& big = layout.big;
+  const std::vector<Cplx>& big_dir = layout.big_dir;
+  const int nsmall = layout.nsmall, nbig = layout.nbig;
+  const std::vector<Expr>& corner = layout.corner;
+  const auto& closings = layout.closings;
+  const auto& line_conditions = layout.line_conditions;
   for(std::size_t v = 0; v < nv; ++v) {
     if(singular[v]) {
       int k = ((turns[v] % 4) + 4) % 4;
@@ -407,26 +172,6 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
     }
     if(bcorner[v]) st.boundary_corners.emplace_back(v, turn_quarters[v]);
   }
-  // the boundary's conditions, real rows on the small unknowns: at both ends of every border
-  // edge, Im(conj(d) P) is its line's value (d its direction in its face)
-  struct Line_condition { std::vector<std::pair<int, Cplx>> t; int line; };   // Im(sum t) = Re(line)
-  std::vector<Line_condition> line_conditions;
-  for(const auto& loop : topo.loops)
-    for(int b : loop) {
-      const int x = b ^ 1;
-      const Cplx dc = std::conj(border_dir[std::size_t(x >> 1)]);
-      for(int c : {x, m.next[std::size_t(x)]}) {
-        const Expr& p = corner[std::size_t(c)];
-        if(p.vertex >= 0 && std::abs((dc * p.a * big_dir[std::size_t(p.vertex)]).imag()) > 1e-9) {
-          st.message = "the boundary turns at vertex " + std::to_string(m.source(c)) + " by an angle that is not a multiple of pi/2 under the metric";
-          return st;
-        }
-        Line_condition lc;
-        lc.line = narcs + line_of[std::size_t(x >> 1)];
-        for(const auto& s : p.small) lc.t.emplace_back(s.first, dc * s.second);
-        line_conditions.push_back(lc);
-      }
-    }
   // 6. the energy: per face and side x (corner a = source(x), b = target(x)), the cotan weight of
   // the opposite corner times |P_b - P_a - s_f e^{-i theta_f} (z_b - z_a)|^2, in real unknowns:
   // big 2 per vertex inside and 1 on the boundary, small 2 per small unknown. The translation of
@@ -568,7 +313,7 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
     delta.push_back(value / n);
     return true;
   };
-  for(const Closing& c : closings) {
+  for(const internal::Corner_layout::Closing& c : closings) {
     Eigen::VectorXd re = Eigen::VectorXd::Zero(ns), imr = Eigen::VectorXd::Zero(ns);
     for(const auto& p : c.t) {
       re[2 * p.first] += p.second.real(); re[2 * p.first + 1] -= p.second.imag();
@@ -579,7 +324,7 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   }
   auto unit_row = [&](int k) { Eigen::VectorXd e = Eigen::VectorXd::Zero(ns); e[k] = 1; return e; };
   for(int k = narcs; k < narcs + nlines; ++k) add_condition(unit_row(2 * k + 1), 0);   // the lines' values are real
-  for(const Line_condition& lc : line_conditions) {   // Im(sum c_k S_k) - Re(line) = 0
+  for(const internal::Corner_layout::Line_condition& lc : line_conditions) {   // Im(sum c_k S_k) - Re(line) = 0
     Eigen::VectorXd row = Eigen::VectorXd::Zero(ns);
     for(const auto& p : lc.t) { row[2 * p.first] += p.second.imag(); row[2 * p.first + 1] += p.second.real(); }
     row[2 * lc.line] -= 1;
