@@ -16,7 +16,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/cotan_weights.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/development.h>
 
-#include <CGAL/Surface_mesh_direction_fields/internal/map_vertex_factor.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/map_factor.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/seam_layout.h>
 
 #include <Eigen/Dense>
@@ -87,8 +87,9 @@ struct Integer_grid_map_status
 /// singularities' positions (the small unknowns), through the motions crossed around its vertex;
 /// closing each vertex's fan gives the linear conditions on the small unknowns (at a singularity
 /// of rotation \f$i^k\f$: \f$(1 - i^k) Z = T\f$; at a node: \f$T = 0\f$). One sparse Cholesky
-/// factorisation of the vertex block, one back-substitution per small unknown, and a dense
-/// system for the small unknowns (Schur complement) give the seamless map. Then the singularity
+/// factorisation of the whole system with the small unknowns ordered last (its trailing block is
+/// their Schur complement; the vertex block split in two domains factored on two threads) and a
+/// dense system for the small unknowns give the seamless map. Then the singularity
 /// coordinates, then the translations, are rounded one at a time, nearest to an integer first,
 /// each re-solving only the dense system (values the earlier ones already imply are checked,
 /// not fixed again). The read-back counts folded triangles: rounding can fold the map where
@@ -188,16 +189,28 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
     nb += big_dir[std::size_t(b)] == Cplx(0, 0) ? 2 : 1;
   }
   const int ns = 2 * nsmall;
-  std::vector<Eigen::Triplet<double>> tbb, tbs;
+  std::vector<Eigen::Triplet<double>> tall, tbs;   // the whole matrix's lower triangle; Hbs
   Eigen::MatrixXd Hss;
   Eigen::VectorXd gb, gs;
   double target_norm = 0;
   struct Term { std::vector<std::pair<int, double>> b, s; double rhs; };   // one real residual row
   auto scale = [&](int) { return 1 / h; };
   std::vector<double> area(nf);
+  // a face's vertex block, summed over its six rows before it joins the triplets (a third of
+  // the triplets row by row: their sort was a quarter of the map's time at 114k faces)
+  struct Face_block { int n = 0; int col[6]; double h[6][6]; } fb;
+  auto local = [&](int col) {
+    for(int i = 0; i < fb.n; ++i) if(fb.col[i] == col) return i;
+    fb.col[fb.n] = col;
+    for(int i = 0; i <= fb.n; ++i) fb.h[fb.n][i] = fb.h[i][fb.n] = 0;
+    return fb.n++;
+  };
   auto add_row = [&](const Term& t, double w) {
-    for(const auto& p : t.b) {
-      for(const auto& q : t.b) if(q.first <= p.first) tbb.emplace_back(p.first, q.first, w * p.second * q.second);
+    int li[4];
+    for(std::size_t a = 0; a < t.b.size(); ++a) li[a] = local(t.b[a].first);
+    for(std::size_t a = 0; a < t.b.size(); ++a) {
+      const auto& p = t.b[a];
+      for(std::size_t c = 0; c < t.b.size(); ++c) fb.h[li[a]][li[c]] += w * p.second * t.b[c].second;
       for(const auto& q : t.s) tbs.emplace_back(p.first, q.first, w * p.second * q.second);
       gb[p.first] += w * p.second * t.rhs;
     }
@@ -209,7 +222,7 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   // the real rows of (expression difference) - target, for a complex coefficient c on the
   // complex unknown (X, Y): Re = c_r X - c_i Y, Im = c_i X + c_r Y
   auto rows_of = [&](const Expr& pa, const Expr& pb, Cplx target, Term& re, Term& imr) {
-    re = Term(); imr = Term();
+    re.b.clear(); re.s.clear(); imr.b.clear(); imr.s.clear();   // kept allocated from row to row
     auto put_big = [&](int v, Cplx c) {
       if(v < 0) return;
       const int col = big_col[std::size_t(v)];
@@ -235,73 +248,16 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
     re.rhs = target.real();
     imr.rhs = target.imag();
   };
-  // the normal equations with a stiffness per face (1, raised where the map folds: Bommes et
-  // al.'s local stiffening), factored, and their Schur complement S y = rs on the small unknowns
-  Eigen::MatrixXd S;
-  Eigen::VectorXd xg, rs; // xg = Hbb^-1 gb
-  internal::Map_vertex_factor chol;  // of Hbb
-  Eigen::SparseMatrix<double> Hbs;
-  std::vector<double> stiffness(nf, 1.);
-  auto assemble = [&](bool schur) -> bool {   // schur: also S and rs (not needed once every small unknown is fixed)
-  tbb.clear(); tbs.clear();
-  Hss = Eigen::MatrixXd::Zero(ns, ns);
-  gb = Eigen::VectorXd::Zero(nb); gs = Eigen::VectorXd::Zero(ns);
-  target_norm = 0;
-  for(std::size_t f = 0; f < nf; ++f) {
-    const int x0 = m.face_halfedge[f];
-    const double l0 = m.edge_length(x0), l1 = m.edge_length(m.next[std::size_t(x0)]), l2 = m.edge_length(m.prev(x0));
-    area[f] = triangle_area(l0, l1, l2);
-    const double s = scale(int(f));
-    const Cplx rot = std::polar(s, -theta[f]);
-    target_norm += area[f] * s * s;
-    for(int x = x0, i = 0; i < 3; ++i, x = m.next[std::size_t(x)]) {
-      // cot of the corner opposite side x: at source(prev(x))
-      const int o = m.prev(x);
-      const double lo = m.edge_length(x), la = m.edge_length(m.next[std::size_t(x)]), lb = m.edge_length(o);
-      // the per-face sum over sides with these (possibly negative) weights is A_f |grad(P - target)|^2 >= 0
-      const double wpos = 0.5 * (la * la + lb * lb - lo * lo) / (4 * area[f]);
-      const Cplx edge = std::polar(lo, internal::halfedge_direction(m, x));
-      Term re, imr;
-      rows_of(corner[std::size_t(x)], corner[std::size_t(m.next[std::size_t(x)])], rot * edge, re, imr);
-      add_row(re, wpos * stiffness[f]);
-      add_row(imr, wpos * stiffness[f]);
-    }
-  }
-  // 7. the seamless map: Schur complement on the small unknowns, S = Hss - Hbs^T Hbb^-1 Hbs, one
-  // back-substitution per column of Hbs, none kept (a dense Hbb^-1 Hbs took 1.4 GB on armadillo):
-  // the vertex unknowns are solved again from y where needed
-  xg = Eigen::VectorXd::Zero(nb);
-  Hbs = Eigen::SparseMatrix<double>(nb, ns);
-  S = Hss;
-  if(nb > 0) {
-    internal::Map_vertex_factor::Matrix Hbb(nb, nb);
-    Hbb.setFromTriplets(tbb.begin(), tbb.end());
-    Hbb.makeCompressed();
-    std::string msg;
-    if(!chol.factor(Hbb, msg)) { st.message = "the map's system could not be factored: " + msg; return false; }
-    Hbs.setFromTriplets(tbs.begin(), tbs.end());
-    xg = chol.solve(gb);
-    // by blocks of 64 columns: one multi-column solve each (64 nb doubles at a time)
-    for(int k0 = 0; k0 < ns && schur; k0 += 64) {
-      const int w = (std::min)(64, ns - k0);
-      const Eigen::MatrixXd cols = Eigen::MatrixXd(Hbs.middleCols(k0, w));
-      S.middleCols(k0, w).noalias() -= Hbs.transpose() * chol.solve(cols);   // sparse times dense
-    }
-  }
-  rs = gs;
-  rs.noalias() -= Hbs.transpose() * xg;
-  return true;
-  };
-  if(!assemble(true)) return st;
-  auto big_of = [&](const Eigen::VectorXd& small) {   // the vertex unknowns given the small ones
-    return nb > 0 ? Eigen::VectorXd(chol.solve(Eigen::VectorXd(gb - Hbs * small))) : Eigen::VectorXd();
-  };
   // linear conditions on the small unknowns (the closings, the gauge, then the roundings), kept
   // as an orthonormal basis Q y = delta of their span (Gram-Schmidt): a condition in that span is
   // implied by the others and not added again
   std::vector<Eigen::VectorXd> Q;
   std::vector<double> delta;
+  // R^T R of the conditions before the roundings (internal/Integer_grid_map/map_factor.h)
+  Eigen::MatrixXd penalty = Eigen::MatrixXd::Zero(ns, ns);
+  bool initial_conditions = true;
   auto add_condition = [&](Eigen::VectorXd row, double value) {   // false if implied by the others
+    if(initial_conditions) penalty.selfadjointView<Eigen::Lower>().rankUpdate(row);
     for(std::size_t j = 0; j < Q.size(); ++j) {
       const double c = Q[j].dot(row);
       row -= c * Q[j];
@@ -335,6 +291,70 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
     add_condition(unit_row(2 * first_point + 1), 0);
   } else if(nlines > 0)
     add_condition(unit_row(2 * narcs), 0);
+  // the normal equations with a stiffness per face (1, raised where the map folds: Bommes et
+  // al.'s local stiffening), factored with the small unknowns last (map_factor.h): their Schur
+  // complement S y = rs on the small unknowns, S = Hss - Hbs^T Hbb^-1 Hbs
+  Eigen::MatrixXd S;
+  Eigen::VectorXd xg, rs; // xg = Hbb^-1 gb
+  internal::Map_factor chol;
+  Eigen::SparseMatrix<double> Hbs;
+  std::vector<double> stiffness(nf, 1.);
+  initial_conditions = false;
+  penalty.triangularView<Eigen::StrictlyUpper>() = penalty.transpose();
+  auto assemble = [&](bool schur) -> bool {   // schur: also S and rs (not needed once every small unknown is fixed)
+  tall.clear(); tbs.clear();
+  Term re, imr;
+  Hss = Eigen::MatrixXd::Zero(ns, ns);
+  gb = Eigen::VectorXd::Zero(nb); gs = Eigen::VectorXd::Zero(ns);
+  target_norm = 0;
+  for(std::size_t f = 0; f < nf; ++f) {
+    const int x0 = m.face_halfedge[f];
+    const double l0 = m.edge_length(x0), l1 = m.edge_length(m.next[std::size_t(x0)]), l2 = m.edge_length(m.prev(x0));
+    area[f] = triangle_area(l0, l1, l2);
+    const double s = scale(int(f));
+    const Cplx rot = std::polar(s, -theta[f]);
+    target_norm += area[f] * s * s;
+    for(int x = x0, i = 0; i < 3; ++i, x = m.next[std::size_t(x)]) {
+      // cot of the corner opposite side x: at source(prev(x))
+      const int o = m.prev(x);
+      const double lo = m.edge_length(x), la = m.edge_length(m.next[std::size_t(x)]), lb = m.edge_length(o);
+      // the per-face sum over sides with these (possibly negative) weights is A_f |grad(P - target)|^2 >= 0
+      const double wpos = 0.5 * (la * la + lb * lb - lo * lo) / (4 * area[f]);
+      const Cplx edge = std::polar(lo, internal::halfedge_direction(m, x));
+      rows_of(corner[std::size_t(x)], corner[std::size_t(m.next[std::size_t(x)])], rot * edge, re, imr);
+      add_row(re, wpos * stiffness[f]);
+      add_row(imr, wpos * stiffness[f]);
+    }
+    for(int i = 0; i < fb.n; ++i)
+      for(int j = 0; j < fb.n; ++j) if(fb.col[j] <= fb.col[i]) tall.emplace_back(fb.col[i], fb.col[j], fb.h[i][j]);
+    fb.n = 0;
+  }
+  // the whole matrix, small unknowns last; the conditions' penalty makes it positive definite
+  double w = 0;
+  for(int k = 0; k < ns; ++k) w += Hss(k, k);
+  w = ns > 0 && w > 0 ? w / ns : 1.;
+  tall.reserve(tall.size() + tbs.size() + std::size_t(ns) * std::size_t(ns + 1) / 2);
+  for(const auto& t : tbs) tall.emplace_back(nb + t.col(), t.row(), t.value());
+  for(int c = 0; c < ns; ++c)
+    for(int r = c; r < ns; ++r) tall.emplace_back(nb + r, nb + c, Hss(r, c) + w * penalty(r, c));   // zeros too: one pattern for every round
+  internal::Map_factor::Matrix A(nb + ns, nb + ns);
+  A.setFromTriplets(tall.begin(), tall.end());
+  A.makeCompressed();
+  std::vector<Eigen::Triplet<double>>().swap(tall);
+  std::string msg;
+  if(!chol.factor(A, nb, msg)) { st.message = "the map's system could not be factored: " + msg; return false; }
+  Hbs = Eigen::SparseMatrix<double>(nb, ns);
+  Hbs.setFromTriplets(tbs.begin(), tbs.end());
+  if(schur) S = chol.schur() - w * penalty;
+  xg = chol.solve_vertices(gb);
+  rs = gs;
+  if(nb > 0) rs.noalias() -= Hbs.transpose() * xg;
+  return true;
+  };
+  if(!assemble(true)) return st;
+  auto big_of = [&](const Eigen::VectorXd& small) {   // the vertex unknowns given the small ones
+    return chol.solve_vertices(Eigen::VectorXd(gb - Hbs * small));
+  };
   // minimise y^T S y - 2 rs^T y subject to Q y = delta (independent rows): the KKT system
   auto solve_small = [&](Eigen::VectorXd& y) {
     const Eigen::Index mq = Eigen::Index(Q.size());

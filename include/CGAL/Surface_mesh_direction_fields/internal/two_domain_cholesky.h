@@ -17,6 +17,9 @@
 // S = S_1 + S_2 - Ass (dense, |S| x |S|, a few thousand at most on a mesh), factored with
 // LAPACK. Solves run the two triangular solves of each M_i on its own thread.
 //
+// solve(b, held) and trailing_schur(t) treat the separator's last unknowns apart: the
+// integer-grid map orders its small unknowns there (Integer_grid_map/map_factor.h).
+//
 // Why: CHOLMOD 3's numeric factorisation of a mesh Laplacian is sequential (its supernodes are
 // too small for threaded BLAS to help), and the machines this package targets have 2 cores.
 
@@ -270,7 +273,11 @@ public:
     return true;
   }
 
-  Eigen::VectorXd solve(const Eigen::VectorXd& b) const
+  // Solves A x = b; with held > 0, the last `held` unknowns of the separator (in the ordering's
+  // order) are held at 0 and left out: x solves the leading principal block A_11 x_1 = b_1 of the
+  // other unknowns. With L = [L1 0; L2 L3] and L1 L1^T = A_11, zeroing the held part between the
+  // forward and the backward solve gives x_1 = L1^-T L1^-1 b_1 and x_2 = 0.
+  Eigen::VectorXd solve(const Eigen::VectorXd& b, int held = 0) const
   {
     Eigen::VectorXd x(n_);
     if(n_ == 0) return x;
@@ -299,10 +306,25 @@ public:
     run_on_two_threads(forward, concurrent_);
     for(int k = 0; k < s_; ++k) sep[std::size_t(k)] += c[0][std::size_t(k)] + c[1][std::size_t(k)];
     dense::triangular(s_, schur_.data(), sep.data(), false, true);
+    std::fill(sep.end() - (std::min)(held, s_), sep.end(), 0.);
     dense::triangular(s_, schur_.data(), sep.data(), true, true);
     run_on_two_threads([&](int i) { back(i, sep); }, concurrent_);
     for(int k = 0; k < s_; ++k) x[sep_rows_[std::size_t(k)]] = sep[std::size_t(k)];
     return x;
+  }
+
+  // The Schur complement of A onto the last t unknowns of the separator, A_22 - A_21 A_11^-1 A_12
+  // (t x t, in the ordering's order): L3 L3^T, L3 the trailing block of the factor.
+  Eigen::MatrixXd trailing_schur(int t) const
+  {
+    t = (std::min)(t, s_);
+    const std::size_t s = std::size_t(s_), o = std::size_t(s_ - t);
+    Eigen::MatrixXd l3 = Eigen::MatrixXd::Zero(t, t);
+    for(int c = 0; c < t; ++c)
+      for(int r = c; r < t; ++r) l3(r, c) = schur_[(o + std::size_t(c)) * s + o + std::size_t(r)];
+    Eigen::MatrixXd result = Eigen::MatrixXd::Zero(t, t);
+    result.selfadjointView<Eigen::Lower>().rankUpdate(l3);
+    return Eigen::MatrixXd(result.selfadjointView<Eigen::Lower>());
   }
 
 private:
