@@ -38,6 +38,10 @@
 #include "huge_page_new.h"
 #include "json.h"
 
+#if defined(__unix__) || defined(__APPLE__)
+#include <dlfcn.h>
+#endif
+
 #include <CGAL/Surface_mesh_direction_fields/errors.h>
 
 #include <algorithm>
@@ -139,12 +143,28 @@ int run(const std::vector<std::string>& argv)
 
 } // namespace smdf_cli
 
+namespace {
+
+void single_threaded_openblas()
+{
+#if defined(__unix__) || defined(__APPLE__)
+  typedef void (*Setter)(int);
+  if(const Setter set = reinterpret_cast<Setter>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"))) set(1);
+#endif
+}
+
+} // namespace
+
 int main(int argc, char** argv)
 {
   using namespace smdf_cli;
   // The tool owns its process: large blocks on transparent huge pages (huge_page_new.cpp).
   // SMDF_NO_HUGEPAGES=1 keeps the default allocation.
   if(!std::getenv("SMDF_NO_HUGEPAGES")) smdf_memory::enable_huge_pages();
+  // The package's solvers split large factorisations over two threads themselves; OpenBLAS's
+  // own pool then only spins against them (a 114k-face remesh: 4.3 s instead of 4.8-5.6 s).
+  // OPENBLAS_NUM_THREADS, when set, is left to decide.
+  if(!std::getenv("OPENBLAS_NUM_THREADS")) single_threaded_openblas();
   std::cout.imbue(std::locale::classic());
   try {
     return run(std::vector<std::string>(argv + 1, argv + argc));

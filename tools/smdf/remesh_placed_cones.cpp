@@ -149,7 +149,16 @@ Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, M
     lengths = on.add_property_map<edge_descriptor, double>("e:smdf_remesh_length", 0.).first;
     return on_file(file, [&] { return SMDF::compute_cone_metric(on, targets, lengths, SMDF::parameters::intrinsic_edge_flips(false)); });
   };
-  SMDF::Cone_metric_status cm = metric_on(mesh);
+  // the placement's read-back already is this metric when it needed no flip (half a second at
+  // 114k faces)
+  SMDF::Cone_metric_status cm;
+  if(ps.metric.converged && !ps.metric.triangulation_changed) {
+    lengths = mesh.add_property_map<edge_descriptor, double>("e:smdf_remesh_length", 0.).first;
+    for(edge_descriptor e : edges(mesh)) lengths[e] = placed[e];
+    cm = ps.metric;
+  } else {
+    cm = metric_on(mesh);
+  }
   if(!cm.converged) {
     stage("flat cone metric on the Delaunay refinement");
     const SMDF::Delaunay_refinement_status rs = on_file(file, [&] { return SMDF::conforming_delaunay_refinement(mesh, refined); });

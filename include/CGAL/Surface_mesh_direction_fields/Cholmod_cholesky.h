@@ -36,7 +36,7 @@ struct Cholesky_hints
 /// (SuiteSparse), factored on two threads for large matrices. Used by `Trivial_connection` and
 /// `compute_cone_metric()` unless another solver is given.
 ///
-/// From 100,000 rows on, the matrix is split by one level of nested dissection into two
+/// From 30,000 rows on, the matrix is split by one level of nested dissection into two
 /// domains and a separator, the two halves are factored concurrently and the dense Schur
 /// complement of the separator is factored with LAPACK. While the halves run, the OpenMP regions
 /// CHOLMOD starts from the factoring threads are limited to one thread (a per-thread setting,
@@ -52,7 +52,9 @@ struct Cholesky_hints
 //
 // From two_domain_min_rows rows on, the matrix is split by one level of nested dissection and
 // factored on two threads (Two_domain_cholesky); measured here: trivial-connection setup 0.90 ->
-// 0.55 s at 400k faces, 2.7 -> 2.2 s at 1M faces. Below, one thread: simplicial below 300k
+// 0.55 s at 400k faces, 2.7 -> 2.2 s at 1M faces; from 30,000 rows rather than 100,000 since
+// 2026-12-06: smdf remesh of a 114k-face mesh (57k rows), placement 1.5 -> 1.05 s, cross field
+// 0.5 -> 0.26 s (OpenBLAS on one thread; with two, 1.5 -> 1.46 and 0.5 -> 0.41 s). Below, one thread: simplicial below 300k
 // rows, supernodal above (simplicial factored 200k-row mesh Laplacians 1.5x faster, supernodal
 // 800k rows 1.6x faster).
 //
@@ -71,7 +73,7 @@ public:
 #ifdef CGAL_SMDF_TWO_DOMAIN_MIN_ROWS
   static constexpr int two_domain_min_rows = CGAL_SMDF_TWO_DOMAIN_MIN_ROWS;
 #else
-  static constexpr int two_domain_min_rows = 100000;
+  static constexpr int two_domain_min_rows = 30000;
 #endif
   // Largest separator accepted: its dense Schur complement costs |S|^3 / 3 flops and 8 |S|^2 bytes.
   static constexpr int max_separator = 2500;
