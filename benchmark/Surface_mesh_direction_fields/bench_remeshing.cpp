@@ -282,7 +282,7 @@ void run_automatic_remesh(benchmark::State& state, const smdf_bench::Bench_mesh*
     if(ps.metric.converged && !ps.metric.triangulation_changed) {
       lengths = placed;
       cm = ps.metric;
-    } else {
+    } else if(!ps.metric.converged) {   // else it needed flips: without them it stalls again
       cm = metric_on(work, lengths);
     }
     if(!cm.converged) {

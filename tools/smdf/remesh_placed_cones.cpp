@@ -156,6 +156,9 @@ Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, M
     lengths = mesh.add_property_map<edge_descriptor, double>("e:smdf_remesh_length", 0.).first;
     for(edge_descriptor e : edges(mesh)) lengths[e] = placed[e];
     cm = ps.metric;
+  } else if(ps.metric.converged) {
+    // it needed flips: the flow without them stalled on the input's edges, as it would again
+    cm.message = "the flat cone metric of the placed cones needs intrinsic flips on the input's edges";
   } else {
     cm = metric_on(mesh);
   }
