@@ -256,6 +256,8 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   // R^T R of the conditions before the roundings (internal/Integer_grid_map/map_factor.h)
   Eigen::MatrixXd penalty = Eigen::MatrixXd::Zero(ns, ns);
   bool initial_conditions = true;
+  // per small unknown k, 1 - |projection of e_k on the span of Q|^2 (0: implied by the conditions)
+  Eigen::VectorXd unexplained = Eigen::VectorXd::Ones(ns);
   auto add_condition = [&](Eigen::VectorXd row, double value) {   // false if implied by the others
     if(initial_conditions) penalty.selfadjointView<Eigen::Lower>().rankUpdate(row);
     for(std::size_t j = 0; j < Q.size(); ++j) {
@@ -267,7 +269,11 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
     if(n < 1e-9) return false;
     Q.push_back(row / n);
     delta.push_back(value / n);
+    unexplained -= Q.back().cwiseAbs2();
     return true;
+  };
+  auto drop_conditions_to = [&](std::size_t count) {   // undoes the last add_condition() calls
+    for(; Q.size() > count; Q.pop_back(), delta.pop_back()) unexplained += Q.back().cwiseAbs2();
   };
   for(const internal::Corner_layout::Closing& c : closings) {
     Eigen::VectorXd re = Eigen::VectorXd::Zero(ns), imr = Eigen::VectorXd::Zero(ns);
@@ -301,19 +307,13 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   std::vector<double> stiffness(nf, 1.);
   initial_conditions = false;
   penalty.triangularView<Eigen::StrictlyUpper>() = penalty.transpose();
-  auto assemble = [&](bool schur) -> bool {   // schur: also S and rs (not needed once every small unknown is fixed)
-  tall.clear(); tbs.clear();
-  Term re, imr;
-  Hss = Eigen::MatrixXd::Zero(ns, ns);
-  gb = Eigen::VectorXd::Zero(nb); gs = Eigen::VectorXd::Zero(ns);
-  target_norm = 0;
-  for(std::size_t f = 0; f < nf; ++f) {
+  internal::Map_factor::Matrix A;
+  double w = 1;   // the penalty's weight
+  // face f's rows, weighted by k times their cotan weights: its vertex block summed in fb, its
+  // products with the small unknowns in tbs, Hss, gb and gs
+  auto face_terms = [&](std::size_t f, double k, Term& re, Term& imr) {
     const int x0 = m.face_halfedge[f];
-    const double l0 = m.edge_length(x0), l1 = m.edge_length(m.next[std::size_t(x0)]), l2 = m.edge_length(m.prev(x0));
-    area[f] = triangle_area(l0, l1, l2);
-    const double s = scale(int(f));
-    const Cplx rot = std::polar(s, -theta[f]);
-    target_norm += area[f] * s * s;
+    const Cplx rot = std::polar(scale(int(f)), -theta[f]);
     for(int x = x0, i = 0; i < 3; ++i, x = m.next[std::size_t(x)]) {
       // cot of the corner opposite side x: at source(prev(x))
       const int o = m.prev(x);
@@ -322,36 +322,73 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
       const double wpos = 0.5 * (la * la + lb * lb - lo * lo) / (4 * area[f]);
       const Cplx edge = std::polar(lo, internal::halfedge_direction(m, x));
       rows_of(corner[std::size_t(x)], corner[std::size_t(m.next[std::size_t(x)])], rot * edge, re, imr);
-      add_row(re, wpos * stiffness[f]);
-      add_row(imr, wpos * stiffness[f]);
+      add_row(re, wpos * k);
+      add_row(imr, wpos * k);
     }
-    for(int i = 0; i < fb.n; ++i)
-      for(int j = 0; j < fb.n; ++j) if(fb.col[j] <= fb.col[i]) tall.emplace_back(fb.col[i], fb.col[j], fb.h[i][j]);
-    fb.n = 0;
-  }
-  // the whole matrix, small unknowns last; the conditions' penalty makes it positive definite
-  double w = 0;
-  for(int k = 0; k < ns; ++k) w += Hss(k, k);
-  w = ns > 0 && w > 0 ? w / ns : 1.;
-  tall.reserve(tall.size() + tbs.size() + std::size_t(ns) * std::size_t(ns + 1) / 2);
-  for(const auto& t : tbs) tall.emplace_back(nb + t.col(), t.row(), t.value());
-  for(int c = 0; c < ns; ++c)
-    for(int r = c; r < ns; ++r) tall.emplace_back(nb + r, nb + c, Hss(r, c) + w * penalty(r, c));   // zeros too: one pattern for every round
-  internal::Map_factor::Matrix A(nb + ns, nb + ns);
-  A.setFromTriplets(tall.begin(), tall.end());
-  A.makeCompressed();
-  std::vector<Eigen::Triplet<double>>().swap(tall);
-  std::string msg;
-  if(!chol.factor(A, nb, msg)) { st.message = "the map's system could not be factored: " + msg; return false; }
-  Hbs = Eigen::SparseMatrix<double>(nb, ns);
-  Hbs.setFromTriplets(tbs.begin(), tbs.end());
-  if(schur) S = chol.schur() - w * penalty;
-  xg = chol.solve_vertices(gb);
-  rs = gs;
-  if(nb > 0) rs.noalias() -= Hbs.transpose() * xg;
-  return true;
   };
-  if(!assemble(true)) return st;
+  auto assemble = [&]() -> bool {
+    tall.clear(); tbs.clear();
+    Term re, imr;
+    Hss = Eigen::MatrixXd::Zero(ns, ns);
+    gb = Eigen::VectorXd::Zero(nb); gs = Eigen::VectorXd::Zero(ns);
+    target_norm = 0;
+    for(std::size_t f = 0; f < nf; ++f) {
+      const int x0 = m.face_halfedge[f];
+      area[f] = triangle_area(m.edge_length(x0), m.edge_length(m.next[std::size_t(x0)]), m.edge_length(m.prev(x0)));
+      target_norm += area[f] * scale(int(f)) * scale(int(f));
+      face_terms(f, stiffness[f], re, imr);
+      for(int i = 0; i < fb.n; ++i)
+        for(int j = 0; j < fb.n; ++j) if(fb.col[j] <= fb.col[i]) tall.emplace_back(fb.col[i], fb.col[j], fb.h[i][j]);
+      fb.n = 0;
+    }
+    // the whole matrix, small unknowns last; the conditions' penalty makes it positive definite
+    w = 0;
+    for(int k = 0; k < ns; ++k) w += Hss(k, k);
+    w = ns > 0 && w > 0 ? w / ns : 1.;
+    tall.reserve(tall.size() + tbs.size() + std::size_t(ns) * std::size_t(ns + 1) / 2);
+    for(const auto& t : tbs) tall.emplace_back(nb + t.col(), t.row(), t.value());
+    for(int c = 0; c < ns; ++c)
+      for(int r = c; r < ns; ++r) tall.emplace_back(nb + r, nb + c, Hss(r, c) + w * penalty(r, c));   // zeros too: one pattern for every round
+    A = internal::Map_factor::Matrix(nb + ns, nb + ns);
+    A.setFromTriplets(tall.begin(), tall.end());
+    A.makeCompressed();
+    std::vector<Eigen::Triplet<double>>().swap(tall);
+    std::string msg;
+    if(!chol.factor(A, nb, msg)) { st.message = "the map's system could not be factored: " + msg; return false; }
+    Hbs = Eigen::SparseMatrix<double>(nb, ns);
+    Hbs.setFromTriplets(tbs.begin(), tbs.end());
+    S = chol.schur() - w * penalty;
+    xg = chol.solve_vertices(gb);
+    rs = gs;
+    if(nb > 0) rs.noalias() -= Hbs.transpose() * xg;
+    return true;
+  };
+  // the faces stiffened (from `before` to stiffness[f]): only their difference is assembled, into
+  // the factored matrix's entries in place (same pattern), which is then factored again (at 457k
+  // faces a full assembly was half of each stiffening round's 3.3 s)
+  auto restiffen = [&](const std::vector<std::size_t>& stiffened, const std::vector<double>& before) -> bool {
+    tbs.clear();
+    Term re, imr;
+    const Eigen::MatrixXd hss0 = Hss;
+    for(std::size_t i = 0; i < stiffened.size(); ++i) {
+      const std::size_t f = stiffened[i];
+      face_terms(f, stiffness[f] - before[i], re, imr);
+      for(int a = 0; a < fb.n; ++a)
+        for(int b = 0; b < fb.n; ++b) if(fb.col[b] <= fb.col[a]) A.coeffRef(fb.col[a], fb.col[b]) += fb.h[a][b];
+      fb.n = 0;
+    }
+    for(const auto& t : tbs) {
+      A.coeffRef(nb + t.col(), t.row()) += t.value();
+      Hbs.coeffRef(t.row(), t.col()) += t.value();
+    }
+    for(int c = 0; c < ns; ++c)
+      for(int r = c; r < ns; ++r) if(Hss(r, c) != hss0(r, c)) A.coeffRef(nb + r, nb + c) += Hss(r, c) - hss0(r, c);
+    if(!A.isCompressed()) A.makeCompressed();
+    std::string msg;
+    if(!chol.factor(A, nb, msg)) { st.message = "the map's system could not be factored: " + msg; return false; }
+    return true;
+  };
+  if(!assemble()) return st;
   auto big_of = [&](const Eigen::VectorXd& small) {   // the vertex unknowns given the small ones
     return chol.solve_vertices(Eigen::VectorXd(gb - Hbs * small));
   };
@@ -413,9 +450,12 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
           do { if(m.face[std::size_t(g)] >= 0) stiffen[std::size_t(m.face[std::size_t(g)])] = 1; g = m.ccw_out(g); } while(g != g0);
         }
       }
-      for(std::size_t f = 0; f < nf; ++f) if(stiffen[f]) stiffness[f] *= 3;
+      std::vector<std::size_t> stiffened;
+      std::vector<double> before;
+      for(std::size_t f = 0; f < nf; ++f)
+        if(stiffen[f]) { stiffened.push_back(f); before.push_back(stiffness[f]); stiffness[f] *= 3; }
       ++st.stiffening_rounds;
-      if(!assemble(false)) return false;
+      if(!restiffen(stiffened, before)) return false;
     }
     z = big_of(y);
     return true;
@@ -426,11 +466,7 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   // Rounding one value can imply others through the closings with a non-unit coefficient (a seam
   // that leaves and re-enters the same singularity: 1 - i^k); the value is then moved to the next
   // integers until every implied value is an integer too.
-  auto implied_by = [&](int k) {   // e_k in the span of Q
-    double r2 = 1;
-    for(const Eigen::VectorXd& q : Q) r2 -= q[k] * q[k];
-    return r2 < 1e-12;
-  };
+  auto implied_by = [&](int k) { return unexplained[k] < 1e-12; };   // e_k in the span of Q
   // M = N (N^T S N)^-1 N^T, N a basis of the conditions' null space (the top-left block of the
   // KKT matrix's inverse): a new condition a.y = v moves y by M a (v - a.y) / (a.M a) and takes
   // the rank one (M a)(M a)^T / (a.M a) off M, O(ns^2) per rounding instead of a dense solve
@@ -476,15 +512,13 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
       const int k = todo[best];
       todo.erase(todo.begin() + std::ptrdiff_t(best));
       const double r0 = std::round(y[k]), dir = y[k] >= r0 ? 1 : -1;
-      const std::vector<Eigen::VectorXd> Q0 = Q;
-      const std::vector<double> delta0 = delta;
+      const std::size_t q0 = Q.size();   // the conditions before this value's (no copy: 10 MB each at 1,210 small unknowns)
       bool placed = false;
       const Eigen::VectorXd Ma = M.col(k);
       const double aMa = Ma[k];
       const bool update = aMa > 1e-10 * m_scale;   // else (round-off on a nearly implied value) a full solve
       for(double v : {r0, r0 + dir, r0 - dir, r0 + 2 * dir, r0 - 2 * dir}) {
-        Q = Q0;
-        delta = delta0;
+        drop_conditions_to(q0);
         add_condition(unit_row(k), v);
         Eigen::VectorXd yt;
         if(update) yt = y + Ma * ((v - y[k]) / aMa);
