@@ -13,6 +13,7 @@
 
 #include <CGAL/Surface_mesh_direction_fields.h>
 #include <CGAL/Surface_mesh_direction_fields/IO/read_triangle_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/map_factor.h>
 
 #include <CGAL/Eigen_solver_traits.h>
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -462,6 +463,71 @@ void two_domain_solver()
       L = L2;
       b *= 2.0;
       ref.compute(L.cast<double>());
+    }
+  }
+}
+
+// The integer-grid map's factorisation (internal/Integer_grid_map/map_factor.h): a bordered SPD
+// matrix [Hbb Hbs; Hbs^T Hss], a periodic grid for the vertex block (split in two domains) and
+// small unknowns each coupled to scattered vertices, factored with the small unknowns last. Its
+// Schur complement must equal Hss - Hbs^T Hbb^-1 Hbs and its vertex solve Hbb^-1 r, both
+// computed apart with Eigen's LDL^T of Hbb; again after new values on the same pattern (the
+// stiffening rounds), and with a vertex block too small or too thin to split.
+void map_factor_schur()
+{
+  namespace SI = SMDF::internal;
+  typedef Eigen::Triplet<double> T;
+  std::mt19937 rng(11);
+  for(int variant = 0; variant < 2; ++variant) {
+    const int nx = variant == 0 ? 90 : 200, ny = variant == 0 ? 60 : 3, nb = nx * ny, ns = 24;
+    std::vector<T> tb;
+    for(int i = 0; i < nx; ++i)
+      for(int j = 0; j < ny; ++j) {
+        const int v = i * ny + j, right = ((i + 1) % nx) * ny + j, up = i * ny + (j + 1) % ny;
+        for(int e : {right, up}) {
+          const double w = 1 + 0.5 * std::sin(0.3 * v + e);
+          tb.emplace_back(v, v, w); tb.emplace_back(e, e, w); tb.emplace_back((std::max)(v, e), (std::min)(v, e), -w);
+        }
+      }
+    tb.emplace_back(0, 0, 1.);   // anchored: Hbb positive definite
+    std::vector<T> ts;   // Hbs (rows vertices, columns small unknowns): each small unknown a few vertices
+    for(int k = 0; k < ns; ++k)
+      for(int c = 0; c < 12; ++c) {
+        const int v = int(rng() % unsigned(nb));
+        const double a = 0.3 + 0.1 * double(rng() % 7);
+        ts.emplace_back(v, k, -a);
+        tb.emplace_back(v, v, a);
+      }
+    Eigen::SparseMatrix<double> Hbb(nb, nb), Hbs(nb, ns);
+    Hbb.setFromTriplets(tb.begin(), tb.end());
+    Hbs.setFromTriplets(ts.begin(), ts.end());
+    Eigen::MatrixXd Hss = Eigen::MatrixXd::Zero(ns, ns);
+    for(int k = 0; k < ns; ++k) Hss(k, k) = 4. + k;
+    Hss(1, 0) = Hss(0, 1) = 0.5;
+    SI::Map_factor f;   // kept from pass 0 to pass 1: the refactorisation path
+    for(int pass = 0; pass < 2; ++pass) {
+      std::vector<T> all;
+      for(int c = 0; c < nb; ++c)
+        for(Eigen::SparseMatrix<double>::InnerIterator it(Hbb, c); it; ++it) if(it.row() >= c) all.emplace_back(int(it.row()), c, it.value());
+      for(int k = 0; k < ns; ++k)
+        for(Eigen::SparseMatrix<double>::InnerIterator it(Hbs, k); it; ++it) all.emplace_back(nb + k, int(it.row()), it.value());
+      for(int c = 0; c < ns; ++c)
+        for(int r = c; r < ns; ++r) all.emplace_back(nb + r, nb + c, Hss(r, c));
+      SI::Map_factor::Matrix A(nb + ns, nb + ns);
+      A.setFromTriplets(all.begin(), all.end());
+      A.makeCompressed();
+      std::string msg;
+      SMDF_CHECK_MSG(f.factor(A, nb, msg), "variant " << variant << ": " << msg);
+      Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> ref(Hbb);
+      const Eigen::MatrixXd expected = Hss - Eigen::MatrixXd(Hbs.transpose()) * ref.solve(Eigen::MatrixXd(Hbs));
+      const double err = (f.schur() - expected).norm() / expected.norm();
+      SMDF_CHECK_MSG(err < 1e-10, "variant " << variant << ", pass " << pass << ": Schur complement off by " << err);
+      Eigen::VectorXd r(nb);
+      for(int i = 0; i < nb; ++i) r[i] = std::cos(0.7 * i) + 0.2;
+      const Eigen::VectorXd x = f.solve_vertices(r), xr = ref.solve(r);
+      SMDF_CHECK_MSG((x - xr).norm() <= 1e-9 * xr.norm(), "variant " << variant << ", pass " << pass << ": vertex solve off by " << (x - xr).norm() / xr.norm());
+      Hbb = Hbb * 3.0;   // new values, same pattern
+      Hss = Hss * 2.0;
     }
   }
 }
@@ -1147,6 +1213,7 @@ int main()
   turning_fit_core();
   turning_search();
   two_domain_solver();
+  map_factor_schur();
   exact_kernel();
   separate_triangles();
   multiple_components();
