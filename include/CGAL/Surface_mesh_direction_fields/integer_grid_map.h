@@ -18,6 +18,7 @@
 
 #include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/map_factor.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/seam_layout.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/small_conditions.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
@@ -248,33 +249,9 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
     re.rhs = target.real();
     imr.rhs = target.imag();
   };
-  // linear conditions on the small unknowns (the closings, the gauge, then the roundings), kept
-  // as an orthonormal basis Q y = delta of their span (Gram-Schmidt): a condition in that span is
-  // implied by the others and not added again
-  std::vector<Eigen::VectorXd> Q;
-  std::vector<double> delta;
-  // R^T R of the conditions before the roundings (internal/Integer_grid_map/map_factor.h)
-  Eigen::MatrixXd penalty = Eigen::MatrixXd::Zero(ns, ns);
-  bool initial_conditions = true;
-  // per small unknown k, 1 - |projection of e_k on the span of Q|^2 (0: implied by the conditions)
-  Eigen::VectorXd unexplained = Eigen::VectorXd::Ones(ns);
-  auto add_condition = [&](Eigen::VectorXd row, double value) {   // false if implied by the others
-    if(initial_conditions) penalty.selfadjointView<Eigen::Lower>().rankUpdate(row);
-    for(std::size_t j = 0; j < Q.size(); ++j) {
-      const double c = Q[j].dot(row);
-      row -= c * Q[j];
-      value -= c * delta[j];
-    }
-    const double n = row.norm();
-    if(n < 1e-9) return false;
-    Q.push_back(row / n);
-    delta.push_back(value / n);
-    unexplained -= Q.back().cwiseAbs2();
-    return true;
-  };
-  auto drop_conditions_to = [&](std::size_t count) {   // undoes the last add_condition() calls
-    for(; Q.size() > count; Q.pop_back(), delta.pop_back()) unexplained += Q.back().cwiseAbs2();
-  };
+  // linear conditions on the small unknowns (internal/Integer_grid_map/small_conditions.h)
+  internal::Small_conditions conditions(ns);
+  auto add_condition = [&](const Eigen::VectorXd& row, double value) { return conditions.add(row, value); };
   for(const internal::Corner_layout::Closing& c : closings) {
     Eigen::VectorXd re = Eigen::VectorXd::Zero(ns), imr = Eigen::VectorXd::Zero(ns);
     for(const auto& p : c.t) {
@@ -305,8 +282,7 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   internal::Map_factor chol;
   Eigen::SparseMatrix<double> Hbs;
   std::vector<double> stiffness(nf, 1.);
-  initial_conditions = false;
-  penalty.triangularView<Eigen::StrictlyUpper>() = penalty.transpose();
+  const Eigen::MatrixXd& penalty = conditions.penalty();   // R^T R of the conditions before the roundings
   internal::Map_factor::Matrix A;
   double w = 1;   // the penalty's weight
   // face f's rows, weighted by k times their cotan weights: its vertex block summed in fb, its
@@ -394,17 +370,7 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   };
   // minimise y^T S y - 2 rs^T y subject to Q y = delta (independent rows): the KKT system
   auto solve_small = [&](Eigen::VectorXd& y) {
-    const Eigen::Index mq = Eigen::Index(Q.size());
-    Eigen::MatrixXd K = Eigen::MatrixXd::Zero(ns + mq, ns + mq);
-    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(ns + mq);
-    K.topLeftCorner(ns, ns) = S;
-    rhs.head(ns) = rs;
-    for(Eigen::Index i = 0; i < mq; ++i) {
-      K.block(ns + i, 0, 1, ns) = Q[std::size_t(i)].transpose();
-      K.block(0, ns + i, ns, 1) = Q[std::size_t(i)];
-      rhs[ns + i] = delta[std::size_t(i)];
-    }
-    const Eigen::VectorXd sol = K.partialPivLu().solve(rhs);
+    const Eigen::VectorXd sol = conditions.kkt(S).partialPivLu().solve(conditions.kkt_rhs(rs));
     y = sol.head(ns);
     return sol.allFinite();
   };
@@ -466,19 +432,14 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   // Rounding one value can imply others through the closings with a non-unit coefficient (a seam
   // that leaves and re-enters the same singularity: 1 - i^k); the value is then moved to the next
   // integers until every implied value is an integer too.
-  auto implied_by = [&](int k) { return unexplained[k] < 1e-12; };   // e_k in the span of Q
+  auto implied_by = [&](int k) { return conditions.implied(k); };
   // M = N (N^T S N)^-1 N^T, N a basis of the conditions' null space (the top-left block of the
   // KKT matrix's inverse): a new condition a.y = v moves y by M a (v - a.y) / (a.M a) and takes
   // the rank one (M a)(M a)^T / (a.M a) off M, O(ns^2) per rounding instead of a dense solve
   Eigen::MatrixXd M;
   auto constrained_inverse = [&]() -> bool {
-    const Eigen::Index mq = Eigen::Index(Q.size());
-    Eigen::MatrixXd K = Eigen::MatrixXd::Zero(ns + mq, ns + mq);
-    K.topLeftCorner(ns, ns) = S;
-    for(Eigen::Index i = 0; i < mq; ++i) {
-      K.block(ns + i, 0, 1, ns) = Q[std::size_t(i)].transpose();
-      K.block(0, ns + i, ns, 1) = Q[std::size_t(i)];
-    }
+    const Eigen::Index mq = Eigen::Index(conditions.size());
+    const Eigen::MatrixXd K = conditions.kkt(S);
     Eigen::MatrixXd E = Eigen::MatrixXd::Zero(ns + mq, ns);
     E.topRows(ns).setIdentity();
     M = K.partialPivLu().solve(E).topRows(ns);
@@ -512,13 +473,13 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
       const int k = todo[best];
       todo.erase(todo.begin() + std::ptrdiff_t(best));
       const double r0 = std::round(y[k]), dir = y[k] >= r0 ? 1 : -1;
-      const std::size_t q0 = Q.size();   // the conditions before this value's (no copy: 10 MB each at 1,210 small unknowns)
+      const std::size_t q0 = conditions.size();   // the conditions before this value's (no copy: 10 MB each at 1,210 small unknowns)
       bool placed = false;
       const Eigen::VectorXd Ma = M.col(k);
       const double aMa = Ma[k];
       const bool update = aMa > 1e-10 * m_scale;   // else (round-off on a nearly implied value) a full solve
       for(double v : {r0, r0 + dir, r0 - dir, r0 + 2 * dir, r0 - 2 * dir}) {
-        drop_conditions_to(q0);
+        conditions.drop_to(q0);
         add_condition(unit_row(k), v);
         Eigen::VectorXd yt;
         if(update) yt = y + Ma * ((v - y[k]) / aMa);
