@@ -368,6 +368,7 @@ private:
     // empty string on success
     std::string factor_and_schur(int s)
     {
+      if(n == 0) { lss.clear(); schur.clear(); return std::string(); }   // an empty half (a split of one domain)
       Single_thread_openmp_scope one_openmp_thread;
       cholmod_sparse A = view();
       if(!analysed) {
@@ -421,6 +422,7 @@ private:
     // y = L^-1 y or L^-T y (sys CHOLMOD_L / CHOLMOD_Lt)
     void solve(int sys, std::vector<double>& y) const
     {
+      if(n == 0) return;
       cholmod_common& c = const_cast<cholmod_common&>(cc);
       cholmod_dense B;
       B.nrow = std::size_t(n);

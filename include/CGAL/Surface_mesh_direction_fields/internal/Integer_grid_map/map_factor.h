@@ -62,7 +62,8 @@ public:
       symmetric_adjacency(nb, hbb.outerIndexPtr(), hbb.innerIndexPtr(), adj_begin, adj);
     }
     Two_domain_ordering order = two_domain_ordering(nb, adj_begin, adj, 64, 2500, true);
-    if(!order.is_split()) { order.n1 = nb; order.n2 = 0; }
+    split_ = order.is_split();
+    if(!split_) { order.n1 = nb; order.n2 = 0; }
     for(int k = nb; k < nb + ns_; ++k) order.order.push_back(k);
     llt_.reset(new Two_domain_cholesky());
     if(!llt_->factor(lower, order, message)) { factored_ = false; return false; }
@@ -71,6 +72,9 @@ public:
     nonzeros_ = lower.nonZeros();
     return true;
   }
+
+  // the vertex block was split in two domains (factored on two threads)
+  bool split() const { return split_; }
 
   // S = Hss - Hbs^T Hbb^-1 Hbs of the last factor() (with the caller's w R^T R)
   Eigen::MatrixXd schur() const { return nb_ == 0 ? schur_ : llt_->trailing_schur(ns_); }
@@ -86,7 +90,7 @@ public:
 
 private:
   std::unique_ptr<Two_domain_cholesky> llt_;
-  bool factored_ = false;
+  bool factored_ = false, split_ = false;
   int nb_ = 0, ns_ = 0;
   Eigen::Index rows_ = 0, nonzeros_ = 0;
   Eigen::MatrixXd schur_;
