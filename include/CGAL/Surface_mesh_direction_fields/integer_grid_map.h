@@ -144,15 +144,9 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   const std::vector<double>& theta = seams.theta;
   const std::vector<int>& turns = seams.turns;
   const std::vector<char>& singular = seams.singular;
-  const std::vector<char>& cut = seams.cut;
-  const std::vector<int>& arc = seams.arc;
-  const std::vector<char>& arc_forward = seams.arc_forward;
-  const std::vector<int>& arc_q = seams.arc_q;
   const int narcs = seams.narcs, nlines = seams.nlines;
   const std::vector<char>& bcorner = seams.boundary_corner;
   const std::vector<int>& turn_quarters = seams.turn_quarters;
-  const std::vector<Cplx>& border_dir = seams.border_dir;
-  const std::vector<int>& line_of = seams.line_of;
   st.cut_edges = seams.cut_edges;
   st.arcs = std::size_t(narcs);
   st.boundary_lines = std::size_t(nlines);
@@ -160,7 +154,6 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   // line conditions (internal/Integer_grid_map/seam_layout.h)
   internal::Corner_layout layout;
   if(!internal::write_corner_expressions(m, topo, seams, layout, st.message)) return st;
-  const std::vector<int>& sing_index = layout.sing_index;
   const std::vector<int>& big = layout.big;
   const std::vector<Cplx>& big_dir = layout.big_dir;
   const int nsmall = layout.nsmall, nbig = layout.nbig;
