@@ -2926,9 +2926,10 @@ def test_remesh_sweep(smdf, c, shared):
     shared mesh of one component and at most 120k faces, closed or open (#37). Each run either
     succeeds, and then its remesh reads back from the OBJ alone (automatic_remesh_read_back():
     pure quads, the input's topology, irregular vertices exactly the placed cones and corners, no
-    face flipped, on the input), or exits 3 with one line saying why. Measured 2026-12-06: 21 of
-    28 succeed (15 of 20 closed, 6 of 8 open: the alex now exits 3 for a quad folded at a corner);
-    fewer fails the test."""
+    face flipped, on the input), or exits 3 with one line saying why. Measured 2026-12-07, with
+    the cones 4 grid edges apart first and every failed remesh tried again at 2, 0 and 6: 22 of 28
+    succeed (the armadillo, stanford bunny and feline fold, the face and the rotor have a flipped
+    face, the cheese takes over 500 cones); fewer fails the test."""
     meshes = os.path.join(shared, "meshes")
     with open(os.path.join(shared, "MANIFEST.tsv"), newline="") as f:
         rows = list(csv.DictReader(f, delimiter="\t"))
@@ -2956,7 +2957,7 @@ def test_remesh_sweep(smdf, c, shared):
                 ok += 1
             print("remesh sweep: %-28s exit 0 %6.1f s: %s quads, %d cones" % (name, seconds, r.get("faces_by_size", {}).get("4"),
                                                                              len(r.get("placed_cones", []))))
-    c.check(ok >= 21, "remesh sweep: %d of %d shared meshes remeshed and read back (at least 21, as measured)" % (ok, len(names)))
+    c.check(ok >= 22, "remesh sweep: %d of %d shared meshes remeshed and read back (at least 22, as measured)" % (ok, len(names)))
 
 
 def main():

@@ -171,6 +171,111 @@ Json run_remesh(const Args& args)
   Intrinsic_surface intrinsic;   // where the metric needed intrinsic flips: surface is its copy
   double metric_s = 0, compensation_s = 0;
   Json metric = Json::object();
+  double h = 1;   // the grid's edge length under the metric (1: an integer-grid map's own units)
+  // 2. develop the metric, tessellate it and read the remesh back (throws Failed_result when the
+  // remesh fails; automatic cones try again with other cones then)
+  auto finish = [&]() {
+    out["metric"] = metric;
+    // 2. develop and tessellate; with --faces, the admissible edge length nearest to the request
+    stage("development and tessellation");
+    const auto dev = on_file(file, [&] { return SMDF::develop_flat_metric(*surface, SMDF::parameters::edge_length_map(lengths)); });
+    Mesh remesh;
+    SMDF::Grid_tessellation_status st = SMDF::tessellate_flat_metric(*surface, dev, grid, h, remesh);
+    if(!st.success && !place && requested_faces > 0 && st.compatibility.compatible && st.compatibility.spacing > 0 &&
+       st.message.find("does not divide") != std::string::npos) {
+      const double s = st.compatibility.spacing, wx = grid == SMDF::SQUARE_GRID ? 0. : 0.5, wy = grid == SMDF::SQUARE_GRID ? 1. : std::sqrt(3.) / 2;
+      double best = 0;
+      for(long a = 0; a <= long(s / h) + 2; ++a)
+        for(long b = 0; b <= long(s / h) + 2; ++b) {
+          const double g = std::hypot(double(a) + double(b) * wx, double(b) * wy);
+          if(g > 0.5 && (best == 0 || std::abs(std::log(s / g / h)) < std::abs(std::log(best / h)))) best = s / g;
+        }
+      h = best;
+      st = SMDF::tessellate_flat_metric(*surface, dev, grid, h, remesh);
+    }
+    if(intrinsic.of != nullptr && num_faces(remesh) > 0) {
+      // made on the intrinsic triangulation's copy: its vertices go to the surface through the
+      // common subdivision, and the faces inverted there are counted again (the tessellation saw
+      // the intrinsic triangles' chords)
+      SMDF::place_tessellation_on_input(intrinsic.triangulation, *intrinsic.of, st, remesh);
+      if(st.inverted_faces == 0) st.inverted_faces = faces_flipped_at_closest_point(mesh, remesh);
+    }
+    const double tessellation_s = clock.lap();
+    out["edge_length"] = h;
+    out["cut_edges"] = dev.number_of_cut_edges();
+    out["cones"] = dev.cones().size();
+    out["grid_spacing_of_metric"] = st.compatibility.spacing;
+    if(!st.failing_edges.empty()) {
+      Json fe = Json::array();
+      for(std::size_t i = 0; i < st.failing_edges.size() && i < 20; ++i) fe.push_back(st.failing_edges[i]);
+      out["failing_cut_edges"] = std::move(fe);   // the first 20
+      Json dv = Json::array();
+      for(std::size_t i = 0; i < st.failing_edges.size() && i < 20 && i < st.failing_rotation_deviations.size(); ++i) {
+        Json o = Json::object();
+        o["rotation"] = st.failing_rotation_deviations[i];
+        o["translation"] = st.failing_translation_deviations[i];
+        dv.push_back(std::move(o));
+      }
+      out["failing_cut_edge_deviations"] = std::move(dv);
+      out["failing_cut_edge_count"] = st.failing_edges.size();
+    }
+    Json timings = Json::object();
+    timings["metric_s"] = metric_s;
+    timings["compensation_s"] = compensation_s;
+    timings["tessellation_s"] = tessellation_s;
+    bool success = st.success;
+    std::string failure = st.message;
+    std::size_t inverted = st.inverted_faces;
+    // every other check passed: unfold the inverted faces, and the quads folded at a corner
+    if(num_faces(remesh) > 0 && untangle && (inverted > 0 || (success && nonconvex_quads(remesh) > 0))) {
+      stage("untangling inverted faces");
+      out["untangle"] = untangle_inverted(mesh, remesh, success, inverted, untangle_message);
+      if(!success) failure += "; untangling: " + untangle_message;
+      timings["untangle_s"] = clock.lap();
+    }
+    if(num_faces(remesh) > 0) {
+      Json sizes = Json::object(), val = Json::object();
+      std::map<std::size_t, std::size_t> by_size;
+      for(face_descriptor f : faces(remesh)) ++by_size[CGAL::halfedges_around_face(halfedge(f, remesh), remesh).size()];
+      for(const auto& p : by_size) sizes[std::to_string(p.first)] = p.second;
+      for(std::size_t k = 0; k < st.valences.size(); ++k) if(st.valences[k]) val[std::to_string(k)] = st.valences[k];
+      out["vertices"] = num_vertices(remesh);
+      out["faces_by_size"] = std::move(sizes);
+      out["valences"] = std::move(val);
+      Json irr = Json::array();
+      for(const auto& p : st.irregular_vertices) {
+        Json o = Json::object();
+        o["vertex"] = p.first;
+        if(p.second >= 0) o["cone"] = p.second; else o["cone"] = Json();
+        o["valence"] = degree(vertex_descriptor(Mesh::size_type(p.first)), remesh);
+        irr.push_back(std::move(o));
+      }
+      out["irregular_vertices"] = std::move(irr);
+      out["inverted_faces"] = inverted;
+      check_flipped_faces(remesh, success, failure);
+      out["quality"] = remesh_quality(remesh);
+      // automatic cones promise a valid quad mesh: a quad still folded at a corner after untangling
+      // (scaled Jacobian <= 0) fails it (the polycube routes report such quads and keep exit 0)
+      if(place && success) {
+        const std::size_t folded_quads = nonconvex_quads(remesh);
+        if(folded_quads > 0) {
+          success = false;
+          failure = std::to_string(folded_quads) + " quads are folded at a corner (scaled Jacobian <= 0) after untangling";
+        }
+      }
+      // (the integer-grid map's grid edge is 1 in its own units: on the surface, the mean quad's side)
+      out["distance_over_edge_length"] = remesh_distances(mesh, remesh, place ? std::sqrt(CGAL::Polygon_mesh_processing::area(mesh) / double(num_faces(remesh))) : h);
+      out["area_ratio"] = remesh_area_ratio(mesh, remesh);
+      if(!CGAL::IO::write_polygon_mesh(out_file, remesh, CGAL::parameters::stream_precision(17)))
+        throw file_error(out_file, "cannot write the remesh (the extension must be .off or .obj)", "output");
+      if(args.has("svg")) write_remesh_svg(args, mesh, remesh, grid == SMDF::SQUARE_GRID ? 4 : 6);
+      if(args.has("knot-svg")) write_knot_svg(args, mesh, remesh);
+    }
+    stage("done");
+    out["timings"] = std::move(timings);
+    out["success"] = success;
+    if(!success) throw Failed_result{out, file + ": " + failure, 3};
+  };
   if(args.has("lengths")) { lengths = read_edge_lengths(args.value("lengths"), mesh); metric["source"] = "lengths"; }
   else if(!cones.empty() && !args.has("polycube")) {
     // the flat cone metric with the given cones, on the input triangulation; if that cannot
@@ -215,11 +320,16 @@ Json run_remesh(const Args& args)
     }
   } else if(place) {
     lengths = placed_cones_metric(file, mesh, refined, intrinsic, surface, requested_h, requested_faces, distortion_bound, max_cones, cone_spacing, out,
-                                  metric, stage);
-    if(args.has("uv-out") && intrinsic.of != nullptr)
-      throw Error(file + ": --uv-out: the flat cone metric needed intrinsic edge flips, so the integer-grid map lives on an intrinsic "
-                         "triangulation whose faces are not the input's [unsupported]");
+                                  metric, stage, [&](Edge_length_property map_lengths) {
+      if(args.has("uv-out") && intrinsic.of != nullptr)
+        throw Error(file + ": --uv-out: the flat cone metric needed intrinsic edge flips, so the integer-grid map lives on an intrinsic "
+                           "triangulation whose faces are not the input's [unsupported]");
+      lengths = map_lengths;
+      metric_s = clock.lap();
+      finish();
+    });
     if(args.has("uv-out")) write_uv_obj(args.value("uv-out"), *surface);
+    return out;   // tessellated and read back by the attempt that passed
   } else {
     lengths = mesh.add_property_map<edge_descriptor, double>("e:smdf_remesh_length", 0.).first;
     for(edge_descriptor e : edges(mesh)) lengths[e] = std::sqrt(CGAL::squared_distance(mesh.point(source(e, mesh)), mesh.point(target(e, mesh))));
@@ -242,7 +352,7 @@ Json run_remesh(const Args& args)
     if(!cm.converged) for(vertex_descriptor v : vertices(mesh)) u[v] = 0;
     metric_s += clock.lap();   // the flat cone metric is the metric; compensation_s is P's
   };
-  double h = place ? 1. : requested_h > 0 ? requested_h : std::sqrt(metric_area(*surface, lengths) / (double(requested_faces) * unit_area));
+  h = place ? 1. : requested_h > 0 ? requested_h : std::sqrt(metric_area(*surface, lengths) / (double(requested_faces) * unit_area));
   // A file that describes a box (six quadrilaterals glued as a cube's) gets the box's own
   // metric, scaled along its three axes, instead of six equal squares.
   bool file_box = false;
@@ -449,106 +559,7 @@ Json run_remesh(const Args& args)
     out["metric"] = metric;
     if(!ps.success) throw Failed_result{out, file + ": box polycube metric: " + ps.message, 3};
   }
-  out["metric"] = metric;
-  // 2. develop and tessellate; with --faces, the admissible edge length nearest to the request
-  stage("development and tessellation");
-  const auto dev = on_file(file, [&] { return SMDF::develop_flat_metric(*surface, SMDF::parameters::edge_length_map(lengths)); });
-  Mesh remesh;
-  SMDF::Grid_tessellation_status st = SMDF::tessellate_flat_metric(*surface, dev, grid, h, remesh);
-  if(!st.success && !place && requested_faces > 0 && st.compatibility.compatible && st.compatibility.spacing > 0 &&
-     st.message.find("does not divide") != std::string::npos) {
-    const double s = st.compatibility.spacing, wx = grid == SMDF::SQUARE_GRID ? 0. : 0.5, wy = grid == SMDF::SQUARE_GRID ? 1. : std::sqrt(3.) / 2;
-    double best = 0;
-    for(long a = 0; a <= long(s / h) + 2; ++a)
-      for(long b = 0; b <= long(s / h) + 2; ++b) {
-        const double g = std::hypot(double(a) + double(b) * wx, double(b) * wy);
-        if(g > 0.5 && (best == 0 || std::abs(std::log(s / g / h)) < std::abs(std::log(best / h)))) best = s / g;
-      }
-    h = best;
-    st = SMDF::tessellate_flat_metric(*surface, dev, grid, h, remesh);
-  }
-  if(intrinsic.of != nullptr && num_faces(remesh) > 0) {
-    // made on the intrinsic triangulation's copy: its vertices go to the surface through the
-    // common subdivision, and the faces inverted there are counted again (the tessellation saw
-    // the intrinsic triangles' chords)
-    SMDF::place_tessellation_on_input(intrinsic.triangulation, *intrinsic.of, st, remesh);
-    if(st.inverted_faces == 0) st.inverted_faces = faces_flipped_at_closest_point(mesh, remesh);
-  }
-  const double tessellation_s = clock.lap();
-  out["edge_length"] = h;
-  out["cut_edges"] = dev.number_of_cut_edges();
-  out["cones"] = dev.cones().size();
-  out["grid_spacing_of_metric"] = st.compatibility.spacing;
-  if(!st.failing_edges.empty()) {
-    Json fe = Json::array();
-    for(std::size_t i = 0; i < st.failing_edges.size() && i < 20; ++i) fe.push_back(st.failing_edges[i]);
-    out["failing_cut_edges"] = std::move(fe);   // the first 20
-    Json dv = Json::array();
-    for(std::size_t i = 0; i < st.failing_edges.size() && i < 20 && i < st.failing_rotation_deviations.size(); ++i) {
-      Json o = Json::object();
-      o["rotation"] = st.failing_rotation_deviations[i];
-      o["translation"] = st.failing_translation_deviations[i];
-      dv.push_back(std::move(o));
-    }
-    out["failing_cut_edge_deviations"] = std::move(dv);
-    out["failing_cut_edge_count"] = st.failing_edges.size();
-  }
-  Json timings = Json::object();
-  timings["metric_s"] = metric_s;
-  timings["compensation_s"] = compensation_s;
-  timings["tessellation_s"] = tessellation_s;
-  bool success = st.success;
-  std::string failure = st.message;
-  std::size_t inverted = st.inverted_faces;
-  // every other check passed: unfold the inverted faces, and the quads folded at a corner
-  if(num_faces(remesh) > 0 && untangle && (inverted > 0 || (success && nonconvex_quads(remesh) > 0))) {
-    stage("untangling inverted faces");
-    out["untangle"] = untangle_inverted(mesh, remesh, success, inverted, untangle_message);
-    if(!success) failure += "; untangling: " + untangle_message;
-    timings["untangle_s"] = clock.lap();
-  }
-  if(num_faces(remesh) > 0) {
-    Json sizes = Json::object(), val = Json::object();
-    std::map<std::size_t, std::size_t> by_size;
-    for(face_descriptor f : faces(remesh)) ++by_size[CGAL::halfedges_around_face(halfedge(f, remesh), remesh).size()];
-    for(const auto& p : by_size) sizes[std::to_string(p.first)] = p.second;
-    for(std::size_t k = 0; k < st.valences.size(); ++k) if(st.valences[k]) val[std::to_string(k)] = st.valences[k];
-    out["vertices"] = num_vertices(remesh);
-    out["faces_by_size"] = std::move(sizes);
-    out["valences"] = std::move(val);
-    Json irr = Json::array();
-    for(const auto& p : st.irregular_vertices) {
-      Json o = Json::object();
-      o["vertex"] = p.first;
-      if(p.second >= 0) o["cone"] = p.second; else o["cone"] = Json();
-      o["valence"] = degree(vertex_descriptor(Mesh::size_type(p.first)), remesh);
-      irr.push_back(std::move(o));
-    }
-    out["irregular_vertices"] = std::move(irr);
-    out["inverted_faces"] = inverted;
-    check_flipped_faces(remesh, success, failure);
-    out["quality"] = remesh_quality(remesh);
-    // automatic cones promise a valid quad mesh: a quad still folded at a corner after untangling
-    // (scaled Jacobian <= 0) fails it (the polycube routes report such quads and keep exit 0)
-    if(place && success) {
-      const std::size_t folded_quads = nonconvex_quads(remesh);
-      if(folded_quads > 0) {
-        success = false;
-        failure = std::to_string(folded_quads) + " quads are folded at a corner (scaled Jacobian <= 0) after untangling";
-      }
-    }
-    // (the integer-grid map's grid edge is 1 in its own units: on the surface, the mean quad's side)
-    out["distance_over_edge_length"] = remesh_distances(mesh, remesh, place ? std::sqrt(CGAL::Polygon_mesh_processing::area(mesh) / double(num_faces(remesh))) : h);
-    out["area_ratio"] = remesh_area_ratio(mesh, remesh);
-    if(!CGAL::IO::write_polygon_mesh(out_file, remesh, CGAL::parameters::stream_precision(17)))
-      throw file_error(out_file, "cannot write the remesh (the extension must be .off or .obj)", "output");
-    if(args.has("svg")) write_remesh_svg(args, mesh, remesh, grid == SMDF::SQUARE_GRID ? 4 : 6);
-    if(args.has("knot-svg")) write_knot_svg(args, mesh, remesh);
-  }
-  stage("done");
-  out["timings"] = std::move(timings);
-  out["success"] = success;
-  if(!success) throw Failed_result{out, file + ": " + failure, 3};
+  finish();
   return out;
 }
 
@@ -574,7 +585,7 @@ Command remesh_command()
            {"distortion-bound", "B", "automatic cones: the cone metric's log scale within B (default 2)"},
            {"max-cones", "n", "automatic cones: at most n cones (default 500)"},
            {"uv-out", "FILE", "automatic cones: write the integer-grid map as OBJ, one vt per face corner (a seamless parametrization in grid units; the triangulation is the Delaunay refinement's when the metric needed it)"},
-           {"cone-spacing", "S", "automatic cones: at least S grid edges apart (along the input's edges) where the placement can; default: 0 (never adjacent), then 2, 4 and 6 while the map folds"},
+           {"cone-spacing", "S", "automatic cones: at least S grid edges apart (along the input's edges) where the placement can; default: 4, then 2, 0 (only never adjacent) and 6 while the map or the remesh fails"},
            {"progress", "", "report each stage on stderr with the elapsed time"}},
           "regular quad or triangle remesh from a flat cone metric",
           "Lai et al. 2010, section 5: develops a flat cone metric of the mesh (its own edge lengths,\n"
@@ -657,12 +668,14 @@ Command remesh_command()
           "folds, or if a quad stays folded at a corner after untangling), whose edge lengths are the metric tessellated with edge length\n"
           "1 (edge_length 1 in grid units). The JSON adds placed_cones: [{vertex, curvature}],\n"
           "placement: {success, message, distortion_bound, scale_spread}, placement_attempts:\n"
-          "[{cone_spacing, cones, message, stage_timings}] (a map that folds is tried again with the\n"
-          "cones 2, 4, then 6 grid edges apart, unless --cone-spacing is given), stage_timings (the last\n"
+          "[{cone_spacing, cones, message, stage_timings}] (the cones are placed 4 grid edges apart\n"
+          "first; a map that folds or a remesh that fails its read-back is tried again with them 2,\n"
+          "0, then 6 apart, unless --cone-spacing is given), stage_timings (the last\n"
           "attempt's: placement_s, cone_metric_s, cross_field_s, integer_grid_map_s) and integer_grid_map:\n"
           "{success, message, singularities, seams, boundary_corners, boundary_lines, rounded_values, folded_triangles,\n"
-          "stiffening_rounds, seamless_energy, integer_energy, min_area_ratio}. Exit 3 at once when\n"
-          "the placement takes --max-cones cones or more (the map's time grows as their cube).\n",
+          "stiffening_rounds, seamless_energy, seamless_folded_triangles (before rounding), integer_energy,\n"
+          "min_area_ratio}. An attempt whose placement takes --max-cones cones or more fails at once\n"
+          "(the map's time grows as their cube).\n",
           run_remesh};
 }
 

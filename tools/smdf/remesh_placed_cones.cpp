@@ -83,7 +83,7 @@ namespace {
 // One attempt with cones `cone_spacing` grid edges apart where the placement can.
 Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, Mesh& refined, Intrinsic_surface& intrinsic, Mesh*& surface, double requested_h,
                                           long requested_faces, double distortion_bound, long max_cones, double cone_spacing, Json& out,
-                                          Json& metric, const std::function<void(const char*)>& stage, std::size_t& cones, bool& folded)
+                                          Json& metric, const std::function<void(const char*)>& stage, std::size_t& cones)
 {
   Edge_length_property lengths;
   // cones placed for low distortion, their flat cone metric on the input's edges, the cross
@@ -254,11 +254,11 @@ Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, M
   ig["folded_triangles"] = gs.folded_triangles;
   ig["stiffening_rounds"] = gs.stiffening_rounds;
   ig["seamless_energy"] = gs.seamless_energy;
+  ig["seamless_folded_triangles"] = gs.seamless_folded_triangles;   // before rounding
   ig["integer_energy"] = gs.integer_energy;
   ig["min_area_ratio"] = gs.min_area_ratio;
   out["integer_grid_map"] = std::move(ig);
   if(!gs.success) {
-    folded = true;
     out["metric"] = metric;
     out["success"] = false;
     throw Failed_result{out, file + ": integer-grid map: " + gs.message, 3};
@@ -275,46 +275,54 @@ Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, M
 
 Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Mesh& refined, Intrinsic_surface& intrinsic, Mesh*& surface, double requested_h,
                                          long requested_faces, double distortion_bound, long max_cones, double cone_spacing, Json& out, Json& metric,
-                                         const std::function<void(const char*)>& stage)
+                                         const std::function<void(const char*)>& stage,
+                                         const std::function<void(Edge_length_property)>& finish)
 {
   const SMDF::Mesh_topology<Mesh> topo = SMDF::mesh_topology(mesh);
   if(topo.components.size() != 1)
     throw Error(file + ": automatic cones need a mesh of one component; this one has " + std::to_string(topo.components.size()) +
                 " [invalid_input]");
-  // Automatic spacing: cones only kept apart (0) first, then 2, 4 and 6 grid edges apart while
-  // the map folds (measured at 4,000 quads: the casting and the botijo unfold at 2, the fertility
-  // folds at 2 and not at 0; at 500 quads the bunny and the triple torus need 2; at 20,000 quads
-  // the cheburashka folds at 0 to 3 and not at 4, the armadillo at 0 to 4 and not at 6: fewer
-  // cones, 244 at 0 against 64 at 6). Only failing maps pay for the further attempts.
-  const std::vector<double> spacings = cone_spacing >= 0 ? std::vector<double>{cone_spacing} : std::vector<double>{0., 2., 4., 6.};
+  // Automatic spacing: cones 4 grid edges apart first, then 2, 0 (only kept apart) and 6, while
+  // the map folds or the remesh fails its read-back. Measured on the 28 valid shared meshes of
+  // one component at 4,000 and 12,000 quads, one spacing alone: 28 of 56 valid at 0, 33 at 2,
+  // 34 at 3, 37 at 4, with 5,330, 4,144, 3,800 and 3,654 cones in all (the armadillo 244 at 0
+  // against 50 at 4, the cheburashka 108 against 28): near a cone its metric's log scale is
+  // singular, and a spread measured only one input ring away grows with the input's resolution
+  // (the bunny at 20,000 quads: 26 cones from 28k faces, 78 from the same shape at 114k; 18 and 18
+  // at 4). Trying 2 and 0 next recovers 3 more (the bunny and the camelhead at 4,000 quads valid
+  // at 0 or 2 only); 6 unfolded the armadillo at 20,000 quads. Only failing runs pay for retries.
+  const std::vector<double> spacings = cone_spacing >= 0 ? std::vector<double>{cone_spacing} : std::vector<double>{4., 2., 0., 6.};
   Json attempts = Json::array();
+  const Json out_before = out, metric_before = metric;
   for(std::size_t i = 0;; ++i) {
     Json a = Json::object();
     a["cone_spacing"] = spacings[i];
     std::size_t cones = 0;
-    bool folded = false;
     try {
+      if(i > 0) { out = out_before; metric = metric_before; }   // nothing of a failed attempt stays but its record
       surface = &mesh;
       CGAL::clear(refined);   // the refinement of a previous attempt, made for other cones
       intrinsic.of = nullptr;
       Edge_length_property l = placed_cones_attempt(file, mesh, refined, intrinsic, surface, requested_h, requested_faces, distortion_bound, max_cones,
-                                                    spacings[i], out, metric, stage, cones, folded);
+                                                    spacings[i], out, metric, stage, cones);
       a["cones"] = cones;
       a["message"] = "";
       a["stage_timings"] = out["stage_timings"];
-      attempts.push_back(std::move(a));
-      out["placement_attempts"] = std::move(attempts);
+      Json recorded = attempts;
+      recorded.push_back(a);
+      out["placement_attempts"] = std::move(recorded);   // as it will stand if this attempt's remesh passes
+      finish(l);
       return l;
     } catch(Failed_result& f) {
       a["cones"] = cones;
       a["message"] = f.message;
       a["stage_timings"] = f.json["stage_timings"];
       attempts.push_back(std::move(a));
-      if(!folded || i + 1 == spacings.size()) {
+      if(i + 1 == spacings.size()) {
         f.json["placement_attempts"] = std::move(attempts);
         throw;
       }
-      stage("the map folds: cones placed further apart");
+      stage("the remesh failed: cones placed at the next spacing");
     }
   }
 }

@@ -58,11 +58,15 @@ SMDF::Cone_metric_status intrinsic_cone_metric(const std::string& file, Mesh& ba
 // and the integer-grid map for about `requested_faces` quads (or grid edges of `requested_h`
 // under the metric). Returns the map's edge lengths (grid units) on `*surface`; adds
 // placed_cones, placement and integer_grid_map to `out` and the metric's fields to `metric`.
-// Cones are kept `cone_spacing` grid edges apart where the placement can (measured on the input).
-// Throws Failed_result (exit 3) when a step fails, Error for an open mesh.
+// Cones are kept `cone_spacing` grid edges apart where the placement can (measured on the input);
+// a negative `cone_spacing` tries 4, 2, 0 and 6 in turn. `finish` tessellates the map and reads
+// the remesh back (it throws Failed_result when the remesh fails): an attempt whose map or
+// remesh fails is followed by the next spacing, each recorded in placement_attempts.
+// Throws Failed_result (exit 3) when the last attempt fails.
 Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Mesh& refined, Intrinsic_surface& intrinsic, Mesh*& surface, double requested_h,
                                          long requested_faces, double distortion_bound, long max_cones, double cone_spacing, Json& out, Json& metric,
-                                         const std::function<void(const char*)>& stage);
+                                         const std::function<void(const char*)>& stage,
+                                         const std::function<void(Edge_length_property)>& finish);
 
 // Writes the integer-grid map made by placed_cones_metric() on `on` (the input, or its
 // refinement) as OBJ: the vertices, one `vt` per face corner (grid units), faces `v/vt`.
