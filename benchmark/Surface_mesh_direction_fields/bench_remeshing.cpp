@@ -21,6 +21,8 @@
 #include <CGAL/Surface_mesh_direction_fields/remeshing_cones.h>
 #include <CGAL/Surface_mesh_direction_fields/topology.h>
 
+#include <CGAL/Polygon_mesh_processing/measure.h>
+
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -145,14 +147,14 @@ static void BM_delaunay_refinement(benchmark::State& state)
 }
 
 // The automatic quad remesh of `smdf remesh MESH --faces N` (issue #37), library calls only:
-// place_remeshing_cones() (defaults), the flat cone metric of those cones on the input's edges
+// place_remeshing_cones() (the cones 4 quad sides apart, smdf's first attempt), the flat cone metric of those cones on the input's edges
 // (as smdf, the placement's own read-back when it needed no flip), the trivial connection's cross field, integer_grid_map() and tessellate_flat_metric(), with
 // N = faces / 5 quads (100k faces -> 20k quads). The base mesh is $SMDF_REMESH_BENCH_MESH, else
 // the shared bunny_bff.obj (closed, genus 0, 28,576 faces; the feline of the other benchmarks
 // takes over 500 cones, past smdf's default maximum), decimated or Loop-subdivided to each size.
 // As smdf, a metric the input's edges cannot carry is computed on their conforming Delaunay
 // refinement (counter `refined`, the fraction of runs); smdf's other fallbacks (intrinsic flips,
-// a second placement with the cones further apart, untangling) are not run: a size that needs
+// further placements with the cones at other spacings, untangling) are not run: a size that needs
 // them reports read_back_ok 0 and the stage it failed in.
 // Counters: placement_s, cone_metric_s (with the refinement), cross_field_s,
 // integer_grid_map_s, tessellation_s, cones, seams, output_quads, folded_triangles, refined,
@@ -259,7 +261,11 @@ void run_automatic_remesh(benchmark::State& state, const smdf_bench::Bench_mesh*
     typedef Mesh::Edge_index Edge;
     auto placed = work.add_property_map<Edge, double>("e:bench_placed", 0.).first;
     auto t0 = std::chrono::steady_clock::now();
-    const auto ps = SMDF::place_remeshing_cones(work, placed, SMDF::parameters::symmetry_order(4));
+    // as smdf's first attempt: the cones 4 quad sides apart (measured on the input)
+    const double h_input = std::sqrt(CGAL::Polygon_mesh_processing::area(work) / quads_wanted);
+    const auto ps = SMDF::place_remeshing_cones(work, placed, SMDF::parameters::symmetry_order(4)
+                                                                  .minimum_cone_distance(4 * h_input)
+                                                                  .minimum_boundary_distance(4 * h_input));
     placement_s += seconds_since(t0);
     cones = ps.cones.size();
     if(!ps.success) { ok = false; failure = "placement: " + ps.message; continue; }
