@@ -15,8 +15,10 @@
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <sstream>
 #include <utility>
 #include <vector>
 
@@ -83,7 +85,8 @@ namespace {
 // One attempt with cones `cone_spacing` grid edges apart where the placement can.
 Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, Mesh& refined, Intrinsic_surface& intrinsic, Mesh*& surface, double requested_h,
                                           long requested_faces, double distortion_bound, long max_cones, double cone_spacing, Json& out,
-                                          Json& metric, const std::function<void(const char*)>& stage, std::size_t& cones)
+                                          Json& metric, const std::function<void(const char*)>& stage, std::size_t& cones,
+                                          std::vector<std::string>& placements, bool& repeated)
 {
   Edge_length_property lengths;
   // cones placed for low distortion, their flat cone metric on the input's edges, the cross
@@ -113,9 +116,16 @@ Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, M
     o["curvature"] = c.second;
     pc.push_back(std::move(o));
   }
+  // the same cones as a failed attempt's (a mesh with no cone, cones far apart at every spacing)
+  // would fail the same way
+  std::ostringstream key;
+  pc.write(key);
+  repeated = std::find(placements.begin(), placements.end(), key.str()) != placements.end();
+  placements.push_back(key.str());
   out["placed_cones"] = std::move(pc);
   timed("placement_s");
   cones = ps.cones.size();
+  if(repeated) throw Failed_result{out, "the same cones as an earlier attempt", 3};
   pl["success"] = ps.success;
   pl["message"] = ps.message;
   pl["distortion_bound"] = ps.distortion_bound;
@@ -294,17 +304,20 @@ Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Me
   const std::vector<double> spacings = cone_spacing >= 0 ? std::vector<double>{cone_spacing} : std::vector<double>{4., 2., 0., 6.};
   Json attempts = Json::array();
   const Json out_before = out, metric_before = metric;
+  std::vector<std::string> placements;
+  Failed_result failure{Json(), "", 3};   // the last attempt that ran
   for(std::size_t i = 0;; ++i) {
     Json a = Json::object();
     a["cone_spacing"] = spacings[i];
     std::size_t cones = 0;
+    bool repeated = false;
     try {
       if(i > 0) { out = out_before; metric = metric_before; }   // nothing of a failed attempt stays but its record
       surface = &mesh;
       CGAL::clear(refined);   // the refinement of a previous attempt, made for other cones
       intrinsic.of = nullptr;
       Edge_length_property l = placed_cones_attempt(file, mesh, refined, intrinsic, surface, requested_h, requested_faces, distortion_bound, max_cones,
-                                                    spacings[i], out, metric, stage, cones);
+                                                    spacings[i], out, metric, stage, cones, placements, repeated);
       a["cones"] = cones;
       a["message"] = "";
       a["stage_timings"] = out["stage_timings"];
@@ -318,9 +331,10 @@ Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Me
       a["message"] = f.message;
       a["stage_timings"] = f.json["stage_timings"];
       attempts.push_back(std::move(a));
+      if(!repeated) failure = f;
       if(i + 1 == spacings.size()) {
-        f.json["placement_attempts"] = std::move(attempts);
-        throw;
+        failure.json["placement_attempts"] = std::move(attempts);
+        throw failure;
       }
       stage("the remesh failed: cones placed at the next spacing");
     }
