@@ -13,6 +13,7 @@
 
 #include <CGAL/Surface_mesh_direction_fields.h>
 #include <CGAL/Surface_mesh_direction_fields/IO/read_triangle_mesh.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/local_resolve.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/map_factor.h>
 
 #include <CGAL/Eigen_solver_traits.h>
@@ -532,6 +533,59 @@ void map_factor_schur()
       Hss = Hss * 2.0;
     }
   }
+}
+
+// The integer-grid map's stiffening re-solve on a region (local_resolve.h), on a periodic grid
+// Laplacian anchored at one vertex with small-unknown rows below it (which it must ignore): with
+// every unknown free it is the whole system's solve; with a disk free, the disk's rows of the
+// system hold and every other unknown keeps its value.
+void resolve_on_region()
+{
+  namespace SI = SMDF::internal;
+  typedef Eigen::Triplet<double> T;
+  const int nx = 30, ny = 20, nb = nx * ny, ns = 6;
+  std::vector<T> t;
+  for(int i = 0; i < nx; ++i)
+    for(int j = 0; j < ny; ++j) {
+      const int v = i * ny + j, right = ((i + 1) % nx) * ny + j, up = i * ny + (j + 1) % ny;
+      for(int e : {right, up}) {
+        const double w = 1 + 0.5 * std::sin(0.3 * v + e);
+        t.emplace_back(v, v, w); t.emplace_back(e, e, w); t.emplace_back((std::max)(v, e), (std::min)(v, e), -w);
+      }
+    }
+  t.emplace_back(0, 0, 1.);
+  std::vector<T> vertex_block = t;
+  for(int k = 0; k < ns; ++k) { t.emplace_back(nb + k, 7 * k + 3, -0.4); t.emplace_back(nb + k, nb + k, 5.); }
+  SI::Map_factor::Matrix A(nb + ns, nb + ns);
+  A.setFromTriplets(t.begin(), t.end());
+  A.makeCompressed();
+  Eigen::SparseMatrix<double> H(nb, nb);
+  H.setFromTriplets(vertex_block.begin(), vertex_block.end());
+  const Eigen::SparseMatrix<double> full = Eigen::SparseMatrix<double>(H.selfadjointView<Eigen::Lower>());
+  Eigen::VectorXd g(nb), z0(nb);
+  for(int i = 0; i < nb; ++i) { g[i] = std::cos(0.7 * i) + 0.2; z0[i] = std::sin(0.11 * i); }
+  std::string msg;
+  // every unknown free: the whole solve
+  Eigen::VectorXd z = z0;
+  SMDF_CHECK_MSG(SI::resolve_on_region(A, nb, g, std::vector<char>(std::size_t(nb), 1), z, msg), msg);
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> ref(H);
+  const Eigen::VectorXd zr = ref.solve(g);
+  SMDF_CHECK_MSG((z - zr).norm() <= 1e-9 * zr.norm(), "all free: off the whole solve by " << (z - zr).norm() / zr.norm());
+  // a disk of radius 5 around (15, 10) free
+  std::vector<char> free(std::size_t(nb), 0);
+  for(int i = 0; i < nx; ++i)
+    for(int j = 0; j < ny; ++j) free[std::size_t(i * ny + j)] = (i - 15) * (i - 15) + (j - 10) * (j - 10) <= 25;
+  z = z0;
+  SMDF_CHECK_MSG(SI::resolve_on_region(A, nb, g, free, z, msg), msg);
+  const Eigen::VectorXd residual = full * z - g;
+  double worst_free = 0, moved = 0;
+  for(int c = 0; c < nb; ++c) {
+    if(free[std::size_t(c)]) worst_free = (std::max)(worst_free, std::abs(residual[c]));
+    else moved = (std::max)(moved, std::abs(z[c] - z0[c]));
+  }
+  SMDF_CHECK_MSG(worst_free < 1e-10, "disk free: its rows' residual " << worst_free);
+  SMDF_CHECK_MSG(moved == 0, "disk free: an unknown outside it moved by " << moved);
+  SMDF_CHECK_MSG((z - z0).norm() > 1e-3, "disk free: nothing moved");
 }
 
 // Several components (a torus and an open cylinder side by side): indices are checked per
@@ -1216,6 +1270,7 @@ int main()
   turning_search();
   two_domain_solver();
   map_factor_schur();
+  resolve_on_region();
   exact_kernel();
   separate_triangles();
   multiple_components();

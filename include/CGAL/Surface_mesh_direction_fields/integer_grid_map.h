@@ -16,6 +16,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/cotan_weights.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/development.h>
 
+#include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/local_resolve.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/map_factor.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/seam_layout.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/small_conditions.h>
@@ -27,6 +28,7 @@
 #include <array>
 #include <cmath>
 #include <complex>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -332,10 +334,10 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
     if(nb > 0) rs.noalias() -= Hbs.transpose() * xg;
     return true;
   };
-  // the faces stiffened (from `before` to stiffness[f]): only their difference is assembled, into
-  // the factored matrix's entries in place (same pattern), which is then factored again (at 457k
-  // faces a full assembly was half of each stiffening round's 3.3 s)
-  auto restiffen = [&](const std::vector<std::size_t>& stiffened, const std::vector<double>& before) -> bool {
+  // the faces stiffened (from `before` to stiffness[f]) once the small unknowns are rounded: only
+  // their difference is added, into the matrix's entries in place (same pattern; at 457k faces a
+  // full assembly was half of a stiffening round's 3.3 s), gb and Hbs
+  auto restiffen = [&](const std::vector<std::size_t>& stiffened, const std::vector<double>& before) {
     tbs.clear();
     Term re, imr;
     const Eigen::MatrixXd hss0 = Hss;
@@ -352,10 +354,6 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
     }
     for(int c = 0; c < ns; ++c)
       for(int r = c; r < ns; ++r) if(Hss(r, c) != hss0(r, c)) A.coeffRef(nb + r, nb + c) += Hss(r, c) - hss0(r, c);
-    if(!A.isCompressed()) A.makeCompressed();
-    std::string msg;
-    if(!chol.factor(A, nb, msg)) { st.message = "the map's system could not be factored: " + msg; return false; }
-    return true;
   };
   if(!assemble()) return st;
   auto big_of = [&](const Eigen::VectorXd& small) {   // the vertex unknowns given the small ones
@@ -384,39 +382,68 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
     return !((p1 - p0).real() * (p2 - p0).imag() - (p1 - p0).imag() * (p2 - p0).real() > 0);
   };
   // local stiffening of the integer map (its small unknowns fixed, only the vertices move): the
-  // faces around a folded one weigh three times more, re-solved, up to eight times (each a new
-  // factorisation, no Schur complement), or until two rounds in a row fold as many triangles.
+  // faces around a folded one weigh three times more, re-solved, until no triangle folds or two
+  // rounds in a row fold as many, in two phases of up to eight rounds. First each round re-solves
+  // only the vertices within 8 grid units (and 2 rings) of the triangles folded so far, the others
+  // held (local_resolve.h): the stiffening's effect is mostly local, and a factorisation of the
+  // whole system per round was most of the map's time at 457k faces (4 rounds, 1.5-2 s each).
+  // If triangles still fold, the whole system is factored again each round (the shared meshes at
+  // 4,000 and 12,000 quads: 42 of 56 valid with local rounds alone, 43 with whole ones alone;
+  // radius 4: 41).
   // The seamless map is not stiffened: each round there needed a new Schur complement (1.3 s of
   // the botijo's 5.5 s map at 20,000 quads, 3 rounds) and the shared meshes remesh as well or
   // better without it (4,000 quads: 15 of 20 valid instead of 14; 20,000: 16 of 20 either way)
+  std::vector<char> free_vertex(nv, 0), free_col(std::size_t(nb), 0);
+  std::vector<double> reach(nv, std::numeric_limits<double>::infinity());
+  std::vector<int> hops(nv, 0);
+  auto free_near = [&](const std::vector<std::size_t>& folded_faces) {
+    internal::mark_vertices_near_faces(m, folded_faces, 8 * h, 2, reach, hops, free_vertex);
+    for(std::size_t v = 0; v < nv; ++v) {
+      if(!free_vertex[v] || big[v] < 0) continue;
+      const int col = big_col[std::size_t(big[v])];
+      if(col < 0) continue;
+      free_col[std::size_t(col)] = 1;
+      if(big_dir[std::size_t(big[v])] == Cplx(0, 0)) free_col[std::size_t(col) + 1] = 1;
+    }
+  };
   auto unfold = [&]() -> bool {
-    std::size_t best = std::size_t(-1);
-    int stalled = 0;
-    for(int round = 0; round < 8; ++round) {
-      z = big_of(y);
-      std::vector<char> stiffen(nf, 0);
-      std::size_t count = 0;
-      for(std::size_t f = 0; f < nf; ++f) count += folded(f);
-      if(count == 0) return true;
-      stalled = count < best ? 0 : stalled + 1;
-      best = (std::min)(best, count);
-      if(stalled >= 2) return true;
-      for(std::size_t f = 0; f < nf; ++f) {
-        if(!folded(f)) continue;
-        int x = m.face_halfedge[f];
-        for(int i = 0; i < 3; ++i, x = m.next[std::size_t(x)]) {   // the faces around its corners
-          int g = m.vertex_out[std::size_t(m.source(x))], g0 = g;
-          do { if(m.face[std::size_t(g)] >= 0) stiffen[std::size_t(m.face[std::size_t(g)])] = 1; g = m.ccw_out(g); } while(g != g0);
+    z = big_of(y);   // the unstiffened system, as factored
+    for(int phase = 0; phase < 2; ++phase) {
+      std::size_t best = std::size_t(-1);
+      int stalled = 0;
+      for(int round = 0; round < 8; ++round) {
+        std::vector<char> stiffen(nf, 0);
+        std::vector<std::size_t> folded_faces;
+        for(std::size_t f = 0; f < nf; ++f) if(folded(f)) folded_faces.push_back(f);
+        const std::size_t count = folded_faces.size();
+        if(count == 0) return true;
+        stalled = count < best ? 0 : stalled + 1;
+        best = (std::min)(best, count);
+        if(stalled >= 2) break;
+        for(std::size_t f : folded_faces) {
+          int x = m.face_halfedge[f];
+          for(int i = 0; i < 3; ++i, x = m.next[std::size_t(x)]) {   // the faces around its corners
+            int g = m.vertex_out[std::size_t(m.source(x))], g0 = g;
+            do { if(m.face[std::size_t(g)] >= 0) stiffen[std::size_t(m.face[std::size_t(g)])] = 1; g = m.ccw_out(g); } while(g != g0);
+          }
+        }
+        std::vector<std::size_t> stiffened;
+        std::vector<double> before;
+        for(std::size_t f = 0; f < nf; ++f)
+          if(stiffen[f]) { stiffened.push_back(f); before.push_back(stiffness[f]); stiffness[f] *= 3; }
+        ++st.stiffening_rounds;
+        restiffen(stiffened, before);
+        std::string msg;
+        if(phase == 0) {
+          free_near(folded_faces);
+          if(!internal::resolve_on_region(A, nb, Eigen::VectorXd(gb - Hbs * y), free_col, z, msg)) { st.message = msg; return false; }
+        } else {
+          if(!A.isCompressed()) A.makeCompressed();
+          if(!chol.factor(A, nb, msg)) { st.message = "the map's system could not be factored: " + msg; return false; }
+          z = big_of(y);
         }
       }
-      std::vector<std::size_t> stiffened;
-      std::vector<double> before;
-      for(std::size_t f = 0; f < nf; ++f)
-        if(stiffen[f]) { stiffened.push_back(f); before.push_back(stiffness[f]); stiffness[f] *= 3; }
-      ++st.stiffening_rounds;
-      if(!restiffen(stiffened, before)) return false;
     }
-    z = big_of(y);
     return true;
   };
   // M = N (N^T S N)^-1 N^T, N a basis of the conditions' null space (the top-left block of the
@@ -507,7 +534,6 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
     }
     y[k] = std::round(y[k]);
   }
-  if(!unfold()) { if(st.message.empty()) st.message = "the stiffened system could not be solved"; return st; }
   // 9. the vertex unknowns, the corners' images and the read-back
   auto folds = [&]() {
     std::size_t n = 0;
@@ -529,15 +555,15 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
     }
     return energy / target_norm;
   };
-  {
-    Eigen::VectorXd yi = y;
+  {   // the seamless map, before the stiffening changes the system
+    const Eigen::VectorXd yi = y;
     y = y_seamless;
     z = big_of(y);
     st.seamless_energy = map_energy();
     st.seamless_folded_triangles = folds();
     y = yi;
   }
-  z = big_of(y);
+  if(!unfold()) { if(st.message.empty()) st.message = "the stiffened system could not be solved"; return st; }
   st.integer_energy = map_energy();
   st.min_area_ratio = std::numeric_limits<double>::infinity();
   for(std::size_t f = 0; f < nf; ++f) {
