@@ -172,11 +172,12 @@ Json run_remesh(const Args& args)
   double metric_s = 0, compensation_s = 0;
   Json metric = Json::object();
   double h = 1;   // the grid's edge length under the metric (1: an integer-grid map's own units)
-  // 2. develop the metric, tessellate it and read the remesh back (throws Failed_result when the
-  // remesh fails; automatic cones try again with other cones then)
+  // once the metric is made: step 2 (throws Failed_result when the remesh fails; automatic cones
+  // then try other cones)
   auto finish = [&]() {
     out["metric"] = metric;
-    // 2. develop and tessellate; with --faces, the admissible edge length nearest to the request
+    // 2. develop and tessellate, read the remesh back; with --faces, the admissible edge length
+    // nearest to the request
     stage("development and tessellation");
     const auto dev = on_file(file, [&] { return SMDF::develop_flat_metric(*surface, SMDF::parameters::edge_length_map(lengths)); });
     Mesh remesh;
