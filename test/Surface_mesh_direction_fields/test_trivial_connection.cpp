@@ -468,6 +468,23 @@ void two_domain_solver()
   }
 }
 
+// The lower triangle of a weighted Laplacian of an nx x ny periodic grid, anchored at vertex 0
+// (positive definite): the vertex block of the map factor's tests.
+std::vector<Eigen::Triplet<double>> periodic_grid_laplacian(int nx, int ny)
+{
+  std::vector<Eigen::Triplet<double>> t;
+  for(int i = 0; i < nx; ++i)
+    for(int j = 0; j < ny; ++j) {
+      const int v = i * ny + j, right = ((i + 1) % nx) * ny + j, up = i * ny + (j + 1) % ny;
+      for(int e : {right, up}) {
+        const double w = 1 + 0.5 * std::sin(0.3 * v + e);
+        t.emplace_back(v, v, w); t.emplace_back(e, e, w); t.emplace_back((std::max)(v, e), (std::min)(v, e), -w);
+      }
+    }
+  t.emplace_back(0, 0, 1.);
+  return t;
+}
+
 // The integer-grid map's factorisation (internal/Integer_grid_map/map_factor.h): a bordered SPD
 // matrix [Hbb Hbs; Hbs^T Hss], a periodic grid for the vertex block (split in two domains) and
 // small unknowns each coupled to scattered vertices, factored with the small unknowns last. Its
@@ -482,16 +499,7 @@ void map_factor_schur()
   std::mt19937 rng(11);
   for(int variant = 0; variant < 3; ++variant) {   // 2: no small unknown at all
     const int nx = variant == 0 ? 90 : 4, ny = variant == 0 ? 60 : 4, nb = nx * ny, ns = variant == 2 ? 0 : 24;
-    std::vector<T> tb;
-    for(int i = 0; i < nx; ++i)
-      for(int j = 0; j < ny; ++j) {
-        const int v = i * ny + j, right = ((i + 1) % nx) * ny + j, up = i * ny + (j + 1) % ny;
-        for(int e : {right, up}) {
-          const double w = 1 + 0.5 * std::sin(0.3 * v + e);
-          tb.emplace_back(v, v, w); tb.emplace_back(e, e, w); tb.emplace_back((std::max)(v, e), (std::min)(v, e), -w);
-        }
-      }
-    tb.emplace_back(0, 0, 1.);   // anchored: Hbb positive definite
+    std::vector<T> tb = periodic_grid_laplacian(nx, ny);
     std::vector<T> ts;   // Hbs (rows vertices, columns small unknowns): each small unknown a few vertices
     for(int k = 0; k < ns; ++k)
       for(int c = 0; c < 12; ++c) {
@@ -544,16 +552,7 @@ void resolve_on_region()
   namespace SI = SMDF::internal;
   typedef Eigen::Triplet<double> T;
   const int nx = 30, ny = 20, nb = nx * ny, ns = 6;
-  std::vector<T> t;
-  for(int i = 0; i < nx; ++i)
-    for(int j = 0; j < ny; ++j) {
-      const int v = i * ny + j, right = ((i + 1) % nx) * ny + j, up = i * ny + (j + 1) % ny;
-      for(int e : {right, up}) {
-        const double w = 1 + 0.5 * std::sin(0.3 * v + e);
-        t.emplace_back(v, v, w); t.emplace_back(e, e, w); t.emplace_back((std::max)(v, e), (std::min)(v, e), -w);
-      }
-    }
-  t.emplace_back(0, 0, 1.);
+  std::vector<T> t = periodic_grid_laplacian(nx, ny);
   std::vector<T> vertex_block = t;
   for(int k = 0; k < ns; ++k) { t.emplace_back(nb + k, 7 * k + 3, -0.4); t.emplace_back(nb + k, nb + k, 5.); }
   SI::Map_factor::Matrix A(nb + ns, nb + ns);
