@@ -152,8 +152,9 @@ static void BM_delaunay_refinement(benchmark::State& state)
 // N = faces / 5 quads (100k faces -> 20k quads). The base mesh is $SMDF_REMESH_BENCH_MESH, else
 // the shared bunny_bff.obj (closed, genus 0, 28,576 faces; the feline of the other benchmarks
 // takes over 500 cones, past smdf's default maximum), decimated or Loop-subdivided to each size.
-// As smdf, a metric the input's edges cannot carry is computed on their conforming Delaunay
-// refinement (counter `refined`, the fraction of runs); smdf's other fallbacks (intrinsic flips,
+// A metric the input's edges cannot carry is computed on their conforming Delaunay refinement
+// (counter `refined`, the fraction of runs), as smdf does with --uv-out (without it, smdf now
+// takes the placement's intrinsic triangulation and its common subdivision instead); smdf's other fallbacks (intrinsic flips,
 // further placements with the cones at other spacings, untangling) are not run: a size that needs
 // them reports read_back_ok 0 and the stage it failed in.
 // Counters: placement_s, cone_metric_s (with the refinement), cross_field_s,

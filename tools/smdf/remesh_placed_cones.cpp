@@ -86,7 +86,7 @@ namespace {
 Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, Mesh& refined, Intrinsic_surface& intrinsic, Mesh*& surface, double requested_h,
                                           long requested_faces, double distortion_bound, long max_cones, double cone_spacing, Json& out,
                                           Json& metric, const std::function<void(const char*)>& stage, std::size_t& cones,
-                                          std::vector<std::string>& placements, bool& repeated)
+                                          std::vector<std::string>& placements, bool& repeated, bool keep_input_faces)
 {
   Edge_length_property lengths;
   // cones placed for low distortion, their flat cone metric on the input's edges, the cross
@@ -103,7 +103,7 @@ Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, M
   // interior cones at least one grid edge from the boundary where the placement can (closer, the
   // rounding puts their grid point on the boundary's line or across it and the map folds)
   const double boundary_spacing = (std::max)(cone_spacing, 1.);
-  const auto ps = on_file(file, [&] {
+  auto ps = on_file(file, [&] {
     return SMDF::place_remeshing_cones(mesh, placed, SMDF::parameters::symmetry_order(4).distortion_bound(distortion_bound)
                                                          .maximum_number_of_cones(int(max_cones))
                                                          .minimum_cone_distance(cone_spacing * h_input)
@@ -166,6 +166,19 @@ Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, M
     lengths = mesh.add_property_map<edge_descriptor, double>("e:smdf_remesh_length", 0.).first;
     for(edge_descriptor e : edges(mesh)) lengths[e] = placed[e];
     cm = ps.metric;
+  } else if(ps.metric.converged && !keep_input_faces && ps.metric.intrinsic_triangulation.has_common_subdivision()) {
+    // it needed flips: the map and the grid are made on its intrinsic triangulation and brought
+    // back through the common subdivision it already has (a second flow on the Delaunay
+    // refinement was 12 s of a 1M-face run)
+    intrinsic.triangulation = std::move(ps.metric.intrinsic_triangulation);
+    cm = ps.metric;
+    CGAL::clear(intrinsic.mesh);
+    lengths = intrinsic.mesh.add_property_map<edge_descriptor, double>("e:smdf_remesh_length", 0.).first;
+    SMDF::copy_intrinsic_triangulation(intrinsic.triangulation, mesh, intrinsic.mesh, lengths);
+    intrinsic.of = &mesh;
+    surface = &intrinsic.mesh;
+    metric["intrinsic_edge_flips"] = cm.edge_flips;
+    metric["intrinsic_triangulation"] = true;
   } else if(ps.metric.converged) {
     // it needed flips: the flow without them stalled on the input's edges, as it would again
     cm.message = "the flat cone metric of the placed cones needs intrinsic flips on the input's edges";
@@ -286,7 +299,7 @@ Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, M
 Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Mesh& refined, Intrinsic_surface& intrinsic, Mesh*& surface, double requested_h,
                                          long requested_faces, double distortion_bound, long max_cones, double cone_spacing, Json& out, Json& metric,
                                          const std::function<void(const char*)>& stage,
-                                         const std::function<void(Edge_length_property)>& finish)
+                                         const std::function<void(Edge_length_property)>& finish, bool keep_input_faces)
 {
   const SMDF::Mesh_topology<Mesh> topo = SMDF::mesh_topology(mesh);
   if(topo.components.size() != 1)
@@ -317,7 +330,7 @@ Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Me
       CGAL::clear(refined);   // the refinement of a previous attempt, made for other cones
       intrinsic.of = nullptr;
       Edge_length_property l = placed_cones_attempt(file, mesh, refined, intrinsic, surface, requested_h, requested_faces, distortion_bound, max_cones,
-                                                    spacings[i], out, metric, stage, cones, placements, repeated);
+                                                    spacings[i], out, metric, stage, cones, placements, repeated, keep_input_faces);
       a["cones"] = cones;
       a["message"] = "";
       a["stage_timings"] = out["stage_timings"];

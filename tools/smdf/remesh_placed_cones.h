@@ -61,12 +61,14 @@ SMDF::Cone_metric_status intrinsic_cone_metric(const std::string& file, Mesh& ba
 // Cones are kept `cone_spacing` grid edges apart where the placement can (measured on the input);
 // a negative `cone_spacing` tries 4, 2, 0 and 6 in turn. `finish` tessellates the map and reads
 // the remesh back (it throws Failed_result when the remesh fails): an attempt whose map or
-// remesh fails is followed by the next spacing, each recorded in placement_attempts.
-// Throws Failed_result (exit 3) when the last attempt fails.
+// remesh fails is followed by the next spacing, each recorded in placement_attempts. A metric
+// that needed intrinsic flips is used on its intrinsic triangulation, unless `keep_input_faces`
+// (--uv-out: the map must lie on the input's faces or its refinement's) asks for the conforming
+// Delaunay refinement first. Throws Failed_result (exit 3) when the last attempt fails.
 Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Mesh& refined, Intrinsic_surface& intrinsic, Mesh*& surface, double requested_h,
                                          long requested_faces, double distortion_bound, long max_cones, double cone_spacing, Json& out, Json& metric,
                                          const std::function<void(const char*)>& stage,
-                                         const std::function<void(Edge_length_property)>& finish);
+                                         const std::function<void(Edge_length_property)>& finish, bool keep_input_faces);
 
 // Writes the integer-grid map made by placed_cones_metric() on `on` (the input, or its
 // refinement) as OBJ: the vertices, one `vt` per face corner (grid units), faces `v/vt`.
