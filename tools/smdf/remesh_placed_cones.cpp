@@ -47,6 +47,24 @@ bool embedding_fits_quads(const Mesh& mesh)
   return true;
 }
 
+namespace {
+
+// Makes `surface` and `lengths` the copy of the intrinsic triangulation `it` (of `base`, its
+// common subdivision built), kept in `intrinsic` for placing the remesh back on `base`.
+void use_intrinsic_triangulation(SMDF::Intrinsic_triangulation&& it, Mesh& base, Intrinsic_surface& intrinsic, Mesh*& surface,
+                                 Edge_length_property& lengths, Json& metric)
+{
+  intrinsic.triangulation = std::move(it);
+  CGAL::clear(intrinsic.mesh);
+  lengths = intrinsic.mesh.add_property_map<edge_descriptor, double>("e:smdf_remesh_length", 0.).first;
+  SMDF::copy_intrinsic_triangulation(intrinsic.triangulation, base, intrinsic.mesh, lengths);
+  intrinsic.of = &base;
+  surface = &intrinsic.mesh;
+  metric["intrinsic_triangulation"] = true;
+}
+
+} // namespace
+
 SMDF::Cone_metric_status intrinsic_cone_metric(const std::string& file, Mesh& base, const std::vector<std::pair<vertex_descriptor, double>>& curvatures,
                                                const std::string& without_flips, Intrinsic_surface& intrinsic, Mesh*& surface,
                                                Edge_length_property& lengths, Json& metric)
@@ -70,13 +88,7 @@ SMDF::Cone_metric_status intrinsic_cone_metric(const std::string& file, Mesh& ba
     cm.message = "the metric needed intrinsic flips and its correspondence with the surface failed: " + cm.correspondence_message;
     return cm;
   }
-  intrinsic.triangulation = std::move(cm.intrinsic_triangulation);
-  CGAL::clear(intrinsic.mesh);
-  lengths = intrinsic.mesh.add_property_map<edge_descriptor, double>("e:smdf_remesh_length", 0.).first;
-  SMDF::copy_intrinsic_triangulation(intrinsic.triangulation, base, intrinsic.mesh, lengths);
-  intrinsic.of = &base;
-  surface = &intrinsic.mesh;
-  metric["intrinsic_triangulation"] = true;
+  use_intrinsic_triangulation(std::move(cm.intrinsic_triangulation), base, intrinsic, surface, lengths, metric);
   return cm;
 }
 
@@ -170,15 +182,9 @@ Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, M
     // it needed flips: the map and the grid are made on its intrinsic triangulation and brought
     // back through the common subdivision it already has (a second flow on the Delaunay
     // refinement was 12 s of a 1M-face run)
-    intrinsic.triangulation = std::move(ps.metric.intrinsic_triangulation);
+    use_intrinsic_triangulation(std::move(ps.metric.intrinsic_triangulation), mesh, intrinsic, surface, lengths, metric);
     cm = ps.metric;
-    CGAL::clear(intrinsic.mesh);
-    lengths = intrinsic.mesh.add_property_map<edge_descriptor, double>("e:smdf_remesh_length", 0.).first;
-    SMDF::copy_intrinsic_triangulation(intrinsic.triangulation, mesh, intrinsic.mesh, lengths);
-    intrinsic.of = &mesh;
-    surface = &intrinsic.mesh;
     metric["intrinsic_edge_flips"] = cm.edge_flips;
-    metric["intrinsic_triangulation"] = true;
   } else if(ps.metric.converged) {
     // it needed flips: the flow without them stalled on the input's edges, as it would again
     cm.message = "the flat cone metric of the placed cones needs intrinsic flips on the input's edges";
