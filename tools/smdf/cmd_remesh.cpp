@@ -675,7 +675,7 @@ Command remesh_command()
           "an earlier one is skipped), stage_timings (the last\n"
           "attempt's: placement_s, cone_metric_s, cross_field_s, integer_grid_map_s) and integer_grid_map:\n"
           "{success, message, singularities, seams, boundary_corners, boundary_lines, rounded_values, folded_triangles,\n"
-          "stiffening_rounds, seamless_energy, seamless_folded_triangles (before rounding), integer_energy,\n"
+          "winding_faults (vertices the map wraps around wrongly), stiffening_rounds, seamless_energy, seamless_folded_triangles (before rounding), integer_energy,\n"
           "min_area_ratio}. An attempt whose placement takes --max-cones cones or more fails at once\n"
           "(the map's time grows as their cube).\n",
           run_remesh};

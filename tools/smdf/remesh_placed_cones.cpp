@@ -281,6 +281,7 @@ Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, M
   ig["boundary_lines"] = gs.boundary_lines;
   ig["rounded_values"] = gs.rounded;
   ig["folded_triangles"] = gs.folded_triangles;
+  ig["winding_faults"] = gs.winding_faults;
   ig["stiffening_rounds"] = gs.stiffening_rounds;
   ig["seamless_energy"] = gs.seamless_energy;
   ig["seamless_folded_triangles"] = gs.seamless_folded_triangles;   // before rounding

@@ -20,6 +20,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/map_factor.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/seam_layout.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/small_conditions.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/winding.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
@@ -52,6 +53,10 @@ struct Integer_grid_map_status
   /// triangles whose image is folded (clockwise) or degenerate; success requires none
   std::size_t folded_triangles = 0;
   std::size_t seamless_folded_triangles = 0;   ///< the same count for the seamless map, before rounding
+  /// vertices around which the map winds otherwise than the field asks, with no triangle folded
+  /// there: a branch point, or the boundary folding back along its grid line at a vertex that is
+  /// no corner; success requires none
+  std::size_t winding_faults = 0;
   int stiffening_rounds = 0;   ///< re-solves with the faces around folded ones weighted more
   /// boundary vertices where the boundary turns (by a multiple of \f$\pi/2\f$ under the metric):
   /// integer points of the map, in vertex order, with the quarter turns there
@@ -406,6 +411,8 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
       if(big_dir[std::size_t(big[v])] == Cplx(0, 0)) free_col[std::size_t(col) + 1] = 1;
     }
   };
+  const std::vector<double> expected_angle = internal::map_angle_sums_expected(m, seams);
+  auto image = [&](int x) { return value(corner[std::size_t(x)]); };
   auto unfold = [&]() -> bool {
     z = big_of(y);   // the unstiffened system, as factored
     for(int phase = 0; phase < 2; ++phase) {
@@ -415,6 +422,11 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
         std::vector<char> stiffen(nf, 0);
         std::vector<std::size_t> folded_faces;
         for(std::size_t f = 0; f < nf; ++f) if(folded(f)) folded_faces.push_back(f);
+        if(folded_faces.empty())   // counterclockwise everywhere: the faces around a misfolded vertex
+          for(int v : internal::winding_faults(m, expected_angle, image)) {
+            int g = m.vertex_out[std::size_t(v)], g0 = g;
+            do { if(m.face[std::size_t(g)] >= 0) folded_faces.push_back(std::size_t(m.face[std::size_t(g)])); g = m.ccw_out(g); } while(g != g0);
+          }
         const std::size_t count = folded_faces.size();
         if(count == 0) return true;
         stalled = count < best ? 0 : stalled + 1;
@@ -579,10 +591,14 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
     st.min_area_ratio = (std::min)(st.min_area_ratio, ratio);
     if(!(a > 0)) ++st.folded_triangles;
   }
-  st.success = st.folded_triangles == 0;
-  if(!st.success)
+  if(st.folded_triangles == 0) st.winding_faults = internal::winding_faults(m, expected_angle, image).size();
+  st.success = st.folded_triangles == 0 && st.winding_faults == 0;
+  if(st.folded_triangles > 0)
     st.message = std::to_string(st.folded_triangles) + " triangles are folded by the integer-grid map (singularities or seams "
                  "closer than about one grid unit: try a smaller edge length)";
+  else if(st.winding_faults > 0)
+    st.message = "the integer-grid map winds around " + std::to_string(st.winding_faults) + " vertices otherwise than the field asks "
+                 "(the boundary folds back along a grid line, or a branch point), with no triangle folded: try a smaller edge length";
   return st;
 }
 
