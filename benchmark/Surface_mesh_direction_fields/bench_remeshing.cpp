@@ -17,8 +17,10 @@
 #include <CGAL/Surface_mesh_direction_fields/flat_development.h>
 #include <CGAL/Surface_mesh_direction_fields/grid_tessellation.h>
 #include <CGAL/Surface_mesh_direction_fields/integer_grid_map.h>
+#include <CGAL/Surface_mesh_direction_fields/Intrinsic_triangulation.h>
 #include <CGAL/Surface_mesh_direction_fields/intrinsic_triangle.h>
 #include <CGAL/Surface_mesh_direction_fields/remeshing_cones.h>
+#include <CGAL/Surface_mesh_direction_fields/tessellation_on_input.h>
 #include <CGAL/Surface_mesh_direction_fields/topology.h>
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
@@ -284,12 +286,20 @@ void run_automatic_remesh(benchmark::State& state, const smdf_bench::Bench_mesh*
       return SMDF::compute_cone_metric(m, target, lengths, SMDF::parameters::intrinsic_edge_flips(false));
     };
     Mesh::Property_map<Edge, double> lengths;
-    // as smdf: the placement's read-back is the metric when it needed no flip
+    // as smdf: the placement's read-back is the metric; when it needed flips, on its intrinsic
+    // triangulation (a copy as a mesh), the remesh brought back through the common subdivision
     SMDF::Cone_metric_status cm;
+    Mesh intrinsic;
+    const bool on_intrinsic = ps.metric.converged && ps.metric.triangulation_changed && ps.metric.intrinsic_triangulation.has_common_subdivision();
     if(ps.metric.converged && !ps.metric.triangulation_changed) {
       lengths = placed;
-      cm = ps.metric;
-    } else if(!ps.metric.converged) {   // else it needed flips: without them it stalls again
+      cm.converged = true;
+    } else if(on_intrinsic) {
+      lengths = intrinsic.add_property_map<Edge, double>("e:bench_lengths", 0.).first;
+      SMDF::copy_intrinsic_triangulation(ps.metric.intrinsic_triangulation, work, intrinsic, lengths);
+      on = &intrinsic;
+      cm.converged = true;
+    } else if(!ps.metric.converged) {   // else the correspondence failed: on the input's edges, or its refinement
       cm = metric_on(work, lengths);
     }
     if(!cm.converged) {
@@ -333,6 +343,7 @@ void run_automatic_remesh(benchmark::State& state, const smdf_bench::Bench_mesh*
     Mesh out;
     const auto dev = SMDF::develop_flat_metric(m, SMDF::parameters::edge_length_map(lengths));
     const SMDF::Grid_tessellation_status st = SMDF::tessellate_flat_metric(m, dev, SMDF::SQUARE_GRID, 1., out);
+    if(on_intrinsic && num_faces(out) > 0) SMDF::place_tessellation_on_input(ps.metric.intrinsic_triangulation, work, st, out);
     tessellation_s += seconds_since(t0);
     quads = st.faces;
     if(!st.success || st.inverted_faces > 0) { ok = false; failure = "tessellation: " + st.message; }

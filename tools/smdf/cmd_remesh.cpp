@@ -151,10 +151,11 @@ Json run_remesh(const Args& args)
                   " and " + std::to_string(topo.boundary_loops.size()) + " boundary loop(s) [invalid_input]");
   }
   Json out = Json::object();
+  const Input_faces_tree input_tree(mesh);   // for the read-backs of every attempt
   // Every route's last read-back, stricter than the library's normals under the corners: no face
   // whose normal opposes the input's at the input point nearest its centroid.
   auto check_flipped_faces = [&](const Mesh& remesh, bool& success, std::string& failure) {
-    const std::size_t flipped = faces_flipped_at_closest_point(mesh, remesh);
+    const std::size_t flipped = faces_flipped_at_closest_point(input_tree, remesh);
     out["flipped_faces"] = flipped;
     if(flipped > 0 && success) {
       success = false;
@@ -199,7 +200,7 @@ Json run_remesh(const Args& args)
       // common subdivision, and the faces inverted there are counted again (the tessellation saw
       // the intrinsic triangles' chords)
       SMDF::place_tessellation_on_input(intrinsic.triangulation, *intrinsic.of, st, remesh);
-      if(st.inverted_faces == 0) st.inverted_faces = faces_flipped_at_closest_point(mesh, remesh);
+      if(st.inverted_faces == 0) st.inverted_faces = faces_flipped_at_closest_point(input_tree, remesh);
     }
     const double tessellation_s = clock.lap();
     out["edge_length"] = h;
@@ -265,7 +266,7 @@ Json run_remesh(const Args& args)
         }
       }
       // (the integer-grid map's grid edge is 1 in its own units: on the surface, the mean quad's side)
-      out["distance_over_edge_length"] = remesh_distances(mesh, remesh, place ? std::sqrt(CGAL::Polygon_mesh_processing::area(mesh) / double(num_faces(remesh))) : h);
+      out["distance_over_edge_length"] = remesh_distances(input_tree, remesh, place ? std::sqrt(CGAL::Polygon_mesh_processing::area(mesh) / double(num_faces(remesh))) : h);
       out["area_ratio"] = remesh_area_ratio(mesh, remesh);
       if(!CGAL::IO::write_polygon_mesh(out_file, remesh, CGAL::parameters::stream_precision(17)))
         throw file_error(out_file, "cannot write the remesh (the extension must be .off or .obj)", "output");
@@ -498,7 +499,7 @@ Json run_remesh(const Args& args)
         out["inverted_faces"] = inverted;
         check_flipped_faces(remesh, success, failure);
         out["quality"] = remesh_quality(remesh);
-        out["distance_over_edge_length"] = remesh_distances(mesh, remesh, side / n);
+        out["distance_over_edge_length"] = remesh_distances(input_tree, remesh, side / n);
         out["area_ratio"] = remesh_area_ratio(mesh, remesh);
         if(!CGAL::IO::write_polygon_mesh(out_file, remesh, CGAL::parameters::stream_precision(17)))
           throw file_error(out_file, "cannot write the remesh (the extension must be .off or .obj)", "output");

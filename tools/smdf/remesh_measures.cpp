@@ -74,14 +74,33 @@ std::size_t nonconvex_quads(const Mesh& out)
   return nonconvex;
 }
 
-// Two-sided distance between input and remesh, over the edge length: output vertices to the
-// input surface, input vertices to the remesh (its faces fanned into triangles).
-std::size_t faces_flipped_at_closest_point(const Mesh& input, const Mesh& out)
+namespace {
+typedef CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_face_graph_triangle_primitive<Mesh>>> Face_tree;
+}
+
+struct Input_faces_tree::Tree
 {
-  typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
-  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> Tree;
+  explicit Tree(const Mesh& m) : tree(faces(m).first, faces(m).second, m) { tree.accelerate_distance_queries(); }
+  Face_tree tree;
+};
+
+Input_faces_tree::Input_faces_tree(const Mesh& input) : input_(input) {}
+Input_faces_tree::~Input_faces_tree() = default;
+
+const Input_faces_tree::Tree& Input_faces_tree::tree() const
+{
+  if(!tree_) tree_.reset(new Tree(input_));
+  return *tree_;
+}
+
+face_descriptor Input_faces_tree::closest_face(const K::Point_3& p) const { return tree().tree.closest_point_and_primitive(p).second; }
+
+double Input_faces_tree::squared_distance(const K::Point_3& p) const { return tree().tree.squared_distance(p); }
+
+std::size_t faces_flipped_at_closest_point(const Input_faces_tree& tree, const Mesh& out)
+{
+  const Mesh& input = tree.mesh();
   if(num_faces(input) == 0) return 0;
-  const Tree tree(faces(input).first, faces(input).second, input);
   std::size_t flipped = 0;
   std::vector<K::Point_3> corners;
   for(face_descriptor f : faces(out)) {
@@ -93,7 +112,7 @@ std::size_t faces_flipped_at_closest_point(const Mesh& input, const Mesh& out)
     const K::Point_3 centroid(c[0] / k, c[1] / k, c[2] / k);
     K::Vector_3 area(0, 0, 0);   // the polygon's area vector (fan from its first corner)
     for(std::size_t i = 1; i + 1 < corners.size(); ++i) area = area + CGAL::cross_product(corners[i] - corners[0], corners[i + 1] - corners[0]);
-    const face_descriptor near = tree.closest_point_and_primitive(centroid).second;
+    const face_descriptor near = tree.closest_face(centroid);
     const halfedge_descriptor g = halfedge(near, input);
     const K::Vector_3 n = CGAL::cross_product(input.point(target(g, input)) - input.point(source(g, input)),
                                               input.point(target(next(g, input), input)) - input.point(source(g, input)));
@@ -102,10 +121,11 @@ std::size_t faces_flipped_at_closest_point(const Mesh& input, const Mesh& out)
   return flipped;
 }
 
-Json remesh_distances(const Mesh& input, const Mesh& out, double h)
+// Two-sided distance between input and remesh, over the edge length: output vertices to the
+// input surface, input vertices to the remesh (its faces fanned into triangles).
+Json remesh_distances(const Input_faces_tree& input_tree, const Mesh& out, double h)
 {
-  typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
-  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> Tree;
+  const Mesh& input = input_tree.mesh();
   Mesh fan;
   for(vertex_descriptor v : vertices(out)) fan.add_vertex(out.point(v));
   std::vector<vertex_descriptor> vs;
@@ -114,16 +134,12 @@ Json remesh_distances(const Mesh& input, const Mesh& out, double h)
     for(halfedge_descriptor hh : CGAL::halfedges_around_face(halfedge(f, out), out)) vs.push_back(target(hh, out));
     for(std::size_t i = 1; i + 1 < vs.size(); ++i) fan.add_face(vs[0], vs[i], vs[i + 1]);
   }
-  // largest distance from `points` to the surface of `to`
-  // largest distance from `points` to the surface of `to` (and in `first`, from the first
-  // `split` of them)
-  auto farthest = [](const std::vector<K::Point_3>& points, const Mesh& to, std::size_t split, double& first) {
+  // largest distance from `points` to a surface (and in `first`, from the first `split` of them)
+  auto farthest = [](const std::vector<K::Point_3>& points, const auto& squared_distance, std::size_t split, double& first) {
     first = 0;
-    if(num_faces(to) == 0) return 0.;
-    Tree tree(faces(to).first, faces(to).second, to);
     double d = 0;
     for(std::size_t i = 0; i < points.size(); ++i) {
-      d = (std::max)(d, tree.squared_distance(points[i]));
+      d = (std::max)(d, squared_distance(points[i]));
       if(i + 1 == split) first = std::sqrt(d);
     }
     return std::sqrt(d);
@@ -142,8 +158,16 @@ Json remesh_distances(const Mesh& input, const Mesh& out, double h)
   // the two directions on two threads: at 433k faces several seconds, the largest part of a run
   double d1 = 0, d2 = 0, d1_vertices = 0, unused = 0;
   std::exception_ptr failure;
-  std::thread other([&] { try { d2 = farthest(input_points, fan, 0, unused); } catch(...) { failure = std::current_exception(); } });
-  try { d1 = farthest(remesh_points, input, num_vertices(out), d1_vertices); } catch(...) { other.join(); throw; }
+  std::thread other([&] {
+    try {
+      if(num_faces(fan) == 0) return;
+      const Face_tree fan_tree(faces(fan).first, faces(fan).second, fan);
+      d2 = farthest(input_points, [&](const K::Point_3& p) { return fan_tree.squared_distance(p); }, 0, unused);
+    } catch(...) { failure = std::current_exception(); }
+  });
+  try {
+    if(num_faces(input) > 0) d1 = farthest(remesh_points, [&](const K::Point_3& p) { return input_tree.squared_distance(p); }, num_vertices(out), d1_vertices);
+  } catch(...) { other.join(); throw; }
   other.join();
   if(failure) std::rethrow_exception(failure);
   Json d = Json::object();

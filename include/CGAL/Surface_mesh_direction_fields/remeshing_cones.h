@@ -101,7 +101,9 @@ public:
     Cholmod_cholesky::Matrix A(n, n);
     A.setFromTriplets(t.begin(), t.end());
     A.makeCompressed();
-    ok_ = chol_.factor(A, message);
+    Cholesky_hints hints;
+    hints.many_solves = true;   // one back-substitution per greedy step: simplicial solves are faster
+    ok_ = chol_.factor(A, hints, message);
     if(!ok_) message = "the cotan Laplacian could not be factored: " + message;
     area_.assign(nv, 0.);
     for(std::size_t f = 0; f < m.number_of_faces(); ++f) {
