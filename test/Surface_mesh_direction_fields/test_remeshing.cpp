@@ -16,6 +16,7 @@
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 
 #include <CGAL/Surface_mesh_direction_fields/flat_development.h>
 #include <CGAL/Surface_mesh_direction_fields/grid_tessellation.h>
@@ -1987,6 +1988,70 @@ void seamless_metrics(const std::string& dir)
   // measured: bob and the triple torus move (0.27 and 0.03 rad); the tori and the knot have no cone
   const bool reduced = std::getenv("SMDF_TEST_MAX_FACES") != nullptr;
   SMDF_CHECK(moved >= (reduced ? 0u : 2u));
+
+  // Open meshes with handles or several boundary loops: also a path from the first loop to each
+  // other one, whose turning must be a multiple of pi/2. Read back from a development of the
+  // seamless metric: every border edge's direction there is the same modulo pi/2 (the field
+  // along one boundary runs along all of them), and the curvatures are the placed ones.
+  std::size_t open_runs = 0, open_converged = 0;
+  smdf_test::for_each_shared_mesh<Surface_mesh>(dir, true, [&](const smdf_test::Manifest_entry& e, const Surface_mesh& input) {
+    if(e.F > 40000 || (e.genus == "0" && e.boundary_loops < 2)) return;
+    Surface_mesh mesh = input;
+    auto placed = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:placed", 0.).first;
+    // as smdf's first attempt at 4,000 quads: the cones 4 quad sides apart
+    const double h = std::sqrt(CGAL::Polygon_mesh_processing::area(mesh) / 4000);
+    const auto cs = SMDF::place_remeshing_cones(mesh, placed, SMDF::parameters::minimum_cone_distance(4 * h));
+    auto cone_target = mesh.add_property_map<V, double>("v:target", 0.).first;
+    for(const auto& c : cs.cones) cone_target[c.first] = c.second;
+    auto cl = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:cone", 0.).first;
+    if(!SMDF::compute_cone_metric(mesh, cone_target, cl, SMDF::parameters::intrinsic_edge_flips(false)).converged) return;
+    auto sl = mesh.add_property_map<Surface_mesh::Edge_index, double>("e:seamless", 0.).first;
+    const SMDF::Seamless_metric_status st = SMDF::seamless_cone_metric(mesh, cl, sl);
+    ++open_runs;
+    const std::string what = e.file + " (genus " + e.genus + ", " + std::to_string(e.boundary_loops) + " boundary loops, " +
+                             std::to_string(cs.cones.size()) + " cones and corners)";
+    // the spread, modulo pi/2, of the border edges' directions in a development of metric l
+    auto border_spread = [&](Surface_mesh::Property_map<Surface_mesh::Edge_index, double> l) {
+      const auto dev = SMDF::develop_flat_metric(mesh, SMDF::parameters::edge_length_map(l));
+      const double q = CGAL_PI / 2;
+      double first = -1, worst = 0;
+      for(auto hb : halfedges(mesh)) {
+        if(!is_border(hb, mesh)) continue;
+        const auto x = opposite(hb, mesh);
+        const auto f = face(x, mesh);
+        const auto h0 = halfedge(f, mesh);
+        const int k = x == h0 ? 0 : x == next(h0, mesh) ? 1 : 2;
+        const auto c = dev.corners(f);
+        const double a = std::atan2(c[std::size_t((k + 1) % 3)].y() - c[std::size_t(k)].y(), c[std::size_t((k + 1) % 3)].x() - c[std::size_t(k)].x());
+        const double r = a - q * std::floor(a / q);
+        if(first < 0) first = r;
+        const double d = std::abs(r - first);
+        worst = std::max(worst, std::min(d, q - d));
+      }
+      return worst;
+    };
+    std::cout << what << ": seamless metric " << (st.success ? "converged" : st.message) << ", " << st.loops << " loops and paths, off by "
+              << st.initial_holonomy_error << " -> " << st.holonomy_error << ", border directions spread modulo pi/2 " << border_spread(cl);
+    const std::size_t expected_loops = 2 * std::size_t(std::stoi(e.genus)) + std::size_t(e.boundary_loops) - 1;
+    SMDF_CHECK_MSG(st.loops == expected_loops, what << ": one loop per handle generator and one path per further boundary loop, " << st.loops);
+    if(!st.success) {
+      std::cout << std::endl;
+      bool same = true;
+      for(auto ed : edges(mesh)) same = same && sl[ed] == cl[ed];
+      SMDF_CHECK_MSG(same && !st.message.empty(), what << ": a failed seamless metric leaves the input metric and says why");
+      return;
+    }
+    ++open_converged;
+    const double after = border_spread(sl);
+    std::cout << " -> " << after << std::endl;
+    const SMDF::Intrinsic_mesh<Surface_mesh> im(mesh, SMDF::parameters::edge_length_map(sl));
+    double worst_k = 0;
+    for(auto v : vertices(mesh)) worst_k = std::max(worst_k, std::abs(im.vertex_curvature(v) - cone_target[v]));
+    SMDF_CHECK_MSG(worst_k < 1e-9 && after < 1e-7, what << ": curvatures off the placed ones by " << worst_k << ", border directions by " << after);
+  });
+  std::cout << "open seamless metrics: " << open_converged << " of " << open_runs << " converged" << std::endl;
+  // measured: the annulus converges (0.014 rad); the others need flips (0.3-0.8 rad)
+  SMDF_CHECK(open_runs >= (reduced ? 0u : 3u) && open_converged >= (reduced ? 0u : 1u));
 }
 
 int main(int argc, char** argv)

@@ -218,9 +218,11 @@ Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, M
     throw Failed_result{out, file + ": the flat cone metric of the placed cones converges neither on the input's edges, nor on its Delaunay "
                                  "refinement, nor with intrinsic flips: " + cm.message, 3};
   }
-  // metric compensation, rotational part: the handles' holonomies made multiples of pi/2, so
-  // that the parallel cross field closes and the map can follow the metric exactly
-  if(SMDF::mesh_topology(on).components[0].genus > 0) {
+  // metric compensation, rotational part: the handles' holonomies, and the turning between
+  // boundary loops, made multiples of pi/2, so that the parallel cross field closes and follows
+  // every boundary, and the map can follow the metric exactly
+  const SMDF::Mesh_topology<Mesh> on_topology = SMDF::mesh_topology(on);
+  if(on_topology.components[0].genus > 0 || on_topology.boundary_loops.size() >= 2) {
     stage("seamless metric");
     auto seamless = on.add_property_map<edge_descriptor, double>("e:smdf_remesh_seamless", 0.).first;
     const SMDF::Seamless_metric_status ss = on_file(file, [&] { return SMDF::seamless_cone_metric(on, lengths, seamless); });

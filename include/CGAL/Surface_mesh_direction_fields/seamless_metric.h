@@ -28,11 +28,13 @@ namespace Surface_mesh_direction_fields {
 /// Outcome of seamless_cone_metric().
 struct Seamless_metric_status
 {
-  bool success = false;     ///< every curvature and every handle's holonomy within the tolerance
+  bool success = false;     ///< every curvature, handle holonomy and path turning within the tolerance
   std::string message;      ///< why not
   int iterations = 0;       ///< Newton steps
-  std::size_t loops = 0;    ///< handle loops constrained (\f$2g\f$)
-  /// the largest distance of a handle's holonomy to a multiple of \f$2\pi/N\f$, before and after
+  /// handle loops and boundary paths constrained (\f$2g + \max(b - 1, 0)\f$, \f$b\f$ boundary loops)
+  std::size_t loops = 0;
+  /// the largest distance of a handle's holonomy or a path's turning to a multiple of
+  /// \f$2\pi/N\f$, before and after
   double initial_holonomy_error = 0, holonomy_error = 0;
   double curvature_error = 0;        ///< the largest change of a vertex's curvature from the input metric's
   double max_log_length_change = 0;  ///< \f$\max_e |\log(\ell_e / \ell^0_e)|\f$
@@ -55,8 +57,12 @@ inline double corner_angle_of(double opposite, double a, double b)
 /// same curvature at every vertex (interior angle defect, geodesic curvature on the boundary) and
 /// whose Levi-Civita holonomy around every handle loop (the tree-cotree generators of the package,
 /// the dual cycles of `homology_generators()`) is a multiple of \f$2\pi/N\f$, the multiple nearest
-/// to the input metric's. A cross field (\f$N = 4\f$) parallel in such a metric closes around
-/// every loop, so an integer-grid map made on it can be exactly its development (metric
+/// to the input metric's. On an open mesh with several boundary loops, also the turning along a
+/// path of faces from an edge of the first boundary loop to an edge of each other one (the angle
+/// from the first edge's direction to the second's, transported along the path). A cross field
+/// (\f$N = 4\f$) parallel in such a metric closes around every loop and, along straight
+/// boundaries with corners of multiples of \f$2\pi/N\f$, follows every boundary loop once it
+/// follows one, so an integer-grid map made on it can be exactly its development (metric
 /// compensation, rotational part: Lai et al.'s general holonomy, Campen et al. 2019).
 ///
 /// <b>Method.</b> A handle's holonomy is a sum of corner angles along its dual cycle (the turn
@@ -119,6 +125,57 @@ Seamless_metric_status seamless_cone_metric(const TriangleMesh& tm, const InputL
     const std::size_t n = g.dual.size();
     for(std::size_t k = 0; k < n; ++k) t.push_back({g.dual[k], g.dual[(k + 1) % n] ^ 1});
     loops.push_back(std::move(t));
+  }
+  // Open meshes with several boundary loops: a path of faces from an edge of the first loop to an
+  // edge of each other one, entered by the first and left by the second. A parallel field along
+  // the first loop's edges then lies along the other's only if the path turns by a multiple of
+  // 2 pi / N from one edge to the other; the same sum of turns as a loop's holonomy measures it.
+  {
+    const std::vector<std::vector<int>>& bloops = im.topology_arrays().loops;   // border halfedges
+    if(bloops.size() >= 2) {
+      std::vector<int> parent(nf, -2);   // per face: the halfedge it was entered by (-1: a start face)
+      std::vector<int> queue;
+      for(int hb : bloops[0]) {
+        const int f = m.face[std::size_t(hb ^ 1)];
+        if(parent[std::size_t(f)] == -2) { parent[std::size_t(f)] = -1; queue.push_back(f); }
+      }
+      for(std::size_t q = 0; q < queue.size(); ++q) {
+        int x = m.face_halfedge[std::size_t(queue[q])];
+        for(int i = 0; i < 3; ++i, x = m.next[std::size_t(x)]) {
+          const int g = m.face[std::size_t(x ^ 1)];
+          if(g < 0 || parent[std::size_t(g)] != -2) continue;
+          parent[std::size_t(g)] = x ^ 1;
+          queue.push_back(g);
+        }
+      }
+      std::vector<std::size_t> order(nf, queue.size());   // per face: its place in the search
+      for(std::size_t q = 0; q < queue.size(); ++q) order[std::size_t(queue[q])] = q;
+      auto entry_edge = [&](int f) {   // a start face's halfedge on the first loop
+        int x = m.face_halfedge[std::size_t(f)];
+        for(int i = 0; i < 3; ++i, x = m.next[std::size_t(x)])
+          for(int hb : bloops[0]) if((hb ^ 1) == x) return x;
+        return -1;
+      };
+      for(std::size_t j = 1; j < bloops.size(); ++j) {
+        int end = -1, exit = -1;   // the face reached first among those on loop j, and its edge there
+        std::size_t best = queue.size();
+        for(int hb : bloops[j]) {
+          const int f = m.face[std::size_t(hb ^ 1)];
+          if(order[std::size_t(f)] < best) { best = order[std::size_t(f)]; end = f; exit = hb ^ 1; }
+        }
+        if(end < 0) continue;
+        std::vector<Turn> t;
+        for(int f = end, b = exit;;) {
+          const int a = parent[std::size_t(f)] >= 0 ? parent[std::size_t(f)] : entry_edge(f);
+          t.push_back({a, b});
+          if(parent[std::size_t(f)] < 0) break;
+          b = parent[std::size_t(f)] ^ 1;
+          f = m.face[std::size_t(b)];
+        }
+        std::reverse(t.begin(), t.end());
+        loops.push_back(std::move(t));
+      }
+    }
   }
   st.loops = loops.size();
   std::vector<double> angle(2 * ne, 0.);   // per halfedge with a face: the angle at its source
@@ -194,7 +251,8 @@ Seamless_metric_status seamless_cone_metric(const TriangleMesh& tm, const InputL
   // Newton stalls short of the goal, 20 s on the botijo; below 0.3 it converged on every one
   const double reach = 0.3;
   if(st.initial_holonomy_error > reach) {
-    st.message = "a handle's holonomy is " + std::to_string(st.initial_holonomy_error) + " rad from a multiple of 2 pi / " + std::to_string(N) +
+    st.message = "a handle's holonomy or a path's turning between boundary loops is " + std::to_string(st.initial_holonomy_error) +
+                 " rad from a multiple of 2 pi / " + std::to_string(N) +
                  ", more than the fixed triangulation can move it (" + std::to_string(reach) + " rad; it would need flips)";
     st.min_angle = angles_of(l);
     write();
