@@ -53,9 +53,8 @@ struct Integer_grid_map_status
   /// triangles whose image is folded (clockwise) or degenerate; success requires none
   std::size_t folded_triangles = 0;
   std::size_t seamless_folded_triangles = 0;   ///< the same count for the seamless map, before rounding
-  /// vertices around which the map winds otherwise than the field asks, with no triangle folded
-  /// there: a branch point, or the boundary folding back along its grid line at a vertex that is
-  /// no corner; success requires none
+  /// vertices the map winds around otherwise than the field asks, no triangle folded (a branch
+  /// point, the boundary folding back along its grid line); success requires none
   std::size_t winding_faults = 0;
   int stiffening_rounds = 0;   ///< re-solves with the faces around folded ones weighted more
   /// boundary vertices where the boundary turns (by a multiple of \f$\pi/2\f$ under the metric):
@@ -381,9 +380,10 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
     for(const auto& s : e.small) p += s.second * Cplx(y[2 * s.first], y[2 * s.first + 1]);
     return p;
   };
+  auto image = [&](int x) { return value(corner[std::size_t(x)]); };   // of the corner at source(x)
   auto folded = [&](std::size_t f) {
-    const int x0 = m.face_halfedge[f], x1 = m.next[std::size_t(x0)], x2 = m.next[std::size_t(x1)];
-    const Cplx p0 = value(corner[std::size_t(x0)]), p1 = value(corner[std::size_t(x1)]), p2 = value(corner[std::size_t(x2)]);
+    const int x0 = m.face_halfedge[f];
+    const Cplx p0 = image(x0), p1 = image(m.next[std::size_t(x0)]), p2 = image(m.prev(x0));
     return !((p1 - p0).real() * (p2 - p0).imag() - (p1 - p0).imag() * (p2 - p0).real() > 0);
   };
   // local stiffening of the integer map (its small unknowns fixed, only the vertices move): the
@@ -392,12 +392,9 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   // only the vertices within 8 grid units (and 2 rings) of the triangles folded so far, the others
   // held (local_resolve.h): the stiffening's effect is mostly local, and a factorisation of the
   // whole system per round was most of the map's time at 457k faces (4 rounds, 1.5-2 s each).
-  // If triangles still fold, the whole system is factored again each round (the shared meshes at
-  // 4,000 and 12,000 quads: 42 of 56 valid with local rounds alone, 43 with whole ones alone;
-  // radius 4: 41).
-  // The seamless map is not stiffened: each round there needed a new Schur complement (1.3 s of
-  // the botijo's 5.5 s map at 20,000 quads, 3 rounds) and the shared meshes remesh as well or
-  // better without it (4,000 quads: 15 of 20 valid instead of 14; 20,000: 16 of 20 either way)
+  // If triangles still fold, the whole system is factored again each round (measured in the
+  // manual). The seamless map is not stiffened: each round there needed a new Schur complement
+  // and the shared meshes remeshed no better with it.
   std::vector<char> free_vertex(nv, 0), free_col(std::size_t(nb), 0);
   std::vector<double> reach(nv, std::numeric_limits<double>::infinity());
   std::vector<int> hops(nv, 0);
@@ -412,7 +409,6 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
     }
   };
   const std::vector<double> expected_angle = internal::map_angle_sums_expected(m, seams);
-  auto image = [&](int x) { return value(corner[std::size_t(x)]); };
   auto unfold = [&]() -> bool {
     z = big_of(y);   // the unstiffened system, as factored
     for(int phase = 0; phase < 2; ++phase) {
@@ -423,10 +419,7 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
         std::vector<std::size_t> folded_faces;
         for(std::size_t f = 0; f < nf; ++f) if(folded(f)) folded_faces.push_back(f);
         if(folded_faces.empty())   // counterclockwise everywhere: the faces around a misfolded vertex
-          for(int v : internal::winding_faults(m, expected_angle, image)) {
-            int g = m.vertex_out[std::size_t(v)], g0 = g;
-            do { if(m.face[std::size_t(g)] >= 0) folded_faces.push_back(std::size_t(m.face[std::size_t(g)])); g = m.ccw_out(g); } while(g != g0);
-          }
+          folded_faces = internal::faces_around(m, internal::winding_faults(m, expected_angle, image));
         const std::size_t count = folded_faces.size();
         if(count == 0) return true;
         stalled = count < best ? 0 : stalled + 1;
@@ -586,17 +579,15 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
       put(uv_map, m.halfedge_descriptor_of(x, tm), std::array<double, 2>{{p.real(), p.imag()}});
     }
     const double a = 0.5 * ((p1 - p0).real() * (p2 - p0).imag() - (p1 - p0).imag() * (p2 - p0).real());
-    const double s = scale(int(f));
-    const double ratio = a / (area[f] * s * s);
-    st.min_area_ratio = (std::min)(st.min_area_ratio, ratio);
+    st.min_area_ratio = (std::min)(st.min_area_ratio, a / (area[f] * scale(int(f)) * scale(int(f))));
     if(!(a > 0)) ++st.folded_triangles;
   }
-  if(st.folded_triangles == 0) st.winding_faults = internal::winding_faults(m, expected_angle, image).size();
-  st.success = st.folded_triangles == 0 && st.winding_faults == 0;
+  st.winding_faults = st.folded_triangles == 0 ? internal::winding_faults(m, expected_angle, image).size() : 0;
+  if((st.success = st.folded_triangles == 0 && st.winding_faults == 0)) return st;
   if(st.folded_triangles > 0)
     st.message = std::to_string(st.folded_triangles) + " triangles are folded by the integer-grid map (singularities or seams "
                  "closer than about one grid unit: try a smaller edge length)";
-  else if(st.winding_faults > 0)
+  else
     st.message = "the integer-grid map winds around " + std::to_string(st.winding_faults) + " vertices otherwise than the field asks "
                  "(the boundary folds back along a grid line, or a branch point), with no triangle folded: try a smaller edge length";
   return st;

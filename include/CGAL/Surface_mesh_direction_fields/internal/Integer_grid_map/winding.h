@@ -66,6 +66,18 @@ std::vector<int> winding_faults(const Mesh_arrays<TM>& m, const std::vector<doub
   return faults;
 }
 
+// The faces around the vertices `vs` (a face around two of them twice).
+template <typename TM>
+std::vector<std::size_t> faces_around(const Mesh_arrays<TM>& m, const std::vector<int>& vs)
+{
+  std::vector<std::size_t> faces;
+  for(int v : vs) {
+    int g = m.vertex_out[std::size_t(v)], g0 = g;
+    do { if(m.face[std::size_t(g)] >= 0) faces.push_back(std::size_t(m.face[std::size_t(g)])); g = m.ccw_out(g); } while(g != g0);
+  }
+  return faces;
+}
+
 } // namespace internal
 } // namespace Surface_mesh_direction_fields
 } // namespace CGAL
