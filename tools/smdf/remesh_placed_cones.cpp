@@ -10,6 +10,7 @@
 #include <CGAL/Surface_mesh_direction_fields/integer_grid_map.h>
 #include <CGAL/Surface_mesh_direction_fields/intrinsic_geometry.h>
 #include <CGAL/Surface_mesh_direction_fields/remeshing_cones.h>
+#include <CGAL/Surface_mesh_direction_fields/seamless_cone_moves.h>
 #include <CGAL/Surface_mesh_direction_fields/seamless_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/topology.h>
 
@@ -98,7 +99,8 @@ namespace {
 Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, Mesh& refined, Intrinsic_surface& intrinsic, Mesh*& surface, double requested_h,
                                           long requested_faces, double distortion_bound, long max_cones, double cone_spacing, Json& out,
                                           Json& metric, const std::function<void(const char*)>& stage, std::size_t& cones,
-                                          std::vector<std::string>& placements, bool& repeated, bool keep_input_faces)
+                                          std::vector<std::string>& placements, bool& repeated, bool keep_input_faces, bool move_cones,
+                                          bool& moved)
 {
   Edge_length_property lengths;
   // cones placed for low distortion, their flat cone metric on the input's edges, the cross
@@ -132,6 +134,7 @@ Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, M
   // would fail the same way
   std::ostringstream key;
   pc.write(key);
+  key << (move_cones ? " moved" : "");
   repeated = std::find(placements.begin(), placements.end(), key.str()) != placements.end();
   placements.push_back(key.str());
   out["placed_cones"] = std::move(pc);
@@ -222,7 +225,54 @@ Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, M
   // boundary loops, made multiples of pi/2, so that the parallel cross field closes and follows
   // every boundary, and the map can follow the metric exactly
   const SMDF::Mesh_topology<Mesh> on_topology = SMDF::mesh_topology(on);
+  moved = false;
   if(on_topology.components[0].genus > 0 || on_topology.boundary_loops.size() >= 2) {
+    // first the interior cones moved a few rings, to first order, so that the holonomies start
+    // within the fixed triangulation's reach (up to 3 rounds, the metric of the moved cones
+    // computed again each round on the same triangulation from the current one)
+    stage("cones moved toward a seamless metric");
+    std::vector<std::pair<vertex_descriptor, double>> moved_cones;
+    for(const auto& c : indices) moved_cones.emplace_back(c.first, c.second * 2 * CGAL_PI);
+    Json mj = Json::object();
+    int total_moves = 0;
+    for(int round = 0; round < 3 && move_cones; ++round) {
+      std::vector<std::pair<vertex_descriptor, double>> trial = moved_cones;
+      const SMDF::Cone_moves_status ms = SMDF::move_cones_toward_seamless(on, lengths, trial);
+      if(round == 0) mj["initial_holonomy_error"] = ms.initial_holonomy_error;
+      mj["holonomy_error"] = ms.initial_holonomy_error;
+      if(ms.moves == 0) break;
+      auto targets = on.add_property_map<vertex_descriptor, double>("v:smdf_moved_target", 0.).first;
+      for(vertex_descriptor v : vertices(on)) targets[v] = 0;
+      for(const auto& c : trial) targets[c.first] = c.second;
+      auto ml = on.add_property_map<edge_descriptor, double>("e:smdf_moved_length", 0.).first;
+      const SMDF::Cone_metric_status mc = on_file(file, [&] {
+        return SMDF::compute_cone_metric(on, targets, ml, SMDF::parameters::edge_length_map(lengths).intrinsic_edge_flips(false));
+      });
+      if(mc.converged) {
+        moved_cones = trial;
+        for(edge_descriptor e : edges(on)) lengths[e] = ml[e];
+        total_moves += ms.moves;
+      }
+      on.remove_property_map(ml);
+      on.remove_property_map(targets);
+      if(!mc.converged) break;
+    }
+    mj["moves"] = total_moves;
+    metric["cone_moves"] = std::move(mj);
+    moved = total_moves > 0;
+    if(moved) {
+      indices.clear();
+      Json pc = Json::array();
+      for(const auto& c : moved_cones) {
+        indices.emplace_back(c.first, c.second / (2 * CGAL_PI));
+        Json o = Json::object();
+        o["vertex"] = index(c.first);
+        o["curvature"] = c.second;
+        pc.push_back(std::move(o));
+      }
+      out["placed_cones"] = std::move(pc);
+    }
+    timed("cone_moves_s");
     stage("seamless metric");
     auto seamless = on.add_property_map<edge_descriptor, double>("e:smdf_remesh_seamless", 0.).first;
     const SMDF::Seamless_metric_status ss = on_file(file, [&] { return SMDF::seamless_cone_metric(on, lengths, seamless); });
@@ -328,18 +378,27 @@ Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Me
   const Json out_before = out, metric_before = metric;
   std::vector<std::string> placements;
   Failed_result failure{Json(), "", 3};   // the last attempt that ran
-  for(std::size_t i = 0;; ++i) {
+  // at each spacing the cones first moved toward a seamless metric (genus > 0 or several boundary
+  // loops), then, if that remesh fails, as placed (the stanford bunny at 12,000 quads remeshes
+  // only so)
+  bool moved = false;
+  for(std::size_t k = 0; k < 2 * spacings.size(); ++k) {
+    const std::size_t i = k / 2;
+    const bool move_cones = k % 2 == 0;
+    if(!move_cones && !moved) continue;   // nothing was moved: the same attempt again
     Json a = Json::object();
     a["cone_spacing"] = spacings[i];
+    a["cones_moved"] = move_cones;
     std::size_t cones = 0;
     bool repeated = false;
+    moved = false;
     try {
-      if(i > 0) { out = out_before; metric = metric_before; }   // nothing of a failed attempt stays but its record
+      if(k > 0) { out = out_before; metric = metric_before; }   // nothing of a failed attempt stays but its record
       surface = &mesh;
       CGAL::clear(refined);   // the refinement of a previous attempt, made for other cones
       intrinsic.of = nullptr;
       Edge_length_property l = placed_cones_attempt(file, mesh, refined, intrinsic, surface, requested_h, requested_faces, distortion_bound, max_cones,
-                                                    spacings[i], out, metric, stage, cones, placements, repeated, keep_input_faces);
+                                                    spacings[i], out, metric, stage, cones, placements, repeated, keep_input_faces, move_cones, moved);
       a["cones"] = cones;
       a["message"] = "";
       a["stage_timings"] = out["stage_timings"];
@@ -354,13 +413,11 @@ Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Me
       a["stage_timings"] = f.json["stage_timings"];
       attempts.push_back(std::move(a));
       if(!repeated) failure = f;
-      if(i + 1 == spacings.size()) {
-        failure.json["placement_attempts"] = std::move(attempts);
-        throw failure;
-      }
-      stage("the remesh failed: cones placed at the next spacing");
+      stage("the remesh failed: cones placed again");
     }
   }
+  failure.json["placement_attempts"] = std::move(attempts);
+  throw failure;
 }
 
 void write_uv_obj(const std::string& path, const Mesh& on)

@@ -12,6 +12,7 @@
 #include <CGAL/Surface_mesh_direction_fields/Cholmod_cholesky.h>
 #include <CGAL/Surface_mesh_direction_fields/Intrinsic_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/errors.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/holonomy_loops.h>
 #include <CGAL/Surface_mesh_direction_fields/parameters.h>
 
 #include <Eigen/Sparse>
@@ -116,67 +117,8 @@ Seamless_metric_status seamless_cone_metric(const TriangleMesh& tm, const InputL
   for(std::size_t e = 0; e < ne; ++e) l0[e] = l[e] = m.length[e];
   auto write = [&] { for(std::size_t e = 0; e < ne; ++e) put(output_lengths, m.edges[e], l[e]); };
 
-  // the handle loops as (exit halfedge, entry halfedge) turns inside each face they cross
-  struct Turn { int a, b; };   // entered by a, left by b (both halfedges of the face)
-  std::vector<std::vector<Turn>> loops;
-  for(const auto& g : im.generator_arrays()) {
-    if(!g.handle || g.dual.empty()) continue;
-    std::vector<Turn> t;
-    const std::size_t n = g.dual.size();
-    for(std::size_t k = 0; k < n; ++k) t.push_back({g.dual[k], g.dual[(k + 1) % n] ^ 1});
-    loops.push_back(std::move(t));
-  }
-  // Open meshes with several boundary loops: a path of faces from an edge of the first loop to an
-  // edge of each other one, entered by the first and left by the second. A parallel field along
-  // the first loop's edges then lies along the other's only if the path turns by a multiple of
-  // 2 pi / N from one edge to the other; the same sum of turns as a loop's holonomy measures it.
-  {
-    const std::vector<std::vector<int>>& bloops = im.topology_arrays().loops;   // border halfedges
-    if(bloops.size() >= 2) {
-      std::vector<int> parent(nf, -2);   // per face: the halfedge it was entered by (-1: a start face)
-      std::vector<int> queue;
-      for(int hb : bloops[0]) {
-        const int f = m.face[std::size_t(hb ^ 1)];
-        if(parent[std::size_t(f)] == -2) { parent[std::size_t(f)] = -1; queue.push_back(f); }
-      }
-      for(std::size_t q = 0; q < queue.size(); ++q) {
-        int x = m.face_halfedge[std::size_t(queue[q])];
-        for(int i = 0; i < 3; ++i, x = m.next[std::size_t(x)]) {
-          const int g = m.face[std::size_t(x ^ 1)];
-          if(g < 0 || parent[std::size_t(g)] != -2) continue;
-          parent[std::size_t(g)] = x ^ 1;
-          queue.push_back(g);
-        }
-      }
-      std::vector<std::size_t> order(nf, queue.size());   // per face: its place in the search
-      for(std::size_t q = 0; q < queue.size(); ++q) order[std::size_t(queue[q])] = q;
-      auto entry_edge = [&](int f) {   // a start face's halfedge on the first loop
-        int x = m.face_halfedge[std::size_t(f)];
-        for(int i = 0; i < 3; ++i, x = m.next[std::size_t(x)])
-          for(int hb : bloops[0]) if((hb ^ 1) == x) return x;
-        return -1;
-      };
-      for(std::size_t j = 1; j < bloops.size(); ++j) {
-        int end = -1, exit = -1;   // the face reached first among those on loop j, and its edge there
-        std::size_t best = queue.size();
-        for(int hb : bloops[j]) {
-          const int f = m.face[std::size_t(hb ^ 1)];
-          if(order[std::size_t(f)] < best) { best = order[std::size_t(f)]; end = f; exit = hb ^ 1; }
-        }
-        if(end < 0) continue;
-        std::vector<Turn> t;
-        for(int f = end, b = exit;;) {
-          const int a = parent[std::size_t(f)] >= 0 ? parent[std::size_t(f)] : entry_edge(f);
-          t.push_back({a, b});
-          if(parent[std::size_t(f)] < 0) break;
-          b = parent[std::size_t(f)] ^ 1;
-          f = m.face[std::size_t(b)];
-        }
-        std::reverse(t.begin(), t.end());
-        loops.push_back(std::move(t));
-      }
-    }
-  }
+  typedef internal::Loop_turn Turn;
+  std::vector<std::vector<Turn>> loops = internal::holonomy_loops(im);
   st.loops = loops.size();
   std::vector<double> angle(2 * ne, 0.);   // per halfedge with a face: the angle at its source
   auto angles_of = [&](const std::vector<double>& len) {
@@ -192,15 +134,7 @@ Seamless_metric_status seamless_cone_metric(const TriangleMesh& tm, const InputL
     }
     return lo;
   };
-  // a loop's holonomy: pi per crossing plus, per face, the turn from its entry to its exit edge
-  auto holonomy = [&](const std::vector<Turn>& t) {
-    double hsum = CGAL_PI * double(t.size());
-    for(const Turn& x : t) {
-      if(x.b == m.next[std::size_t(x.a)]) hsum += angle[std::size_t(x.b)] - CGAL_PI;
-      else hsum += angle[std::size_t(m.next[std::size_t(x.a)])] + angle[std::size_t(x.b)] - 2 * CGAL_PI;
-    }
-    return hsum;
-  };
+  auto holonomy = [&](const std::vector<Turn>& t) { return internal::loop_holonomy(m, angle, t); };
   // rows: the curvature of every vertex but the first (Gauss-Bonnet fixes its own), then the loops
   std::vector<int> row(nv, -1);
   int nrows = 0;
@@ -273,23 +207,14 @@ Seamless_metric_status seamless_cone_metric(const TriangleMesh& tm, const InputL
     // J: d(curvature)/d(lambda) = -sum of the corner derivatives; d(holonomy)/d(lambda) likewise
     std::vector<Eigen::Triplet<double>> tr;
     auto add_corner = [&](int r, int c, double s) {   // s times the derivative of the angle at source(c)
-      if(r < 0) return;
-      const int n = m.next[std::size_t(c)], p = m.next[std::size_t(n)];
-      const double cn = 1 / std::tan(angle[std::size_t(n)]), cp = 1 / std::tan(angle[std::size_t(p)]);
-      tr.emplace_back(r, n >> 1, s * (cn + cp));
-      tr.emplace_back(r, c >> 1, -s * cn);
-      tr.emplace_back(r, p >> 1, -s * cp);
+      if(r >= 0) internal::corner_angle_derivative(m, angle, c, s, [&](int e, double d) { tr.emplace_back(r, e, d); });
     };
     for(std::size_t f = 0; f < nf; ++f) {
       int h = m.face_halfedge[f];
       for(int i = 0; i < 3; ++i, h = m.next[std::size_t(h)]) add_corner(row[std::size_t(m.source(h))], h, -1.);
     }
     for(std::size_t i = 0; i < loops.size(); ++i)
-      for(const Turn& x : loops[i]) {
-        const int r = loop_row0 + int(i);
-        add_corner(r, x.b, 1.);
-        if(x.b != m.next[std::size_t(x.a)]) add_corner(r, m.next[std::size_t(x.a)], 1.);
-      }
+      internal::loop_holonomy_derivative(m, angle, loops[i], [&](int e, double d) { tr.emplace_back(loop_row0 + int(i), e, d); });
     Eigen::SparseMatrix<double> J(nrows, int(ne));
     J.setFromTriplets(tr.begin(), tr.end());
     const Eigen::SparseMatrix<double> JJt = J * Eigen::SparseMatrix<double>(J.transpose());
