@@ -235,7 +235,9 @@ Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, M
     for(const auto& c : indices) moved_cones.emplace_back(c.first, c.second * 2 * CGAL_PI);
     Json mj = Json::object();
     int total_moves = 0;
-    for(int round = 0; round < 3 && move_cones; ++round) {
+    // (not on the Delaunay refinement: a cone there could move to a vertex the input lacks)
+    const bool input_vertices = num_vertices(on) == num_vertices(mesh);
+    for(int round = 0; round < 3 && move_cones && input_vertices; ++round) {
       std::vector<std::pair<vertex_descriptor, double>> trial = moved_cones;
       const SMDF::Cone_moves_status ms = SMDF::move_cones_toward_seamless(on, lengths, trial);
       if(round == 0) mj["initial_holonomy_error"] = ms.initial_holonomy_error;
