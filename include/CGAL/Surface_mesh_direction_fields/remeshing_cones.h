@@ -79,14 +79,8 @@ public:
     vertex_curvatures(m, K_);
     const std::vector<double> w = floored_cotan_edge_weights(m);
     // columns: every vertex with an edge but the first one (u is defined up to a constant)
-    col_.assign(nv, -1);
     int n = 0;
-    bool first = true;
-    for(std::size_t v = 0; v < nv; ++v) {
-      if(m.is_isolated(int(v))) continue;
-      if(first) { first = false; continue; }
-      col_[v] = n++;
-    }
+    col_ = m.indices_but_first_vertex(n);
     std::vector<Eigen::Triplet<double>> t;
     t.reserve(3 * m.number_of_edges());
     for(std::size_t e = 0; e < m.number_of_edges(); ++e) {

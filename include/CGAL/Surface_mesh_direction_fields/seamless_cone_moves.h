@@ -85,14 +85,8 @@ Cone_moves_status move_cones_toward_seamless(const TriangleMesh& tm, const Lengt
 
   // columns: every vertex with an edge but the first (u is defined up to a constant; Gauss-Bonnet
   // fixes the first curvature); lambda_e = lambda0_e + (u_a + u_b) / 2
-  std::vector<int> col(nv, -1);
   int n = 0;
-  bool first = true;
-  for(std::size_t v = 0; v < nv; ++v) {
-    if(m.is_isolated(int(v))) continue;
-    if(first) { first = false; continue; }
-    col[v] = n++;
-  }
+  const std::vector<int> col = m.indices_but_first_vertex(n);
   std::vector<Eigen::Triplet<double>> tj;
   for(std::size_t f = 0; f < m.number_of_faces(); ++f) {
     int c = m.face_halfedge[f];

@@ -136,14 +136,8 @@ Seamless_metric_status seamless_cone_metric(const TriangleMesh& tm, const InputL
   };
   auto holonomy = [&](const std::vector<Turn>& t) { return internal::loop_holonomy(m, angle, t); };
   // rows: the curvature of every vertex but the first (Gauss-Bonnet fixes its own), then the loops
-  std::vector<int> row(nv, -1);
   int nrows = 0;
-  bool first = true;
-  for(std::size_t v = 0; v < nv; ++v) {
-    if(m.is_isolated(int(v))) continue;
-    if(first) { first = false; continue; }
-    row[v] = nrows++;
-  }
+  const std::vector<int> row = m.indices_but_first_vertex(nrows);
   const int loop_row0 = nrows;
   nrows += int(loops.size());
   auto curvature = [&](std::vector<double>& K) {

@@ -66,6 +66,21 @@ public:
   bool is_border_edge(int e) const { return face[2 * e] < 0 || face[2 * e + 1] < 0; }
   bool is_isolated(int v) const { return vertex_out[v] < 0; }
   bool is_boundary_vertex(int v) const { return vertex_out[v] >= 0 && face[vertex_out[v] ^ 1] < 0; }
+  // Per vertex, its index among the vertices with an edge but the first one (-1 for that one and
+  // for isolated vertices: systems in which a conformal factor is defined up to a constant, or a
+  // curvature fixed by Gauss-Bonnet); n receives their number.
+  std::vector<int> indices_but_first_vertex(int& n) const
+  {
+    std::vector<int> index(vertex_out.size(), -1);
+    n = 0;
+    bool first = true;
+    for(std::size_t v = 0; v < vertex_out.size(); ++v) {
+      if(vertex_out[v] < 0) continue;
+      if(first) { first = false; continue; }
+      index[v] = n++;
+    }
+    return index;
+  }
   // Next outgoing halfedge counterclockwise around source(h); h must not be a border halfedge.
   int ccw_out(int h) const { return opposite(prev(h)); }
   double edge_length(int h) const { return length[h >> 1]; }
