@@ -329,7 +329,7 @@ Json run_remesh(const Args& args)
       lengths = map_lengths;
       metric_s = clock.lap();
       finish();
-    }, args.has("uv-out"));
+    }, args.has("uv-out"), !args.has("distortion-bound"));
     if(args.has("uv-out")) write_uv_obj(args.value("uv-out"), *surface);
     return out;   // tessellated and read back by the attempt that passed
   } else {

@@ -59,6 +59,15 @@ public:
     return items_.back();
   }
 
+  // Member of an object, or nullptr if absent or if this is not an object.
+  const Json* find(const std::string& key) const
+  {
+    if(type_ != OBJECT) return nullptr;
+    for(std::size_t i = 0; i < keys_.size(); ++i)
+      if(keys_[i] == key) return &items_[i];
+    return nullptr;
+  }
+
   void write(std::ostream& os) const
   {
     switch(type_) {

@@ -355,12 +355,26 @@ Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, M
   return lengths;
 }
 
+// The holonomy errors of an attempt's `metric` JSON (radians from the nearest multiple of pi/2, the
+// largest over the loops) before and after the cone moves and after the seamless metric, kept in
+// its record `a` when it had them: the reason most failed maps fold.
+void record_holonomy(const Json& metric, Json& a)
+{
+  const Json* m = &metric;
+  if(const Json* moves = m->find("cone_moves"))
+    if(const Json* e = moves->find("initial_holonomy_error")) {
+      a["holonomy_error_before_moves"] = *e;
+      a["cone_moves"] = *moves->find("moves");
+    }
+  if(const Json* s = m->find("seamless")) a["seamless_holonomy_error"] = *s->find("holonomy_error");
+}
+
 } // namespace
 
 Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Mesh& refined, Intrinsic_surface& intrinsic, Mesh*& surface, double requested_h,
                                          long requested_faces, double distortion_bound, long max_cones, double cone_spacing, Json& out, Json& metric,
                                          const std::function<void(const char*)>& stage,
-                                         const std::function<void(Edge_length_property)>& finish, bool keep_input_faces)
+                                         const std::function<void(Edge_length_property)>& finish, bool keep_input_faces, bool tighten_bound)
 {
   const SMDF::Mesh_topology<Mesh> topo = SMDF::mesh_topology(mesh);
   if(topo.components.size() != 1)
@@ -376,6 +390,17 @@ Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Me
   // at 4). Trying 2 and 0 next recovers 3 more (the bunny and the camelhead at 4,000 quads valid
   // at 0 or 2 only); 6 unfolded the armadillo at 20,000 quads. Only failing runs pay for retries.
   const std::vector<double> spacings = cone_spacing >= 0 ? std::vector<double>{cone_spacing} : std::vector<double>{4., 2., 0., 6.};
+  // then, unless the bound was given, the bound halved and quartered: more cones, the metric
+  // stretching less (spacings 4, 2 and 6; 0 packs hundreds of cones). Measured on the 28 failing
+  // runs of the 112 (the 28 valid shared meshes of one component at 1,000 to 12,000 quads): 7
+  // valid at bound 1 (botijo, bunny, spot and stanford bunny at 1,000, rotor at 4,000, ...), the
+  // homer at 2,500 only at 0.5. Each retry is a placement and a map: only failing runs pay.
+  struct Attempt { double bound, spacing; bool move; };
+  std::vector<Attempt> schedule;
+  for(double sp : spacings) for(bool mv : {true, false}) schedule.push_back({distortion_bound, sp, mv});
+  if(tighten_bound)
+    for(double b : {distortion_bound / 2, distortion_bound / 4})
+      for(double sp : cone_spacing >= 0 ? std::vector<double>{cone_spacing} : std::vector<double>{4., 2., 6.}) schedule.push_back({b, sp, true});
   Json attempts = Json::array();
   const Json out_before = out, metric_before = metric;
   std::vector<std::string> placements;
@@ -384,12 +409,13 @@ Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Me
   // loops), then, if that remesh fails, as placed (the stanford bunny at 12,000 quads remeshes
   // only so)
   bool moved = false;
-  for(std::size_t k = 0; k < 2 * spacings.size(); ++k) {
-    const std::size_t i = k / 2;
-    const bool move_cones = k % 2 == 0;
+  for(std::size_t k = 0; k < schedule.size(); ++k) {
+    const Attempt& at = schedule[k];
+    const bool move_cones = at.move;
     if(!move_cones && !moved) continue;   // nothing was moved: the same attempt again
     Json a = Json::object();
-    a["cone_spacing"] = spacings[i];
+    a["distortion_bound"] = at.bound;
+    a["cone_spacing"] = at.spacing;
     a["cones_moved"] = move_cones;
     std::size_t cones = 0;
     bool repeated = false;
@@ -399,11 +425,12 @@ Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Me
       surface = &mesh;
       CGAL::clear(refined);   // the refinement of a previous attempt, made for other cones
       intrinsic.of = nullptr;
-      Edge_length_property l = placed_cones_attempt(file, mesh, refined, intrinsic, surface, requested_h, requested_faces, distortion_bound, max_cones,
-                                                    spacings[i], out, metric, stage, cones, placements, repeated, keep_input_faces, move_cones, moved);
+      Edge_length_property l = placed_cones_attempt(file, mesh, refined, intrinsic, surface, requested_h, requested_faces, at.bound, max_cones,
+                                                    at.spacing, out, metric, stage, cones, placements, repeated, keep_input_faces, move_cones, moved);
       a["cones"] = cones;
       a["message"] = "";
       a["stage_timings"] = out["stage_timings"];
+      record_holonomy(metric, a);
       Json recorded = attempts;
       recorded.push_back(a);
       out["placement_attempts"] = std::move(recorded);   // as it will stand if this attempt's remesh passes
@@ -413,6 +440,11 @@ Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Me
       a["cones"] = cones;
       a["message"] = f.message;
       a["stage_timings"] = f.json["stage_timings"];
+      record_holonomy(f.json.find("metric") ? *f.json.find("metric") : metric, a);
+      if(const Json* ig = f.json.find("integer_grid_map")) {   // folds before and after rounding
+        a["seamless_folded_triangles"] = *ig->find("seamless_folded_triangles");
+        a["folded_triangles"] = *ig->find("folded_triangles");
+      }
       attempts.push_back(std::move(a));
       if(!repeated) failure = f;
       stage("the remesh failed: cones placed again");

@@ -59,7 +59,8 @@ SMDF::Cone_metric_status intrinsic_cone_metric(const std::string& file, Mesh& ba
 // under the metric). Returns the map's edge lengths (grid units) on `*surface`; adds
 // placed_cones, placement and integer_grid_map to `out` and the metric's fields to `metric`.
 // Cones are kept `cone_spacing` grid edges apart where the placement can (measured on the input);
-// a negative `cone_spacing` tries 4, 2, 0 and 6 in turn. `finish` tessellates the map and reads
+// a negative `cone_spacing` tries 4, 2, 0 and 6 in turn; then, if `tighten_bound`, the bound
+// halved and quartered at spacings 4, 2 and 6 (or `cone_spacing`). `finish` tessellates the map and reads
 // the remesh back (it throws Failed_result when the remesh fails): an attempt whose map or
 // remesh fails is followed by the next spacing, each recorded in placement_attempts. A metric
 // that needed intrinsic flips is used on its intrinsic triangulation, unless `keep_input_faces`
@@ -68,7 +69,7 @@ SMDF::Cone_metric_status intrinsic_cone_metric(const std::string& file, Mesh& ba
 Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Mesh& refined, Intrinsic_surface& intrinsic, Mesh*& surface, double requested_h,
                                          long requested_faces, double distortion_bound, long max_cones, double cone_spacing, Json& out, Json& metric,
                                          const std::function<void(const char*)>& stage,
-                                         const std::function<void(Edge_length_property)>& finish, bool keep_input_faces);
+                                         const std::function<void(Edge_length_property)>& finish, bool keep_input_faces, bool tighten_bound);
 
 // Writes the integer-grid map made by placed_cones_metric() on `on` (the input, or its
 // refinement) as OBJ: the vertices, one `vt` per face corner (grid units), faces `v/vt`.
