@@ -2242,7 +2242,9 @@ def test_shared_remesh_open(smdf, c, meshes, tmp):
     """smdf remesh with automatic cones on open shared meshes of genus 0 and 1, one to seven
     boundary loops (#37 item 4): the boundary runs along grid lines. Read back from the remesh
     alone (automatic_remesh_read_back(), and a distance of at most one edge length, area within
-    3 %); and from --uv-out: every border edge on a grid line."""
+    3 %); and from --uv-out: every border edge on a grid line. Then two closed genus-1 meshes:
+    bob's cones moved toward a seamless metric, and the rotor's map with rounded values implied
+    across the two rounding phases, and its placement tried again at a halved bound."""
     cases = (("annulus_igltest.obj", 3000, []), ("punctured-torus_bff.obj", 3000, []), ("mushroom_cgal.off", 4000, []),
              ("holes_cgal.off", 4000, []))
     for name, quads, extra in cases:
@@ -2279,6 +2281,28 @@ def test_shared_remesh_open(smdf, c, meshes, tmp):
                 "remesh bob: cones moved (holonomy %r -> %r in %r moves), seamless metric (%r -> %r), the map's seamless energy %r"
                 % (mv.get("initial_holonomy_error"), mv.get("holonomy_error"), mv.get("moves"), sm.get("initial_holonomy_error"),
                    sm.get("holonomy_error"), g.get("seamless_energy")))
+    # the rotor (genus 1): at 1,000 quads, bound 0.5 and spacing 6, rounding the 10 cones'
+    # positions implied a seam translation of -18.5, which the map then refused; a rounding must
+    # keep integral every value it implies, of either phase. The map is now valid (its own
+    # read-back: no fold, no winding fault); the remesh still fails on flipped faces (exit 3).
+    rotor = os.path.join(meshes, "rotor_cgal.off")
+    rc, o, err = smdf.run(["remesh", rotor, "--faces", "1000", "--distortion-bound", "0.5", "--cone-spacing", "6",
+                           "--out", os.path.join(tmp, "rotor.obj")])
+    doc = json.loads(o.decode()) if o else {}
+    g = doc.get("integer_grid_map", {})
+    c.check(rc in (0, 3) and g.get("success") is True and g.get("singularities", 0) == 10 and g.get("folded_triangles") == 0
+            and g.get("winding_faults") == 0 and "not an integer" not in err.decode(),
+            "remesh rotor --distortion-bound 0.5 --cone-spacing 6: an integer-grid map of %r singularities (%r)"
+            % (g.get("singularities"), g.get("message")))
+    # the rotor at 4,000 quads: no cone fits the bound 2 (a flat torus), and those quads turn
+    # against the input; the bound not given, the placement is tried again at 1 and passes
+    r = smdf.json(["remesh", rotor, "--faces", "4000", "--out", os.path.join(tmp, "rotor4k.obj")], "remesh rotor (bound halved)")
+    if r:
+        att = r.get("placement_attempts", [])
+        c.check(r.get("success") is True and r.get("flipped_faces") == 0 and att and att[0].get("distortion_bound") == 2
+                and att[-1].get("distortion_bound") == 1 and att[-1].get("message") == "" and r.get("placement", {}).get("distortion_bound") == 1,
+                "remesh rotor at 4,000 quads: valid after the bound was halved (attempts %r)"
+                % [(a.get("distortion_bound"), a.get("cone_spacing"), a.get("cones")) for a in att])
 
 
 def test_shared_remesh_refinement(smdf, c, meshes, tmp):
