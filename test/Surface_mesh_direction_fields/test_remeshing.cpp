@@ -26,6 +26,7 @@
 #include <CGAL/Surface_mesh_direction_fields/polyhedron_remeshing.h>
 #include <CGAL/Surface_mesh_direction_fields/remesh_untangling.h>
 #include <CGAL/Surface_mesh_direction_fields/remeshing_cones.h>
+#include <CGAL/Surface_mesh_direction_fields/remeshing_cone_separation.h>
 #include <CGAL/Surface_mesh_direction_fields/integer_grid_map.h>
 #include <CGAL/Surface_mesh_direction_fields/seamless_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/seamless_cone_moves.h>
@@ -1059,6 +1060,8 @@ bool check_remeshing_cones(const Mesh& mesh, int N, double bound, const std::str
   return st.success;
 }
 
+struct Cone_separation_counts { std::size_t before = 0, after = 0; };
+
 void remeshing_cones(const std::string& dir)
 {
   std::mt19937 rng(20261206);
@@ -1130,6 +1133,123 @@ void remeshing_cones(const std::string& dir)
   SMDF_CHECK(threw);
   threw = false;
   try { SMDF::place_remeshing_cones(sm, get(CGAL::dynamic_edge_property_t<double>(), sm), SMDF::parameters::minimum_cone_distance(-1.)); }
+  catch(const SMDF::Input_error&) { threw = true; }
+  SMDF_CHECK(threw);
+}
+
+// separate_remeshing_cones() on meshes whose placed cones crowd under their own metric at 1,000
+// to 2,500 quads (the casting, of genus 9; the beetle with 9 boundary loops and the holes with 7;
+// homer): read back by Dijkstra along the edges from every cone, under the same lengths, the
+// counts of interior cones nearer another than the distance before and after are the status's;
+// fewer after; the total curvature is kept, 2 cones fewer per cancelled pair, the boundary's
+// corners in place, no two cones adjacent; the metric of the new cones converges. On both
+// Surface_mesh and Polyhedron_3 (the same counts).
+template <typename Mesh>
+std::size_t check_cone_separation(const Mesh& m, double quads, const std::string& what, Cone_separation_counts& counts)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor V;
+  auto placed = get(CGAL::dynamic_edge_property_t<double>(), m);
+  const auto ps = SMDF::place_remeshing_cones(m, placed);
+  auto curvature = get(CGAL::dynamic_vertex_property_t<double>(), m);
+  for(V v : vertices(m)) put(curvature, v, 0.);
+  for(const auto& c : ps.cones) put(curvature, c.first, c.second);
+  auto l = get(CGAL::dynamic_edge_property_t<double>(), m);
+  const auto cm = SMDF::compute_cone_metric(m, curvature, l, SMDF::parameters::intrinsic_edge_flips(false));
+  if(!cm.converged) { std::cout << what << ": the cone metric needs flips (skipped)" << std::endl; return 0; }
+  double area = 0;
+  for(auto f : faces(m)) {
+    const auto h = halfedge(f, m);
+    const double a = get(l, edge(h, m)), b = get(l, edge(next(h, m), m)), c = get(l, edge(prev(h, m), m)), p = (a + b + c) / 2;
+    area += std::sqrt(std::max(0., p * (p - a) * (p - b) * (p - c)));
+  }
+  const double d = 1.5 * std::sqrt(area / quads);
+  // interior cones with another cone nearer than d, by Dijkstra from each
+  auto dist = get(CGAL::dynamic_vertex_property_t<double>(), m);
+  auto mark = get(CGAL::dynamic_vertex_property_t<int>(), m);   // 1: a cone
+  for(V v : vertices(m)) { put(dist, v, std::numeric_limits<double>::infinity()); put(mark, v, 0); }
+  auto close = [&](const std::vector<std::pair<V, double>>& cones) {
+    std::size_t n = 0;
+    for(const auto& c : cones) put(mark, c.first, 1);
+    for(const auto& c : cones) {
+      if(is_border(c.first, m)) continue;
+      std::vector<V> touched{c.first};
+      typedef std::pair<double, V> Item;
+      auto later = [](const Item& a, const Item& b) { return a.first > b.first; };
+      std::priority_queue<Item, std::vector<Item>, decltype(later)> queue(later);
+      put(dist, c.first, 0.);
+      queue.emplace(0., c.first);
+      bool near = false;
+      while(!queue.empty() && !near) {
+        const Item it = queue.top();
+        queue.pop();
+        if(it.first > get(dist, it.second)) continue;
+        near = it.second != c.first && get(mark, it.second) == 1;
+        for(auto h : CGAL::halfedges_around_source(it.second, m)) {
+          const V w = target(h, m);
+          const double dw = it.first + get(l, edge(h, m));
+          if(dw < d && dw < get(dist, w)) { put(dist, w, dw); touched.push_back(w); queue.emplace(dw, w); }
+        }
+      }
+      for(V w : touched) put(dist, w, std::numeric_limits<double>::infinity());
+      n += near;
+    }
+    for(const auto& c : cones) put(mark, c.first, 0);
+    return n;
+  };
+  std::vector<std::pair<V, double>> cones = ps.cones;
+  const SMDF::Cone_separation_status st = SMDF::separate_remeshing_cones(m, l, cones, d);
+  double before = 0, after = 0;
+  for(const auto& c : ps.cones) before += c.second;
+  for(const auto& c : cones) after += c.second;
+  std::vector<std::size_t> corners_before, corners_after;   // positions of the border cones in vertices(m)
+  auto position = [&](V v) { return std::size_t(std::distance(vertices(m).begin(), std::find(vertices(m).begin(), vertices(m).end(), v))); };
+  for(const auto& c : ps.cones) if(is_border(c.first, m)) corners_before.push_back(position(c.first));
+  for(const auto& c : cones) { if(is_border(c.first, m)) corners_after.push_back(position(c.first)); put(mark, c.first, 2); }
+  std::sort(corners_before.begin(), corners_before.end());
+  std::sort(corners_after.begin(), corners_after.end());
+  bool adjacent = false;
+  std::size_t distinct = 0;
+  for(V v : vertices(m)) distinct += get(mark, v) == 2;
+  for(const auto& c : cones)
+    for(auto h : CGAL::halfedges_around_source(c.first, m)) adjacent = adjacent || get(mark, target(h, m)) == 2;
+  for(const auto& c : cones) put(mark, c.first, 0);
+  const std::size_t close_before = close(ps.cones), close_after = close(cones);
+  std::cout << what << ": " << ps.cones.size() << " cones, " << close_before << " nearer another than " << d << " (1.5 grid edges at "
+            << quads << " quads), " << st.cancelled_pairs << " pairs cancelled, " << st.moved_cones << " moved, " << close_after << " near after" << std::endl;
+  SMDF_CHECK_MSG(st.close_cones_before == close_before && st.close_cones_after == close_after && close_after <= close_before,
+                 what << ": the status counts " << st.close_cones_before << " -> " << st.close_cones_after);
+  SMDF_CHECK_MSG(std::abs(before - after) < 1e-9 && cones.size() + 2 * std::size_t(st.cancelled_pairs) == ps.cones.size() &&
+                 corners_before == corners_after && !adjacent && distinct == cones.size(),
+                 what << ": total " << before << " -> " << after << ", " << cones.size() << " cones, adjacent " << adjacent);
+  for(V v : vertices(m)) put(curvature, v, 0.);
+  for(const auto& c : cones) put(curvature, c.first, c.second);
+  auto l2 = get(CGAL::dynamic_edge_property_t<double>(), m);
+  const auto cm2 = SMDF::compute_cone_metric(m, curvature, l2, SMDF::parameters::edge_length_map(l).intrinsic_edge_flips(false));
+  SMDF_CHECK_MSG(cm2.converged && cm2.max_curvature_error < 1e-9, what << ": the separated cones' metric: " << cm2.message);
+  counts.before += close_before;
+  counts.after += close_after;
+  return cones.size();
+}
+
+void cone_separation(const std::string& dir)
+{
+  Cone_separation_counts counts;
+  for(const char* name : {"casting_vhacd.off", "beetle_euclid.off", "holes_cgal.off", "homer_cgal.off"}) {
+    Surface_mesh m;
+    SMDF::read_triangle_mesh(dir + "/meshes/" + name, m);
+    for(double quads : {1000., 2500.}) check_cone_separation(m, quads, std::string(name) + " at " + std::to_string(int(quads)), counts);
+  }
+  SMDF_CHECK_MSG(counts.before >= 10 && counts.after * 2 <= counts.before, counts.before << " crowded cones, " << counts.after << " after");
+  Polyhedron p;
+  Surface_mesh sm;
+  SMDF::read_triangle_mesh(dir + "/meshes/casting_vhacd.off", p);
+  SMDF::read_triangle_mesh(dir + "/meshes/casting_vhacd.off", sm);
+  Cone_separation_counts cp, cs;
+  const std::size_t np = check_cone_separation(p, 1000., "casting (Polyhedron_3)", cp), ns = check_cone_separation(sm, 1000., "casting (Surface_mesh)", cs);
+  SMDF_CHECK(np == ns && cp.before == cs.before && cp.after == cs.after);
+  bool threw = false;
+  std::vector<std::pair<Surface_mesh::Vertex_index, double>> none;
+  try { SMDF::separate_remeshing_cones(sm, get(CGAL::dynamic_edge_property_t<double>(), sm), none, 0.); }
   catch(const SMDF::Input_error&) { threw = true; }
   SMDF_CHECK(threw);
 }
@@ -2112,7 +2232,7 @@ int main(int argc, char** argv)
     if(!dir.empty()) { box_polycube(dir); ricci_flow_segments(dir); seam_relaxation(dir); flipped_flat_metric(dir); delaunay_refinement(dir); octahedron_polyhedron(dir); obelisk(dir); untangling(dir); }
   }
   if(part != "polycube") cube_through_intrinsic_triangulation();
-  if(part != "polycube" && !dir.empty()) { remeshing_cones(dir); integer_grid_maps(dir); integer_grid_maps_open(dir); seamless_metrics(dir); }
+  if(part != "polycube" && !dir.empty()) { remeshing_cones(dir); cone_separation(dir); integer_grid_maps(dir); integer_grid_maps_open(dir); seamless_metrics(dir); }
   if(dir.empty()) std::cout << "../shared/data not found: the shared meshes' parts skipped" << std::endl;
   return smdf_test::finish();
 }

@@ -584,7 +584,7 @@ Command remesh_command()
            {"relaxation", "K", "with --polycube: one round of stretch-minimising reweighting, then at most K steps of as-rigid-as-possible relaxation of the polyhedron's charts (fewer once a triangle about to fold throttles a step below 1 %) and 3K sweeps across its edges near the paths (default 10; 0: the plain Tutte embedding)"},
            {"no-untangle", "", "keep the grid's faces that come out inverted on the surface (default: their vertices are moved along the input until none is, the cones held, or slid along the surface where holding them leaves faces inverted, then quads folded at a corner unfolded as far as such moves can; reported as untangle)"},
            {"place-cones", "", "automatic cones (the default for quads without --cones, --lengths or --polycube, unless every curvature of the input is a multiple of pi/2): meshes of any genus, closed or open; place the cones (cone-metric --place-cones; on an open mesh also the boundary's corners, turning by multiples of pi/2), compute their flat cone metric on the input's edges, the cross field of the trivial connection on it (on an open mesh: parallel to the boundary, straight between the corners) and an integer-grid map whose boundary runs along grid lines, and tessellate that (see the manual)"},
-           {"distortion-bound", "B", "automatic cones: the cone metric's log scale within B (default 2)"},
+           {"distortion-bound", "B", "automatic cones: the cone metric's log scale within B (default 2, then 1 and 0.5 while every attempt fails; given, only B)"},
            {"max-cones", "n", "automatic cones: at most n cones (default 500)"},
            {"uv-out", "FILE", "automatic cones: write the integer-grid map as OBJ, one vt per face corner (a seamless parametrization in grid units; the triangulation is the Delaunay refinement's when the metric needed it)"},
            {"cone-spacing", "S", "automatic cones: at least S grid edges apart (along the input's edges) where the placement can; default: 4, then 2, 0 (only never adjacent) and 6 while the map or the remesh fails"},
@@ -670,10 +670,16 @@ Command remesh_command()
           "folds, or if a quad stays folded at a corner after untangling), whose edge lengths are the metric tessellated with edge length\n"
           "1 (edge_length 1 in grid units). The JSON adds placed_cones: [{vertex, curvature}],\n"
           "placement: {success, message, distortion_bound, scale_spread}, placement_attempts:\n"
-          "[{cone_spacing, cones_moved, cones, message, stage_timings}] (the cones are placed 4 grid\n"
+          "[{distortion_bound, cone_spacing, cones_moved, cones, message, stage_timings, and where\n"
+          "measured holonomy_error_before_moves, cone_moves, seamless_holonomy_error,\n"
+          "seamless_folded_triangles, folded_triangles}] (the cones are placed 4 grid\n"
           "edges apart first; a map that folds or a remesh that fails its read-back is tried again\n"
-          "with them 2, 0, then 6 apart, unless --cone-spacing is given; an attempt that places the\n"
-          "same cones as an earlier one is skipped; on meshes of genus > 0 or with several boundary\n"
+          "with them 2, 0, then 6 apart, unless --cone-spacing is given, then, unless\n"
+          "--distortion-bound is given, with the bound halved and quartered at spacings 4, 2 and 6;\n"
+          "an attempt that places the same cones as an earlier one is skipped; interior cones nearer\n"
+          "each other than 1.5 grid edges under their metric are separated, opposite pairs cancelled\n"
+          "(metric.cone_separation: {close_cones_before, close_cones_after, cancelled_pairs,\n"
+          "moved_cones}); on meshes of genus > 0 or with several boundary\n"
           "loops each spacing first moves interior cones a few rings so that the metric's holonomies\n"
           "start near multiples of pi/2 (metric.cone_moves: {moves, initial_holonomy_error,\n"
           "holonomy_error}) and, if that remesh fails, tries the cones as placed), stage_timings (the last\n"
