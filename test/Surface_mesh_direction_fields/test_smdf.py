@@ -2985,7 +2985,7 @@ def test_remesh_sweep(smdf, c, shared):
                 ok += 1
             print("remesh sweep: %-28s exit 0 %6.1f s: %s quads, %d cones" % (name, seconds, r.get("faces_by_size", {}).get("4"),
                                                                              len(r.get("placed_cones", []))))
-    c.check(ok >= 22, "remesh sweep: %d of %d shared meshes remeshed and read back (at least 22, as measured)" % (ok, len(names)))
+    c.check(ok >= 23, "remesh sweep: %d of %d shared meshes remeshed and read back (at least 23; 24 measured)" % (ok, len(names)))
 
 
 def main():
