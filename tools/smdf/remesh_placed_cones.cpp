@@ -393,7 +393,8 @@ Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, M
 
 // The holonomy errors of an attempt's `metric` JSON (radians from the nearest multiple of pi/2, the
 // largest over the loops) before and after the cone moves and after the seamless metric, kept in
-// its record `a` when it had them: the reason most failed maps fold.
+// its record `a` when it had them (a metric left off its seamless goal folds the map before any
+// rounding; one that reached it folds, if at all, in the rounding).
 void record_holonomy(const Json& metric, Json& a)
 {
   const Json* m = &metric;
