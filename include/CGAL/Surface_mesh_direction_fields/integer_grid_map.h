@@ -15,7 +15,6 @@
 #include <CGAL/Surface_mesh_direction_fields/parameters.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/cotan_weights.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/development.h>
-
 #include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/local_resolve.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/map_factor.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/seam_layout.h>
@@ -476,15 +475,11 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   auto implied_by = [&](int k) { return conditions.implied(k); };
   const double m_scale = ns > 0 ? (std::max)(M.diagonal().cwiseAbs().maxCoeff(), 1e-300) : 1.;
   for(int phase = 0; phase < 2; ++phase) {
-    // this phase's values, and the next phase's (a rounding here can imply one of them: it must
-    // stay an integer too, or the next phase finds it fixed at a half-integer)
+    // this phase's values, and the next phase's (a rounding here may imply one: it must stay integral)
     std::vector<int> todo, later;
-    for(int k = 0; k < nsmall; ++k) {
-      std::vector<int>& in = (phase == 0) == (k >= narcs + nlines) ? todo : later;
-      if(phase == 1 && &in == &later) continue;
-      in.push_back(2 * k);
-      in.push_back(2 * k + 1);
-    }
+    for(int k = 0; k < nsmall; ++k)
+      if((phase == 0) == (k >= narcs + nlines)) { todo.push_back(2 * k); todo.push_back(2 * k + 1); }
+      else if(phase == 0) { later.push_back(2 * k); later.push_back(2 * k + 1); }
     while(!todo.empty()) {
       // the implied ones first: checked, not fixed
       bool any = false;
@@ -517,10 +512,8 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
         Eigen::VectorXd yt;
         if(update) yt = y + Ma * ((v - y[k]) / aMa);
         else if(!solve_small(yt)) continue;
-        bool integral = true;
-        for(const std::vector<int>* open : {&todo, &later})
-          for(int j : *open) if(implied_by(j) && std::abs(yt[j] - std::round(yt[j])) > 1e-6) { integral = false; break; }
-        if(!integral) continue;
+        auto off_integer = [&](int j) { return implied_by(j) && std::abs(yt[j] - std::round(yt[j])) > 1e-6; };
+        if(std::any_of(todo.begin(), todo.end(), off_integer) || std::any_of(later.begin(), later.end(), off_integer)) continue;
         y = yt;
         placed = true;
         break;
