@@ -397,13 +397,12 @@ Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, M
 // rounding; one that reached it folds, if at all, in the rounding).
 void record_holonomy(const Json& metric, Json& a)
 {
-  const Json* m = &metric;
-  if(const Json* moves = m->find("cone_moves"))
+  if(const Json* moves = metric.find("cone_moves"))
     if(const Json* e = moves->find("initial_holonomy_error")) {
       a["holonomy_error_before_moves"] = *e;
       a["cone_moves"] = *moves->find("moves");
     }
-  if(const Json* s = m->find("seamless")) a["seamless_holonomy_error"] = *s->find("holonomy_error");
+  if(const Json* s = metric.find("seamless")) a["seamless_holonomy_error"] = *s->find("holonomy_error");
 }
 
 } // namespace
@@ -477,7 +476,8 @@ Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Me
       a["cones"] = cones;
       a["message"] = f.message;
       a["stage_timings"] = f.json["stage_timings"];
-      record_holonomy(f.json.find("metric") ? *f.json.find("metric") : metric, a);
+      const Json* failed_metric = f.json.find("metric");
+      record_holonomy(failed_metric ? *failed_metric : metric, a);
       if(const Json* ig = f.json.find("integer_grid_map")) {   // folds before and after rounding
         a["seamless_folded_triangles"] = *ig->find("seamless_folded_triangles");
         a["folded_triangles"] = *ig->find("folded_triangles");
