@@ -152,10 +152,24 @@ Json run_remesh(const Args& args)
   }
   Json out = Json::object();
   const Input_faces_tree input_tree(mesh);   // for the read-backs of every attempt
+  // Every route's untangling (every other check passed): the inverted faces (the tessellation's
+  // count, `inverted`), the faces flipped against the input's normal nearest their centroid (a
+  // face bent over a ridge, which the test at the corners misses) and the quads folded at a
+  // corner. Returns the remesh's flipped faces after it.
+  auto untangle_if_needed = [&](Mesh& remesh, bool& success, std::string& failure, std::size_t& inverted, Json& timings) {
+    std::size_t flipped = faces_flipped_at_closest_point(input_tree, remesh);
+    if(untangle && (inverted > 0 || (success && (flipped > 0 || nonconvex_quads(remesh) > 0)))) {
+      stage("untangling inverted faces");
+      out["untangle"] = untangle_inverted(mesh, remesh, success, inverted, untangle_message);
+      if(!success) failure += "; untangling: " + untangle_message;
+      timings["untangle_s"] = clock.lap();
+      flipped = faces_flipped_at_closest_point(input_tree, remesh);
+    }
+    return flipped;
+  };
   // Every route's last read-back, stricter than the library's normals under the corners: no face
   // whose normal opposes the input's at the input point nearest its centroid.
-  auto check_flipped_faces = [&](const Mesh& remesh, bool& success, std::string& failure) {
-    const std::size_t flipped = faces_flipped_at_closest_point(input_tree, remesh);
+  auto check_flipped_faces = [&](std::size_t flipped, bool& success, std::string& failure) {
     out["flipped_faces"] = flipped;
     if(flipped > 0 && success) {
       success = false;
@@ -228,13 +242,7 @@ Json run_remesh(const Args& args)
     bool success = st.success;
     std::string failure = st.message;
     std::size_t inverted = st.inverted_faces;
-    // every other check passed: unfold the inverted faces, and the quads folded at a corner
-    if(num_faces(remesh) > 0 && untangle && (inverted > 0 || (success && nonconvex_quads(remesh) > 0))) {
-      stage("untangling inverted faces");
-      out["untangle"] = untangle_inverted(mesh, remesh, success, inverted, untangle_message);
-      if(!success) failure += "; untangling: " + untangle_message;
-      timings["untangle_s"] = clock.lap();
-    }
+    const std::size_t flipped = num_faces(remesh) > 0 ? untangle_if_needed(remesh, success, failure, inverted, timings) : 0;
     if(num_faces(remesh) > 0) {
       Json sizes = Json::object(), val = Json::object();
       std::map<std::size_t, std::size_t> by_size;
@@ -254,7 +262,7 @@ Json run_remesh(const Args& args)
       }
       out["irregular_vertices"] = std::move(irr);
       out["inverted_faces"] = inverted;
-      check_flipped_faces(remesh, success, failure);
+      check_flipped_faces(flipped, success, failure);
       out["quality"] = remesh_quality(remesh);
       // automatic cones promise a valid quad mesh: a quad still folded at a corner after untangling
       // (scaled Jacobian <= 0) fails it (the polycube routes report such quads and keep exit 0)
@@ -480,12 +488,7 @@ Json run_remesh(const Args& args)
           irr.push_back(std::move(o));
         }
       }
-      // every other check passed: unfold the inverted faces, and the quads folded at a corner
-      if(num_faces(remesh) > 0 && untangle && (inverted > 0 || (success && nonconvex_quads(remesh) > 0))) {
-        out["untangle"] = untangle_inverted(mesh, remesh, success, inverted, untangle_message);
-        if(!success) failure += "; untangling: " + untangle_message;
-        timings["untangle_s"] = clock.lap();
-      }
+      const std::size_t flipped = num_faces(remesh) > 0 ? untangle_if_needed(remesh, success, failure, inverted, timings) : 0;
       if(num_faces(remesh) > 0) {
         Json sizes = Json::object(), val = Json::object();
         sizes["4"] = rs.quads;
@@ -497,7 +500,7 @@ Json run_remesh(const Args& args)
         out["unexpected_valences"] = rs.unexpected_valences;
         out["irregular_vertices"] = std::move(irr);
         out["inverted_faces"] = inverted;
-        check_flipped_faces(remesh, success, failure);
+        check_flipped_faces(flipped, success, failure);
         out["quality"] = remesh_quality(remesh);
         out["distance_over_edge_length"] = remesh_distances(input_tree, remesh, side / n);
         out["area_ratio"] = remesh_area_ratio(mesh, remesh);

@@ -144,6 +144,32 @@ public:
     return normal_[std::size_t(f)];
   }
 
+  // The least dot product of `a` with the unit normals of the faces that p, a point of face f,
+  // touches: at a corner of f (within squared distance `tol2`), every face around it; on a side,
+  // the two beside it; else f's. A direction positive against all of them faces the input
+  // whichever face a search for p's nearest point returns.
+  double least_dot_with_normals_at(const Vec3& p, int f, double tol2, const Vec3& a) const
+  {
+    auto dot = [&](std::size_t g) { return a[0] * normal_[g][0] + a[1] * normal_[g][1] + a[2] * normal_[g][2]; };
+    const std::array<int, 3>& c = corner_[std::size_t(f)];
+    double least = dot(std::size_t(f));
+    for(int v : c) {
+      const Vec3& q = point_[std::size_t(v)];
+      const double d[3] = {p[0] - q[0], p[1] - q[1], p[2] - q[2]};
+      if(d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= tol2) {
+        for(std::size_t g : around_[std::size_t(v)]) least = (std::min)(least, dot(g));
+        return least;
+      }
+    }
+    for(std::size_t k = 0; k < 3; ++k) {
+      const int a0 = c[k], b0 = c[(k + 1) % 3];
+      if(adjacent_[std::size_t(f)][k] >= 0 &&
+         squared_distance_to_triangle(p, point_[std::size_t(a0)], point_[std::size_t(b0)], point_[std::size_t(b0)]) <= tol2)
+        least = (std::min)(least, dot(std::size_t(adjacent_[std::size_t(f)][k])));
+    }
+    return least;
+  }
+
   // The point of face f closest to p.
   Vec3 closest_point(const Vec3& p, int f) const
   {
