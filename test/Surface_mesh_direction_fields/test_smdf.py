@@ -2297,6 +2297,19 @@ def test_shared_remesh_open(smdf, c, meshes, tmp):
             "(rc %r, %r flipped)" % (g.get("singularities"), g.get("message"), rc, doc.get("flipped_faces")))
     if rc == 0:
         automatic_remesh_read_back(c, "rotor_cgal.off", rotor, os.path.join(tmp, "rotor.obj"), doc, "remesh rotor at 1,000 quads")
+    # the same without untangling: the first attempt's remesh has inverted faces, the second's
+    # too, exit 3; --uv-out still writes the first attempt's valid map, which reads back as one
+    # (no triangle flipped, every seam a grid symmetry)
+    uvf = os.path.join(tmp, "rotor_uv.obj")
+    rc, o, err = smdf.run(["remesh", rotor, "--faces", "1000", "--distortion-bound", "0.5", "--cone-spacing", "6", "--no-untangle",
+                           "--out", os.path.join(tmp, "rotor_tangled.obj"), "--uv-out", uvf])
+    doc = json.loads(o.decode()) if o else {}
+    lines = err.decode().strip().splitlines()
+    written = rc == 3 and doc.get("uv_out_attempt") == 0 and os.path.isfile(uvf) and len(lines) == 1 and "--uv-out" in lines[0]
+    nf, flipped, worst, _ = uv_map_read_back(uvf) if written else (0, -1, 1, 1)
+    c.check(written and nf > 0 and flipped == 0 and worst < 1e-6,
+            "remesh rotor --no-untangle --uv-out: exit 3 (rc %r), the valid map of attempt %r written anyway (%d faces, %d flipped, seams "
+            "off by %g): %r" % (rc, doc.get("uv_out_attempt"), nf, flipped, worst, lines[-1:]))
     # the rotor at 4,000 quads: no cone fits the bound 2 (a flat torus), and those quads turn
     # against the input; the bound not given, the placement is tried again at 1 and passes
     r = smdf.json(["remesh", rotor, "--faces", "4000", "--out", os.path.join(tmp, "rotor4k.obj")], "remesh rotor (bound halved)")

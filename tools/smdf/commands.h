@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // smdf: the subcommands. cmd_<name>.cpp defines run_<name>() and <name>_command(), the entry
-// of commands() (name, positional arguments, options, help text, run function).
+// of commands() (name, positional arguments, options, help text, run function); remesh's entry
+// is in cmd_remesh_help.cpp.
 
 #ifndef SMDF_CLI_COMMANDS_H
 #define SMDF_CLI_COMMANDS_H

@@ -48,6 +48,8 @@ public:
     items_.push_back(std::move(v));
     return items_.back();
   }
+  // The length of an array.
+  std::size_t size() const { return items_.size(); }
   // Member of an object, appended (null) if absent.
   Json& operator[](const std::string& key)
   {

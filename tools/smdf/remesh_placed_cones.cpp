@@ -481,6 +481,7 @@ Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Me
       if(const Json* ig = f.json.find("integer_grid_map")) {   // folds before and after rounding
         a["seamless_folded_triangles"] = *ig->find("seamless_folded_triangles");
         a["folded_triangles"] = *ig->find("folded_triangles");
+        a["min_area_ratio"] = *ig->find("min_area_ratio");
       }
       attempts.push_back(std::move(a));
       if(!repeated) failure = f;
@@ -491,10 +492,10 @@ Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Me
   throw failure;
 }
 
-void write_uv_obj(const std::string& path, const Mesh& on)
+std::string uv_obj_text(const Mesh& on)
 {
   const auto found = on.property_map<halfedge_descriptor, std::array<double, 2>>("h:smdf_remesh_uv");
-  if(!found.second) throw Error(path + ": no integer-grid map was made [internal]");
+  if(!found.second) throw Error("no integer-grid map was made [internal]");
   const auto& uv = found.first;
   std::ostringstream os = number_stream();
   os << "# integer-grid map (smdf remesh): a seamless parametrization, grid units; across every seam the two\n"
@@ -514,7 +515,7 @@ void write_uv_obj(const std::string& path, const Mesh& on)
     for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, on), on)) os << ' ' << index[std::size_t(target(h, on))] << '/' << ++t;
     os << '\n';
   }
-  write_lines_file(path, os.str());
+  return os.str();
 }
 
 } // namespace smdf_cli

@@ -71,9 +71,9 @@ Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Me
                                          const std::function<void(const char*)>& stage,
                                          const std::function<void(Edge_length_property)>& finish, bool keep_input_faces, bool tighten_bound);
 
-// Writes the integer-grid map made by placed_cones_metric() on `on` (the input, or its
-// refinement) as OBJ: the vertices, one `vt` per face corner (grid units), faces `v/vt`.
-void write_uv_obj(const std::string& path, const Mesh& on);
+// The integer-grid map made by placed_cones_metric() on `on` (the input, or its refinement) as
+// OBJ text: the vertices, one `vt` per face corner (grid units), faces `v/vt`.
+std::string uv_obj_text(const Mesh& on);
 
 } // namespace smdf_cli
 
