@@ -329,9 +329,9 @@ Json run_remesh(const Args& args)
     try {
       lengths = placed_cones_metric(file, mesh, refined, intrinsic, surface, requested_h, requested_faces, distortion_bound, max_cones, cone_spacing, out,
                                     metric, stage, [&](Edge_length_property map_lengths) {
-        if(args.has("uv-out") && intrinsic.of != nullptr)
-          throw Error(file + ": --uv-out: the flat cone metric needed intrinsic edge flips, so the integer-grid map lives on an intrinsic "
-                             "triangulation whose faces are not the input's [unsupported]");
+        if(args.has("uv-out") && intrinsic.of != nullptr)   // this attempt fails; another's metric may need no flips
+          throw Failed_result{out, file + ": --uv-out: the flat cone metric needed intrinsic edge flips, so the integer-grid map lives on an "
+                                          "intrinsic triangulation whose faces are not the input's", 3};
         if(args.has("uv-out") && first_valid_map.empty()) {
           first_valid_map = uv_obj_text(*surface);
           const Json* recorded = out.find("placement_attempts");
