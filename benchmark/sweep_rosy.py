@@ -294,7 +294,8 @@ def plan_runs(mesh, seed):
                 if v not in c.cones:
                     c.cones[v] = 1 if units > c.total() else -1
             if c.total() == units:
-                args = ["--cone-indices", c.spec(), "--N", str(N), "--boundary", mode]
+                # (no cone at all when the boundary alone carries the total: the annulus at N = 2)
+                args = (["--cone-indices", c.spec()] if c.cones else []) + ["--N", str(N), "--boundary", mode]
                 runs.append(dict(mode="touch-" + mode[:4], N=N, args=args, want=c.want(), ncones=len(c.cones)))
     return runs
 
