@@ -63,9 +63,8 @@ struct Untangle_status
 /// Unfolds the faces of `remesh` that are inverted with respect to the surface `input` (a face
 /// is inverted when its area vector points against the input's normals at its corners, the test
 /// of tessellate_flat_metric() and polyhedron_remesh(), or against the input's normal at the
-/// point of the input nearest its centroid: a face bent over a ridge or around a thin part) by
-/// moving vertices near them along the
-/// input: each round smooths the vertices within a ring of the inverted faces (one ring wider
+/// point of the input nearest its centroid, of every input face there: a face bent over a ridge
+/// or around a thin part) by moving vertices near them along the input: each round smooths the vertices within a ring of the inverted faces (one ring wider
 /// each round, up to `number_of_iterations` rounds) towards the mean of their neighbours (a
 /// first attempt with whole steps; if a face stays inverted, a second from the grid's positions
 /// that falls back on half and quarter steps where a whole one is refused; if one still does, a
@@ -253,9 +252,9 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
   }
   // How face f faces the input: the cosine between its area vector and the sum of the normals
   // under its corners, or the input's normals at the point nearest its centroid (of every face
-  // there, on a side or corner), whichever is least (at most 0: inverted). The second sees a face bent over a ridge or a thin part whose corners
-  // agree with the input but whose middle does not (feline at 4,000 quads: 3 such faces, none by
-  // the corners).
+  // there, on a side or corner), whichever is least (at most 0: inverted). The second sees a
+  // face bent over a ridge or a thin part whose corners agree with the input but whose middle
+  // does not (feline at 4,000 quads: 3 such faces, none by the corners).
   auto facing = [&](std::size_t f) {
     const auto c = fv[f];
     V3 area, sum;
