@@ -72,8 +72,8 @@ struct Grid_tessellation_status
 namespace internal {
 
 // An integer-exact affine map of lattice coordinates: p -> R p + t, R a rotation of the grid
-// (entries in {-1, 0, 1}), t integer. Applied to coordinates that are multiples of 2^-20 below
-// 2^27 in magnitude it is exact in double precision.
+// (entries in {-1, 0, 1}), t integer. Applied to coordinates that are multiples of 2^-30 below
+// 2^21 in magnitude it is exact in double precision.
 struct Lattice_motion
 {
   int r[4] = {1, 0, 0, 1};
@@ -102,7 +102,7 @@ struct Lattice_motion
   }
 };
 
-inline double dyadic(double x) { return std::round(x * 1048576.) / 1048576.; }   // 2^20
+inline double dyadic(double x) { return std::round(x * 1073741824.) / 1073741824.; }   // 2^30
 
 } // namespace internal
 
@@ -116,7 +116,7 @@ inline double dyadic(double x) { return std::round(x * 1048576.) / 1048576.; }  
 /// \f$4 - K/(\pi/2)\f$ (\f$6 - K/(\pi/3)\f$), every other interior vertex has valence 4 (6).
 ///
 /// Exactness: the layout is converted to lattice coordinates, rounded to multiples of
-/// \f$2^{-20}\f$, the motions rounded to exact lattice symmetries, and the corners of every vertex
+/// \f$2^{-30}\f$, the motions rounded to exact lattice symmetries, and the corners of every vertex
 /// re-derived from one of them through those motions, so that the layouts on both sides of every
 /// seam are exact images of each other. Grid points are then classified against the triangles
 /// with exact orientation predicates (`Exact_predicates_inexact_constructions_kernel`): a point
@@ -257,7 +257,9 @@ Grid_tessellation_status tessellate_flat_metric(const TriangleMesh& tm, const Fl
   }();
   const double step = square ? CGAL_PI / 2 : CGAL_PI / 3;
 
-  // 2. exact layout: lattice coordinates on 2^-20, motions rounded to lattice symmetries
+  // 2. exact layout: lattice coordinates on 2^-30 (2^-20 collapsed a feline triangle a millionth of a
+  // grid unit wide; coordinates below 2^21 stay exact under the lattice motions), motions
+  // rounded to lattice symmetries
   std::vector<std::array<Point_2, 3>> uv(nf);
   for(std::size_t f = 0; f < nf; ++f)
     for(int k = 0; k < 3; ++k) {
