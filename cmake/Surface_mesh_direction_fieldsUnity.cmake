@@ -3,6 +3,20 @@
 # (used by the tool and by the fuzz target that links the whole tool).
 include_guard(GLOBAL)
 
+# smdf_tool_sources(out dir): every source of the smdf tool, as paths under dir. The tool and the
+# fuzz target that links the whole tool both take this list, so a new source file cannot be
+# missing from one of them.
+function(smdf_tool_sources out dir)
+  set(names main args help huge_page_new common cmd_info cmd_generators cmd_holonomy cmd_connection
+    cmd_singularities cmd_cone_metric cmd_rosy rosy_inputs rosy_punched cmd_remesh cmd_remesh_help
+    remesh_measures remesh_pictures remesh_polyhedra remesh_untangle remesh_placed_cones)
+  set(paths)
+  foreach(n ${names})
+    list(APPEND paths "${dir}/${n}.cpp")
+  endforeach()
+  set(${out} ${paths} PARENT_SCOPE)
+endfunction()
+
 # Each heavy source includes CGAL and the package; as two unity files, every template the
 # commands share (Surface_mesh, the reader, Trivial_connection, the cone metric) is instantiated
 # twice instead of eleven times (fresh Release build of smdf on 2 cores: 263 s as 15 files,

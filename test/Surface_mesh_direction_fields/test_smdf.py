@@ -1949,6 +1949,21 @@ def test_shared_robustness(smdf, c, meshes, tmp):
                 bad += 1
                 c.check(False, "smdf info on random bytes %s: clean outcome (rc=%s, stderr=%r)" % (ext, rc, err[:200]))
     c.check(bad == 0, "%d runs on truncated, corrupted and random mesh files end cleanly" % cases)
+    # PLY headers CGAL's reader mishandles (a count of -4 read as 2^64 - 4 ran out of memory): each
+    # is refused with exit 1 and the reason, before CGAL reads it
+    body = "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"
+    headers = {"negative count": ("element vertex -4", "property float x\nproperty float y\nproperty float z"),
+               "count beyond the file": ("element vertex 100000000", "property float x\nproperty float y\nproperty float z"),
+               "unknown type": ("element vertex 3", "property flo x\nproperty float y\nproperty float z"),
+               "unknown list type": ("element vertex 3", "property float x\nproperty float y\nproperty float z\n"
+                                     "element face 1\nproperty list uchar integer vertex_indices")}
+    for what, (element, properties) in headers.items():
+        f = os.path.join(tmp, "bad_header.ply")
+        with open(f, "w") as fh:
+            fh.write("ply\nformat ascii 1.0\n%s\n%s\nend_header\n%s" % (element, properties, body))
+        rc, out, err = smdf.run(["info", f])
+        c.check(rc == 1 and outcome_ok(rc, out, err) and b"is not a valid PLY file: header line" in err,
+                "PLY header with %s: exit 1 with the reason (rc=%s, %s)" % (what, rc, err.decode().strip()))
     # malformed lists and files for the tool's parsers
     spot = os.path.join(meshes, "spot_c3d.obj")
     junk = ["", ",", "0", "0:", ":1", "0:1,", "0:1:2", "a:b", "0:1/0", "0:1e999", "-1:1", "99999999:1",

@@ -26,7 +26,8 @@
 //      one-line summary of `smdf --help`, the description of `smdf <name> --help`, run_<name>;
 //   2. declare both in commands.h;
 //   3. add `<name>_command()` to the table of commands() below (its place is its place in
-//      `smdf --help`) and cmd_<name>.cpp to CMakeLists.txt.
+//      `smdf --help`) and <name> to smdf_tool_sources() in
+//      cmake/Surface_mesh_direction_fieldsUnity.cmake (the tool and the fuzz target share it).
 // Parsing, --help and error reporting are shared. Throw `Usage_error` for bad invocations and
 // `Error` (or let `SMDF::Input_error` escape, wrapped by `on_file()`) for bad input; throw
 // `Failed_result` to print the JSON object and still fail (exit code 3). Helpers needed by

@@ -304,12 +304,26 @@ void read_off(const std::string& filename, std::vector<Point>& points,
   }
 }
 
-// Checks a PLY header before CGAL's reader sees it: CGAL 5.5 reads a `property` line that
-// comes before any `element` line through back() of an empty vector (undefined behaviour,
-// found by fuzzing), and it accepts unknown header keywords silently.
+inline bool is_ply_scalar_type(const std::string& t)
+{
+  static const char* const types[] = {"char", "uchar", "short", "ushort", "int", "uint", "float", "double",
+                                      "int8", "uint8", "int16", "uint16", "int32", "uint32", "float32", "float64"};
+  for(const char* known : types)
+    if(t == known) return true;
+  return false;
+}
+
+// Checks a PLY header before CGAL's reader sees it. CGAL 5.5
+// - reads a `property` line that comes before any `element` line through back() of an empty
+//   vector (undefined behaviour, found by fuzzing);
+// - reads an element count of -4 as 2^64 - 4 and pushes vertices until memory runs out (found by
+//   fuzzing); every element takes at least one byte, so a count above the file's size is refused;
+// - accepts unknown header keywords and property types silently.
 inline void check_ply_header(const std::string& filename)
 {
-  std::ifstream in(filename, std::ios::binary);
+  std::ifstream in(filename, std::ios::binary | std::ios::ate);
+  const long long file_size = in ? static_cast<long long>(in.tellg()) : 0;
+  in.seekg(0);
   std::string line;
   std::size_t line_no = 0;
   bool element = false;
@@ -325,8 +339,30 @@ inline void check_ply_header(const std::string& filename)
     is >> key;
     if(line_no == 1) { if(key != "ply") fail("the first line must be 'ply'"); continue; }
     if(key == "end_header") return;
-    if(key == "element") { element = true; continue; }
-    if(key == "property") { if(!element) fail("a property before any element"); continue; }
+    if(key == "element") {
+      std::string name, count_text, rest;
+      is >> name >> count_text;
+      if(name.empty() || count_text.empty() || (is >> rest)) fail("an element needs a name and a count");
+      if(count_text.find_first_not_of("0123456789") != std::string::npos || count_text.size() > 18)
+        fail("element count '" + count_text + "' is not a non-negative integer");
+      if(std::stoll(count_text) > file_size)
+        fail("element count " + count_text + " exceeds the file's size (" + std::to_string(file_size) + " bytes)");
+      element = true;
+      continue;
+    }
+    if(key == "property") {
+      if(!element) fail("a property before any element");
+      std::string type, count_type, index_type;
+      is >> type;
+      if(type == "list") {
+        is >> count_type >> index_type;
+        if(!is_ply_scalar_type(count_type) || !is_ply_scalar_type(index_type))
+          fail("a list property needs two known types, got '" + count_type + "' and '" + index_type + "'");
+      } else if(!is_ply_scalar_type(type)) {
+        fail("unknown property type '" + type + "'");
+      }
+      continue;
+    }
     if(key != "format" && key != "comment" && key != "obj_info" && !key.empty())
       fail("unknown keyword");
   }
