@@ -248,6 +248,28 @@ std::size_t flipped_at_centroid(const Surface_mesh& in_sm, const Surface_mesh& o
   return flipped;
 }
 
+// The faces of `out` with a corner whose scaled Jacobian along the normal of the input face
+// nearest their centroid is at most 0 (the measure of benchmark/compare_quadriflow.py: a quad
+// bent over a ridge can be convex against its own area vector and still fold by it), computed
+// here independently of the library.
+std::size_t folded_at_centroid(const Surface_mesh& in_sm, const Surface_mesh& out, const Input_tree& tree)
+{
+  std::size_t folded = 0;
+  for(auto f : faces(out)) {
+    std::vector<K::Point_3> p;
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, out), out)) p.push_back(out.point(target(h, out)));
+    K::Vector_3 c(0, 0, 0);
+    for(const auto& q : p) c = c + (q - CGAL::ORIGIN) / double(p.size());
+    const auto g = halfedge(tree.closest_point_and_primitive(CGAL::ORIGIN + c).second, in_sm);
+    const K::Vector_3 n = CGAL::normal(in_sm.point(source(g, in_sm)), in_sm.point(target(g, in_sm)), in_sm.point(target(next(g, in_sm), in_sm)));
+    bool bad = false;
+    for(std::size_t i = 0; i < p.size(); ++i)
+      bad = bad || CGAL::cross_product(p[(i + 1) % p.size()] - p[i], p[(i + p.size() - 1) % p.size()] - p[i]) * n <= 0;
+    folded += bad;
+  }
+  return folded;
+}
+
 // The read-back of a remesh, from the output mesh alone.
 template <typename InputMesh>
 void check_remesh(const InputMesh& input, const Surface_mesh& in_sm, const Surface_mesh& out, const SMDF::Grid_tessellation_status& st,
@@ -1000,7 +1022,8 @@ void seam_relaxation(const std::string& dir)
 
 // Cones for remeshing (place_remeshing_cones()) on every shared mesh of one component, closed
 // and open, N = 4 or 6 and the bound drawn at random. Read back from the result alone: every
-// curvature +-2pi/N, the sum 2 pi chi, no two
+// curvature 2pi/N or -2pi/N (-4pi/N allowed where 2 pi chi alone needs more than 250 cones of
+// -2pi/N: the cheese, of genus 133), the sum 2 pi chi, no two
 // cones adjacent, the metric's curvature recomputed from its lengths (on its own triangulation)
 // equal to the cones and zero elsewhere, and its scale spread recomputed from the conformal
 // factors (away from the cones' rings and isolated vertices) equal to the reported one, within the bound on success.
@@ -1027,9 +1050,13 @@ bool check_remeshing_cones(const Mesh& mesh, int N, double bound, const std::str
     sum += c.second;
     const double k = c.second / q;
     multiples = multiples && std::abs(k - std::round(k)) < 1e-12;
-    ranged = ranged && std::abs(std::round(k)) == 1;   // one quantum each
+    ranged = ranged && (std::round(k) == 1 || (std::round(k) <= -1 && std::round(k) >= -st.negative_cone_quanta));
   }
-  SMDF_CHECK_MSG(multiples && ranged, what);
+  // the default: two quanta for a negative cone where 2 pi chi alone would fill over half of the
+  // 500 cones allowed
+  const int quanta = -chi * N > 250 ? 2 : 1;
+  SMDF_CHECK_MSG(multiples && ranged && st.negative_cone_quanta == quanta,
+                 what << ": curvatures of one quantum, or up to " << quanta << " for negative ones (" << st.negative_cone_quanta << ")");
   SMDF_CHECK_MSG(K.size() == st.cones.size(), what << ": a vertex listed twice");
   SMDF_CHECK_MSG(std::abs(sum - 2 * CGAL_PI * chi) < 1e-9, what << ": cones sum to " << sum << ", 2 pi chi = " << 2 * CGAL_PI * chi);
   bool apart = true;
@@ -1149,8 +1176,38 @@ void remeshing_cones(const std::string& dir)
     spaced += st.crowded_cones == 0 && st.success;
   }
   SMDF_CHECK(spaced >= 3);
+  // maximum_negative_cone_quanta(2) on the double torus (chi = -2): fewer cones than with one
+  // quantum each, some of curvature -pi (valence 6), the sum 2 pi chi either way
+  {
+    auto l1 = get(CGAL::dynamic_edge_property_t<double>(), sm), l2 = get(CGAL::dynamic_edge_property_t<double>(), sm);
+    const auto one = SMDF::place_remeshing_cones(sm, l1, SMDF::parameters::maximum_negative_cone_quanta(1));
+    const auto two = SMDF::place_remeshing_cones(sm, l2, SMDF::parameters::maximum_negative_cone_quanta(2));
+    auto tally = [](const auto& st, int& doubled, double& sum) {
+      bool ranged = true;
+      doubled = 0;
+      sum = 0;
+      for(const auto& c : st.cones) {
+        const long k = std::lround(c.second / (CGAL_PI / 2));
+        ranged = ranged && std::abs(c.second - k * CGAL_PI / 2) < 1e-12 && (k == 1 || (k <= -1 && k >= -st.negative_cone_quanta));
+        doubled += k == -2;
+        sum += c.second;
+      }
+      return ranged;
+    };
+    int d1 = 0, d2 = 0;
+    double s1 = 0, s2 = 0;
+    const bool r1 = tally(one, d1, s1), r2 = tally(two, d2, s2);
+    SMDF_CHECK_MSG(r1 && r2 && d1 == 0 && d2 > 0 && two.cones.size() < one.cones.size() && std::abs(s1 + 4 * CGAL_PI) < 1e-9 &&
+                       std::abs(s2 + 4 * CGAL_PI) < 1e-9 && one.negative_cone_quanta == 1 && two.negative_cone_quanta == 2,
+                   "double torus: " << one.cones.size() << " cones of one quantum, " << two.cones.size() << " with up to two (" << d2
+                                    << " of -pi); sums " << s1 << " and " << s2);
+  }
   // bad input
   bool threw = false;
+  try { SMDF::place_remeshing_cones(sm, get(CGAL::dynamic_edge_property_t<double>(), sm), SMDF::parameters::maximum_negative_cone_quanta(0)); }
+  catch(const SMDF::Input_error&) { threw = true; }
+  SMDF_CHECK(threw);
+  threw = false;
   try { SMDF::place_remeshing_cones(sm, get(CGAL::dynamic_edge_property_t<double>(), sm), SMDF::parameters::distortion_bound(-1.)); }
   catch(const SMDF::Input_error&) { threw = true; }
   SMDF_CHECK(threw);
@@ -1740,6 +1797,12 @@ void untangling(const std::string& dir)
       const Input_tree tree(faces(mesh).first, faces(mesh).second, mesh);
       const std::size_t middle = flipped_at_centroid(mesh, out, tree);
       SMDF_CHECK_MSG(middle == 0, what << ": no face flipped against the input's normal nearest its centroid either (" << middle << " are)");
+      // the untangler's folded count includes corners against the input's normals nearest the
+      // centroid (of every input face there: at least the test's, which takes one)
+      const std::size_t folded_middle = folded_at_centroid(mesh, out, tree);
+      SMDF_CHECK_MSG(folded_middle <= us.folded_after,
+                     what << ": faces folded against the input's normal nearest their centroid, by the test's count (" << folded_middle
+                          << "), within the untangler's folded faces left (" << us.folded_after << ")");
     }
     if(quads == 8000) {
       // the same untangling with the input as a Polyhedron_3 (the grid's positions again)

@@ -2348,6 +2348,15 @@ def test_shared_remesh_open(smdf, c, meshes, tmp):
                 "remesh feline at 4,000 quads: the faces bent over a thin part untangled (%r inverted by the untangler's count, %r by the "
                 "grid's, %r after; %r flipped)" % (u.get("inverted_before"), u.get("grid_inverted_faces"), u.get("inverted_after"),
                                                    r.get("flipped_faces")))
+        # the quads bent there are convex against their own area vector, but not all against the
+        # input's normal nearest their centroid (compare_quadriflow.py's scaled Jacobian: -0.64
+        # before the untangler counted it); the untangler moves those too
+        q = r.get("quality", {})
+        c.check(q.get("faces_folded_on_input") == 0 and q.get("min_scaled_jacobian_on_input", -1) > 0
+                and u.get("folded_before", 0) > u.get("folded_after", 1),
+                "remesh feline at 4,000 quads: no face folded against the input's normal nearest its centroid (%r; min scaled "
+                "Jacobian there %r; folded %r -> %r by the untangler's count)" % (q.get("faces_folded_on_input"),
+                q.get("min_scaled_jacobian_on_input"), u.get("folded_before"), u.get("folded_after")))
         automatic_remesh_read_back(c, "feline_vhacd.off", feline, os.path.join(tmp, "feline.obj"), r, "remesh feline")
 
 
@@ -2370,13 +2379,21 @@ def test_shared_remesh_refinement(smdf, c, meshes, tmp):
             % (ref.get("faces"), m.get("max_curvature_error")))
     c.check(len(lines) == 1 and "not symmetries" in lines[0] and doc.get("failing_cut_edge_count", 0) > 0,
             "remesh cheburashka --cones: exit 3, the failing cut edges named in one line (%r)" % lines[-1:])
-    # automatic cones on a genus-133 mesh: the placement needs over 1,056 cones (4|chi|), more
-    # than --max-cones: refused at once (it ran over 4 minutes), with the numbers to change
+    # automatic cones on a genus-133 mesh: 1,056 cones of -pi/2 (4|chi|) alone exceed half of
+    # --max-cones, so negative cones take two quanta (-pi, valence 6), 528 at least; still more
+    # than --max-cones: refused at once (1,208 cones ran over 4 minutes), with the numbers to change
     cheese = os.path.join(meshes, "cheese_cgal.off")
     rc, o, err = smdf.run(["remesh", cheese, "--faces", "4000", "--out", os.path.join(tmp, "ch.off")])
     lines = err.decode().strip().splitlines()
-    c.check(rc == 3 and len(lines) == 1 and "--max-cones 500" in lines[0] and "4|chi| = 1056" in lines[0],
+    c.check(rc == 3 and len(lines) == 1 and "--max-cones 500" in lines[0] and "4|chi|/2 = 528" in lines[0],
             "remesh cheese (genus 133): more cones than --max-cones, one line with the minimum (rc=%s, %r)" % (rc, lines[-1:]))
+    doc = json.loads(o.decode()) if o else {}
+    k = [round(x["curvature"] / (math.pi / 2)) for x in doc.get("placed_cones", [])]
+    exact = all(abs(x["curvature"] - q * math.pi / 2) < 1e-12 for x, q in zip(doc.get("placed_cones", []), k))
+    c.check(doc.get("placement", {}).get("negative_cone_quanta") == 2 and exact and set(k) <= {1, -1, -2} and k.count(-2) > 0
+            and sum(k) == -1056 and len(k) < 1056,
+            "remesh cheese: cones of pi/2, -pi/2 and -pi (%d of -pi), summing to 2 pi chi (%d quarter turns), %d cones"
+            % (k.count(-2), sum(k), len(k)))
     # automatic cones whose metric needs intrinsic flips (the wing's triangulation and its
     # refinement cannot carry it): the map and grid on the intrinsic triangulation, every vertex
     # placed on the input through the common subdivision
@@ -3002,7 +3019,7 @@ def test_remesh_sweep(smdf, c, shared):
     pure quads, the input's topology, irregular vertices exactly the placed cones and corners, no
     face flipped, on the input), or exits 3 with one line saying why. Measured 2026-12-07, with
     tighter bounds, cone separation and the untangler counting faces flipped nearest their
-    centroid: 27 of 28 succeed (the cheese needs over 1,056 cones); fewer than 26 fails the test."""
+    centroid: 27 of 28 succeed (the cheese needs over 500 cones, --max-cones, even of two quanta each); fewer than 26 fails the test."""
     meshes = os.path.join(shared, "meshes")
     with open(os.path.join(shared, "MANIFEST.tsv"), newline="") as f:
         rows = list(csv.DictReader(f, delimiter="\t"))

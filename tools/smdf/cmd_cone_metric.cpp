@@ -403,6 +403,7 @@ Json run_cone_metric(const Args& args)
     placement["message"] = ps.message;
     placement["distortion_bound"] = ps.distortion_bound;
     placement["scale_spread"] = ps.scale_spread;
+    placement["negative_cone_quanta"] = ps.negative_cone_quanta;
     placement["linear_scale_spread"] = ps.linear_scale_spread;
     placement["placement_rounds"] = ps.placement_rounds;
     Json cones = Json::array();
@@ -528,6 +529,8 @@ Command cone_metric_command()
           "varies by at most --distortion-bound away from the cones and their neighbours. The JSON\n"
           "then has placement: {success, message, distortion_bound, scale_spread (max u - min u\n"
           "read back from the metric), linear_scale_spread (the linear model's), placement_rounds,\n"
+          "negative_cone_quanta (2 where 2 pi chi alone needs over half of --max-cones cones of -pi/2:\n"
+          "negative cones of -pi then, vertices of valence 6; else 1),\n"
           "placed_cones: [{vertex, curvature}]}, and the metric is that of the placed cones. Bound\n"
           "not reached with --max-cones cones: the outputs are written, exit 3.\n",
           run_cone_metric};

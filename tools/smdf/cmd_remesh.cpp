@@ -147,18 +147,28 @@ Json run_remesh(const Args& args)
   const Input_faces_tree input_tree(mesh);   // for the read-backs of every attempt
   // Every route's untangling (every other check passed): the inverted faces (the tessellation's
   // count, `inverted`), the faces flipped against the input's normal nearest their centroid (a
-  // face bent over a ridge, which the test at the corners misses) and the quads folded at a
-  // corner. Returns the remesh's flipped faces after it.
+  // face bent over a ridge, which the test at the corners misses) and the faces folded at a
+  // corner, against their own area vector or that normal. Returns the measures against the
+  // input after it.
   auto untangle_if_needed = [&](Mesh& remesh, bool& success, std::string& failure, std::size_t& inverted, Json& timings) {
-    std::size_t flipped = faces_flipped_at_closest_point(input_tree, remesh);
-    if(untangle && (inverted > 0 || (success && (flipped > 0 || nonconvex_quads(remesh) > 0)))) {
+    On_input_measures on_input = measures_on_input(input_tree, remesh);
+    if(untangle && (inverted > 0 || (success && (on_input.flipped_faces > 0 || on_input.folded_faces > 0 || nonconvex_quads(remesh) > 0)))) {
       stage("untangling inverted faces");
       out["untangle"] = untangle_inverted(mesh, remesh, success, inverted, untangle_message);
       if(!success) failure += "; untangling: " + untangle_message;
       timings["untangle_s"] = clock.lap();
-      flipped = faces_flipped_at_closest_point(input_tree, remesh);
+      on_input = measures_on_input(input_tree, remesh);
     }
-    return flipped;
+    return on_input;
+  };
+  // the scaled Jacobian against the input (the measure of compare_quadriflow.py) beside the
+  // remesh's own
+  auto quality_json = [&](const Mesh& remesh, const On_input_measures& on_input) {
+    Json q = remesh_quality(remesh);
+    q["min_scaled_jacobian_on_input"] = on_input.min_scaled_jacobian;
+    q["mean_scaled_jacobian_on_input"] = on_input.mean_scaled_jacobian;
+    q["faces_folded_on_input"] = on_input.folded_faces;
+    return q;
   };
   // Every route's last read-back, stricter than the library's normals under the corners: no face
   // whose normal opposes the input's at the input point nearest its centroid.
@@ -207,7 +217,7 @@ Json run_remesh(const Args& args)
       // common subdivision, and the faces inverted there are counted again (the tessellation saw
       // the intrinsic triangles' chords)
       SMDF::place_tessellation_on_input(intrinsic.triangulation, *intrinsic.of, st, remesh);
-      if(st.inverted_faces == 0) st.inverted_faces = faces_flipped_at_closest_point(input_tree, remesh);
+      if(st.inverted_faces == 0) st.inverted_faces = measures_on_input(input_tree, remesh).flipped_faces;
     }
     const double tessellation_s = clock.lap();
     out["edge_length"] = h;
@@ -235,7 +245,7 @@ Json run_remesh(const Args& args)
     bool success = st.success;
     std::string failure = st.message;
     std::size_t inverted = st.inverted_faces;
-    const std::size_t flipped = num_faces(remesh) > 0 ? untangle_if_needed(remesh, success, failure, inverted, timings) : 0;
+    const On_input_measures on_input = num_faces(remesh) > 0 ? untangle_if_needed(remesh, success, failure, inverted, timings) : On_input_measures();
     if(num_faces(remesh) > 0) {
       Json sizes = Json::object(), val = Json::object();
       std::map<std::size_t, std::size_t> by_size;
@@ -255,8 +265,8 @@ Json run_remesh(const Args& args)
       }
       out["irregular_vertices"] = std::move(irr);
       out["inverted_faces"] = inverted;
-      check_flipped_faces(flipped, success, failure);
-      out["quality"] = remesh_quality(remesh);
+      check_flipped_faces(on_input.flipped_faces, success, failure);
+      out["quality"] = quality_json(remesh, on_input);
       // automatic cones promise a valid quad mesh: a quad still folded at a corner after untangling
       // (scaled Jacobian <= 0) fails it (the polycube routes report such quads and keep exit 0)
       if(place && success) {
@@ -499,7 +509,7 @@ Json run_remesh(const Args& args)
           irr.push_back(std::move(o));
         }
       }
-      const std::size_t flipped = num_faces(remesh) > 0 ? untangle_if_needed(remesh, success, failure, inverted, timings) : 0;
+      const On_input_measures on_input = num_faces(remesh) > 0 ? untangle_if_needed(remesh, success, failure, inverted, timings) : On_input_measures();
       if(num_faces(remesh) > 0) {
         Json sizes = Json::object(), val = Json::object();
         sizes["4"] = rs.quads;
@@ -511,8 +521,8 @@ Json run_remesh(const Args& args)
         out["unexpected_valences"] = rs.unexpected_valences;
         out["irregular_vertices"] = std::move(irr);
         out["inverted_faces"] = inverted;
-        check_flipped_faces(flipped, success, failure);
-        out["quality"] = remesh_quality(remesh);
+        check_flipped_faces(on_input.flipped_faces, success, failure);
+        out["quality"] = quality_json(remesh, on_input);
         out["distance_over_edge_length"] = remesh_distances(input_tree, remesh, side / n);
         out["area_ratio"] = remesh_area_ratio(mesh, remesh);
         if(!CGAL::IO::write_polygon_mesh(out_file, remesh, CGAL::parameters::stream_precision(17)))

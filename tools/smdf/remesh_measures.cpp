@@ -97,28 +97,41 @@ face_descriptor Input_faces_tree::closest_face(const K::Point_3& p) const { retu
 
 double Input_faces_tree::squared_distance(const K::Point_3& p) const { return tree().tree.squared_distance(p); }
 
-std::size_t faces_flipped_at_closest_point(const Input_faces_tree& tree, const Mesh& out)
+On_input_measures measures_on_input(const Input_faces_tree& tree, const Mesh& out)
 {
+  On_input_measures r;
   const Mesh& input = tree.mesh();
-  if(num_faces(input) == 0) return 0;
-  std::size_t flipped = 0;
+  if(num_faces(input) == 0 || num_faces(out) == 0) return r;
   std::vector<K::Point_3> corners;
+  double sum = 0;
+  r.min_scaled_jacobian = 1;
   for(face_descriptor f : faces(out)) {
     corners.clear();
     for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, out), out)) corners.push_back(out.point(target(h, out)));
     double c[3] = {0, 0, 0};
     for(const K::Point_3& p : corners) { c[0] += p.x(); c[1] += p.y(); c[2] += p.z(); }
-    const double k = double(corners.size());
-    const K::Point_3 centroid(c[0] / k, c[1] / k, c[2] / k);
+    const std::size_t k = corners.size();
+    const K::Point_3 centroid(c[0] / double(k), c[1] / double(k), c[2] / double(k));
     K::Vector_3 area(0, 0, 0);   // the polygon's area vector (fan from its first corner)
-    for(std::size_t i = 1; i + 1 < corners.size(); ++i) area = area + CGAL::cross_product(corners[i] - corners[0], corners[i + 1] - corners[0]);
+    for(std::size_t i = 1; i + 1 < k; ++i) area = area + CGAL::cross_product(corners[i] - corners[0], corners[i + 1] - corners[0]);
     const face_descriptor near = tree.closest_face(centroid);
     const halfedge_descriptor g = halfedge(near, input);
-    const K::Vector_3 n = CGAL::cross_product(input.point(target(g, input)) - input.point(source(g, input)),
-                                              input.point(target(next(g, input), input)) - input.point(source(g, input)));
-    flipped += area * n < 0;
+    K::Vector_3 n = CGAL::cross_product(input.point(target(g, input)) - input.point(source(g, input)),
+                                        input.point(target(next(g, input), input)) - input.point(source(g, input)));
+    r.flipped_faces += area * n < 0;
+    const double ln = std::sqrt(n.squared_length());
+    double worst = 1;
+    for(std::size_t i = 0; i < k; ++i) {
+      const K::Vector_3 a = corners[(i + 1) % k] - corners[i], b = corners[(i + k - 1) % k] - corners[i];
+      const double l = std::sqrt(a.squared_length() * b.squared_length()) * ln;
+      worst = (std::min)(worst, l > 0 ? (CGAL::cross_product(a, b) * n) / l : -1.);
+    }
+    r.min_scaled_jacobian = (std::min)(r.min_scaled_jacobian, worst);
+    sum += worst;
+    r.folded_faces += worst <= 0;
   }
-  return flipped;
+  r.mean_scaled_jacobian = sum / double(num_faces(out));
+  return r;
 }
 
 // Two-sided distance between input and remesh, over the edge length: output vertices to the

@@ -49,9 +49,17 @@ private:
 // to the input, over the edge length h.
 Json remesh_distances(const Input_faces_tree& input, const Mesh& out, double h);
 
-// The remesh's faces whose area vector points against the normal of the input face nearest to
-// their centroid (flipped against the input).
-std::size_t faces_flipped_at_closest_point(const Input_faces_tree& input, const Mesh& out);
+// The remesh against the input's normal n at the input point nearest each face's centroid (the
+// normal of the input face found there), as quality measures of remeshes take it.
+struct On_input_measures
+{
+  std::size_t flipped_faces = 0;   // area vector against n
+  std::size_t folded_faces = 0;    // some corner's scaled Jacobian along n at most 0
+  // per face its worst corner's scaled Jacobian along n, (a x b) . n / (|a| |b| |n|) with a and
+  // b the corner's edges: the least over the faces and the mean
+  double min_scaled_jacobian = 0, mean_scaled_jacobian = 0;
+};
+On_input_measures measures_on_input(const Input_faces_tree& input, const Mesh& out);
 
 // Area of the remesh (its faces fanned into triangles) over that of the input.
 double remesh_area_ratio(const Mesh& input, const Mesh& out);

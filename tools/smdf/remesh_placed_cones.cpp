@@ -146,6 +146,7 @@ Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, M
   pl["message"] = ps.message;
   pl["distortion_bound"] = ps.distortion_bound;
   pl["scale_spread"] = ps.scale_spread;
+  pl["negative_cone_quanta"] = ps.negative_cone_quanta;
   out["placement"] = std::move(pl);
   metric["source"] = "placed cones";
   if(long(ps.cones.size()) >= max_cones) {
@@ -155,7 +156,8 @@ Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, M
     out["metric"] = metric;
     out["success"] = false;
     throw Failed_result{out, file + ": the placement took " + std::to_string(ps.cones.size()) + " cones, the maximum (--max-cones " +
-                                 std::to_string(max_cones) + ")" + (chi < 0 ? "; this genus needs at least 4|chi| = " + std::to_string(-4 * chi) : std::string()) +
+                                 std::to_string(max_cones) + ")" + (chi < 0 ? "; this genus needs at least " + std::string(ps.negative_cone_quanta > 1 ? "4|chi|/" + std::to_string(ps.negative_cone_quanta) : "4|chi|") +
+                                                        " = " + std::to_string((-4 * chi + ps.negative_cone_quanta - 1) / ps.negative_cone_quanta) : std::string()) +
                                  "; raise --max-cones or --distortion-bound (the integer-grid map's time grows as the cube of its cones and seams)", 3};
   }
   if(!ps.metric.converged) {

@@ -52,7 +52,8 @@ struct Untangle_status
   /// the largest distance a vertex moved, in units of the remesh's mean edge length
   double max_displacement = 0;
   /// faces of four or more corners folded at a corner (not convex: the turn at that corner goes
-  /// against the face's own area vector or the input's normals under it), in the grid ...
+  /// against the face's own area vector, the input's normals under its corners or those at the
+  /// input point nearest its centroid), in the grid ...
   std::size_t folded_before = 0;
   /// ... and at the end: once no face is inverted, their corners are moved too (best effort;
   /// `success` does not depend on it)
@@ -77,7 +78,8 @@ struct Untangle_status
 /// was (the status says how many would have stayed, and how many of those lie across a thin part).
 /// Once none is inverted, faces of four or more corners folded at a corner (not convex: at one
 /// corner the turn goes against the face's own area vector, a negative scaled Jacobian there, or
-/// against the input's normals) get their corners moved by the same pattern search, after steps
+/// against the input's normals under its corners or at the point nearest its centroid, as quality
+/// measures of remeshes take it) get their corners moved by the same pattern search, after steps
 /// towards the neighbours' mean, a move kept only if it folds fewer faces around the vertex, or
 /// as many with the worst corner around it at a larger scaled Jacobian, and inverts none; best
 /// effort, reported as `folded_before` and `folded_after`. A remesh with no inverted and no
@@ -255,6 +257,14 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
   // there, on a side or corner), whichever is least (at most 0: inverted). The second sees a
   // face bent over a ridge or a thin part whose corners agree with the input but whose middle
   // does not (feline at 4,000 quads: 3 such faces, none by the corners).
+  // the input point nearest face f's centroid, and the input face it lies in
+  auto nearest_to_centroid = [&](std::size_t f) {
+    const auto c = fv[f];
+    V3 centroid{{0, 0, 0}};
+    for(std::size_t v : c) for(std::size_t d = 0; d < 3; ++d) centroid[d] += pos[v][d] / double(c.size());
+    const auto q = closest(Input_point(centroid[0], centroid[1], centroid[2]), c[0]);
+    return std::make_pair(V3{{CGAL::to_double(q.first.x()), CGAL::to_double(q.first.y()), CGAL::to_double(q.first.z())}}, q.second);
+  };
   auto facing = [&](std::size_t f) {
     const auto c = fv[f];
     V3 area, sum;
@@ -263,11 +273,8 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
     if(!(la > 0) || !(lu > 0)) return -1.;
     const double at_corners = (area[0] * sum[0] + area[1] * sum[1] + area[2] * sum[2]) / (la * lu);
     if(at_corners <= 0) return at_corners;
-    V3 centroid{{0, 0, 0}};
-    for(std::size_t v : c) for(std::size_t d = 0; d < 3; ++d) centroid[d] += pos[v][d] / double(c.size());
-    const auto q = closest(Input_point(centroid[0], centroid[1], centroid[2]), c[0]);
-    const V3 p = {{CGAL::to_double(q.first.x()), CGAL::to_double(q.first.y()), CGAL::to_double(q.first.z())}};
-    return (std::min)(at_corners, located.least_dot_with_normals_at(p, q.second, tol * tol, V3{{area[0] / la, area[1] / la, area[2] / la}}));
+    const auto q = nearest_to_centroid(f);
+    return (std::min)(at_corners, located.least_dot_with_normals_at(q.first, q.second, tol * tol, V3{{area[0] / la, area[1] / la, area[2] / la}}));
   };
   auto inverted = [&](std::size_t f) { return facing(f) <= 0; };
   auto count_inverted = [&] {
@@ -297,10 +304,34 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
   // One attempt from the grid's positions: up to `max_rounds` rounds, each vertex stepping to its
   // neighbours' mean, or with `fallbacks` to half or a quarter of the way when the whole step is
   // refused. Returns how many faces stay inverted.
-  // How face f turns at its worst corner, against the input (at most 0: folded there).
-  auto corner_turn = [&](std::size_t f, std::size_t* at = nullptr) {
+  // How face f turns at its worst corner (at most 0: folded there): its scaled Jacobian against
+  // its own area vector, the input's normals under its corners and those at the input point
+  // nearest its centroid (of every input face there), the least. The last is how quality
+  // measures of a remesh take it (a quad bent over a ridge can be convex by the first two: the
+  // feline at 4,000 quads had a corner at -0.64 by it and none folded by the others).
+  // `hard`, if given, receives the least of the first two alone (a face folded by them is also
+  // not convex in the remesh's own quality measure, which the search ranks first).
+  // (`at_centroid` false: the first two only, the first pass of the unfolding below)
+  bool at_centroid = true;
+  auto corner_turn = [&](std::size_t f, std::size_t* at = nullptr, double* hard = nullptr) {
     const auto c = fv[f];
-    return internal::worst_corner_turn(c.size(), [&](std::size_t k) { return pos[c[k]]; }, [&](std::size_t k) { return normal[c[k]]; }, at);
+    std::size_t worst_at = 0;
+    double worst = internal::worst_corner_turn(c.size(), [&](std::size_t k) { return pos[c[k]]; }, [&](std::size_t k) { return normal[c[k]]; }, &worst_at);
+    if(hard) *hard = worst;
+    if(worst > 0 && at_centroid) {
+      const auto q = nearest_to_centroid(f);
+      const std::size_t n = c.size();
+      for(std::size_t k = 0; k < n; ++k) {
+        const V3 &o = pos[c[k]], &a = pos[c[(k + 1) % n]], &b = pos[c[(k + n - 1) % n]];
+        const V3 u = {{a[0] - o[0], a[1] - o[1], a[2] - o[2]}}, w = {{b[0] - o[0], b[1] - o[1], b[2] - o[2]}};
+        const double l = std::sqrt((u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]));
+        const V3 x = {{(u[1] * w[2] - u[2] * w[1]) / l, (u[2] * w[0] - u[0] * w[2]) / l, (u[0] * w[1] - u[1] * w[0]) / l}};
+        const double t = located.least_dot_with_normals_at(q.first, q.second, tol * tol, x);
+        if(t < worst) { worst = t; worst_at = k; }
+      }
+    }
+    if(at) *at = worst_at;
+    return worst;
   };
   auto folded_at = [&](std::size_t f, double turn) { return fv[f].size() >= 4 && turn <= 0; };
   auto folded = [&](std::size_t f) { return folded_at(f, corner_turn(f)); };
@@ -322,30 +353,39 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
   // the best kept while it has fewer inverted, then fewer folded faces around v, or as many of
   // both and the worst corner around v turning the right way more.
   auto search = [&](std::size_t v, bool unfold_corners) {
-    auto score = [&](std::size_t& inverted_faces, double& worst) {
+    // (worst_hard: the worst turn by the face's own area vector or the normals under its corners
+    // while some face folds by those, else 0; ties in the counts go to it first, then to worst)
+    auto score = [&](std::size_t& inverted_faces, double& worst_hard, double& worst) {
       inverted_faces = 0;
-      std::size_t folded_faces = 0;
+      std::size_t folded_faces = 0, hard_folded = 0;
       worst = 1;
+      worst_hard = 0;
       for(std::size_t f : vf[v]) {
         const double c = facing(f);
         inverted_faces += c <= 0;
         if(unfold_corners) {
-          const double t = corner_turn(f);
+          double hard;
+          const double t = corner_turn(f, nullptr, &hard);
           folded_faces += folded_at(f, t);
+          hard_folded += folded_at(f, hard);
+          worst_hard = (std::min)(worst_hard, hard);
           worst = (std::min)(worst, t);
         } else {
           worst = (std::min)(worst, c);
         }
       }
-      inverted_faces = inverted_faces * (vf[v].size() + 1) + folded_faces;   // inverted first, then folded
+      // inverted first, then folded by the face's own area vector or the normals under its
+      // corners, then folded at all
+      const std::size_t base = vf[v].size() + 1;
+      inverted_faces = (inverted_faces * base + hard_folded) * base + folded_faces;
     };
     double reach = 0;
     for(std::size_t w : nb[v])
       reach += std::sqrt((pos[w][0] - pos[v][0]) * (pos[w][0] - pos[v][0]) + (pos[w][1] - pos[v][1]) * (pos[w][1] - pos[v][1]) +
                          (pos[w][2] - pos[v][2]) * (pos[w][2] - pos[v][2])) / double(nb[v].size());
     std::size_t best_count;
-    double best_worst;
-    score(best_count, best_worst);
+    double best_hard, best_worst;
+    score(best_count, best_hard, best_worst);
     for(int step = 0; step < (unfold_corners ? 4 : 12); ++step) {
       const V3 n = normal[v];   // a tangent frame at v
       V3 t1 = std::abs(n[0]) < 0.9 ? V3{{0, -n[2], n[1]}} : V3{{-n[2], 0, n[0]}};
@@ -365,12 +405,12 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
         pos[v] = p;
         normal[v] = m;
         std::size_t count;
-        double worst;
-        score(count, worst);
+        double hard, worst;
+        score(count, hard, worst);
         pos[v] = here;
         normal[v] = here_normal;
-        if(!(count < best_count || (count == best_count && worst > best_worst))) return false;
-        best_count = count; best_worst = worst; best_pos = p; best_normal = m; best_under = q.second; improved = true;
+        if(!(count < best_count || (count == best_count && (hard > best_hard || (hard == best_hard && worst > best_worst))))) return false;
+        best_count = count; best_hard = hard; best_worst = worst; best_pos = p; best_normal = m; best_under = q.second; improved = true;
         return true;
       };
       // with unfold_corners (a polish: at most 4 steps) the whole, half and quarter step towards
@@ -471,41 +511,49 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
   // (After the attempts, counted again: an inverted quad is also folded, and the attempts'
   // moves may fold quads they do not invert.)
   st.folded_after = st.folded_before;   // a failed untangling moves nothing
-  if(now == 0) {
-    std::vector<std::size_t> fold;   // the folded faces
-    for(std::size_t f = 0; f < fv.size(); ++f) if(folded(f)) fold.push_back(f);
-    st.folded_after = fold.size();
-    std::vector<char> tried(vs.size(), 0), listed(fv.size(), 0);
-    for(int round = 0; round < max_rounds && !fold.empty(); ++round) {
-      std::vector<std::size_t> touched, next;
-      for(std::size_t f : fold) {
-        // the corner where it folds first, then the others while it stays folded (most quads
-        // unfold at that corner: armadillo 400k, untangling 0.98 -> 0.86 s)
-        std::size_t at = 0;
-        if(!(corner_turn(f, &at) <= 0)) continue;   // unfolded by a move around another face
-        bool pinned = true;   // all its corners held: it stays as it is
-        const std::size_t n = fv[f].size();
-        for(std::size_t i = 0; i < n; ++i) {
-          const std::size_t v = fv[f][(at + i) % n];
-          pinned = pinned && fixed[v];
-          if(fixed[v] || tried[v] || (i > 0 && !folded(f))) continue;
-          tried[v] = 1;
-          touched.push_back(v);
-          search(v, true);
-        }
-        if(pinned && !listed[f]) { listed[f] = 1; next.push_back(f); }
-      }
-      for(std::size_t v : touched)
-        for(std::size_t f : vf[v])
-          if(!listed[f] && folded(f)) { listed[f] = 1; next.push_back(f); }
-      for(std::size_t v : touched) tried[v] = 0;
-      for(std::size_t f : next) listed[f] = 0;
-      const bool fewer = next.size() < fold.size();
-      fold.swap(next);
+  // Two passes: first the folds against the face's own area vector and the normals under its
+  // corners (the remesh's own quality measure: an automatic remesh fails on them), then the
+  // folds against the normals nearest the centroid too, ranked after those (a single pass with
+  // both left the face at 2,500 quads with a quad folded in its own plane, which one pass without
+  // the second kind unfolded).
+  if(now == 0)
+    for(int pass = 0; pass < 2; ++pass) {
+      at_centroid = pass == 1;
+      std::vector<std::size_t> fold;   // the folded faces
+      for(std::size_t f = 0; f < fv.size(); ++f) if(folded(f)) fold.push_back(f);
       st.folded_after = fold.size();
-      if(!fewer) break;
+      std::vector<char> tried(vs.size(), 0), listed(fv.size(), 0);
+      for(int round = 0; round < max_rounds && !fold.empty(); ++round) {
+        std::vector<std::size_t> touched, next;
+        for(std::size_t f : fold) {
+          // the corner where it folds first, then the others while it stays folded (most quads
+          // unfold at that corner: armadillo 400k, untangling 0.98 -> 0.86 s)
+          std::size_t at = 0;
+          if(!(corner_turn(f, &at) <= 0)) continue;   // unfolded by a move around another face
+          bool pinned = true;   // all its corners held: it stays as it is
+          const std::size_t n = fv[f].size();
+          for(std::size_t i = 0; i < n; ++i) {
+            const std::size_t v = fv[f][(at + i) % n];
+            pinned = pinned && fixed[v];
+            if(fixed[v] || tried[v] || (i > 0 && !folded(f))) continue;
+            tried[v] = 1;
+            touched.push_back(v);
+            search(v, true);
+          }
+          if(pinned && !listed[f]) { listed[f] = 1; next.push_back(f); }
+        }
+        for(std::size_t v : touched)
+          for(std::size_t f : vf[v])
+            if(!listed[f] && folded(f)) { listed[f] = 1; next.push_back(f); }
+        for(std::size_t v : touched) tried[v] = 0;
+        for(std::size_t f : next) listed[f] = 0;
+        const bool fewer = next.size() < fold.size();
+        fold.swap(next);
+        st.folded_after = fold.size();
+        if(!fewer) break;
+      }
     }
-  }
+  at_centroid = true;
   st.straddling_faces = count_straddling();
   for(std::size_t f = 0; f < fv.size(); ++f) {   // the others left inverted: next to a vertex that may not move
     if(!inverted(f) || straddles(f)) continue;

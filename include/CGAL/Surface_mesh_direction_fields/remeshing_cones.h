@@ -44,8 +44,9 @@ struct Remeshing_cones_status
   double distortion_bound = 0; ///< the bound used
   /// the cones: interior vertices with their curvature \f$K\f$, boundary vertices (corners of
   /// the remesh's boundary) with their turning \f$\kappa = \pi - \sum\theta\f$; each
-  /// \f$\pm 2\pi/N\f$, summing to \f$2\pi\chi\f$, no two adjacent, in vertex order. On a quad
-  /// remesh an interior cone becomes a vertex of valence \f$4 - K/(\pi/2)\f$.
+  /// \f$2\pi/N\f$ or \f$-2\pi k/N\f$ with \f$1 \le k \le\f$ `negative_cone_quanta`, summing to
+  /// \f$2\pi\chi\f$, no two adjacent, in vertex order. On a quad remesh an interior cone
+  /// becomes a vertex of valence \f$4 - K/(\pi/2)\f$.
   std::vector<std::pair<vertex_descriptor, double>> cones;
   /// \f$\max_v u_v - \min_v u_v\f$ of the flat cone metric with `cones` (its conformal factors
   /// \f$u\f$, lengths scaled by \f$e^{u}\f$): the logarithm of the ratio of its largest to its
@@ -55,7 +56,11 @@ struct Remeshing_cones_status
   double scale_spread = 0;
   /// the same spread predicted by the linearised placement, before the curvatures were rounded
   double linear_scale_spread = 0;
-  int greedy_steps = 0;       ///< quanta placed by the greedy steps (one per cone)
+  int greedy_steps = 0;       ///< greedy steps (one per cone)
+  /// the most quanta of \f$-2\pi/N\f$ one cone may take (`maximum_negative_cone_quanta`, or its
+  /// default for this mesh: 2 when \f$2\pi\chi\f$ alone would take more than half of
+  /// `maximum_number_of_cones` cones of one quantum, else 1)
+  int negative_cone_quanta = 1;
   /// cones placed closer than `minimum_cone_distance` to an earlier one, for want of any other
   /// vertex of the sign needed (0 when every pair of cones is at least that far apart)
   int crowded_cones = 0;
@@ -175,7 +180,11 @@ inline double spread(const std::vector<double>& u, const std::vector<char>& near
 /// (a quad vertex of valence 3 or 5; a boundary corner of angle \f$\pi/2\f$ or \f$3\pi/2\f$),
 /// never next to another cone, and on the boundary only where the boundary itself turns that way
 /// (a convex corner where the input's angle is below \f$3\pi/4\f$, a concave one above
-/// \f$5\pi/4\f$: elsewhere the corner's quads would have an angle near \f$\pi\f$), until the spread \f$\max u - \min u\f$ away from the cones and
+/// \f$5\pi/4\f$: elsewhere the corner's quads would have an angle near \f$\pi\f$). On a mesh of
+/// high genus, whose total \f$2\pi\chi\f$ alone needs many cones, a negative cone may take
+/// several quanta where the total still needs them (`maximum_negative_cone_quanta`: with 2, a quad
+/// vertex of valence 6, half as many cones; the cheese of genus 133 needs 1,056 cones of one
+/// quantum). Placement goes on until the spread \f$\max u - \min u\f$ away from the cones and
 /// their neighbours (where the log scale of a cone metric is singular) is within the bound and
 /// the cones sum to \f$2\pi\chi\f$. One sparse Cholesky factorisation serves every step (one
 /// back-substitution each).
@@ -193,6 +202,8 @@ inline double spread(const std::vector<double>& u, const std::vector<char>& near
 /// \param np `symmetry_order` (\f$N\f$, default 4), `distortion_bound` (\f$B\f$, default 2:
 ///   lengths within a factor \f$e^2 \approx 7.4\f$ of each other; the manual tabulates the cones
 ///   this takes on the shared meshes), `maximum_number_of_cones` (default 500),
+///   `maximum_negative_cone_quanta` (at least 1; default 2 when \f$2\pi\chi\f$ alone would take
+///   more than half of `maximum_number_of_cones` cones of \f$-2\pi/N\f$, else 1),
 ///   `minimum_cone_distance` (default 0: only adjacent cones are excluded; a length of the input
 ///   metric, along edges: a new cone goes closer than that to another only when no other vertex
 ///   of the sign needed is left; a remesh of edge length \f$h\f$ wants its cones a few \f$h\f$
@@ -217,6 +228,10 @@ Remeshing_cones_status<TriangleMesh> place_remeshing_cones(const TriangleMesh& t
     throw Input_error(Input_error::INVALID_ARGUMENT, "distortion_bound must be positive and finite");
   const int max_cones = choose_parameter(get_parameter(np, internal_np::maximum_number_of_cones), 500);
   if(max_cones < 1) throw Input_error(Input_error::INVALID_ARGUMENT, "maximum_number_of_cones must be at least 1");
+  constexpr bool quanta_given = !parameters::is_default_parameter<NamedParameters, internal_np::maximum_negative_cone_quanta_t>::value;
+  const int given_quanta = choose_parameter(get_parameter(np, internal_np::maximum_negative_cone_quanta), 1);
+  if(quanta_given && given_quanta < 1)
+    throw Input_error(Input_error::INVALID_ARGUMENT, "maximum_negative_cone_quanta must be at least 1, got " + std::to_string(given_quanta));
   const double min_distance = choose_parameter(get_parameter(np, internal_np::minimum_cone_distance), 0.);
   if(!(min_distance >= 0) || !std::isfinite(min_distance))
     throw Input_error(Input_error::INVALID_ARGUMENT, "minimum_cone_distance must be finite and not negative");
@@ -240,6 +255,9 @@ Remeshing_cones_status<TriangleMesh> place_remeshing_cones(const TriangleMesh& t
   // with the current cones (and the rest of the total spread evenly) stretches most, of the sign
   // that flattens it there, until that metric is within the bound and the cones hold the total
   const long target_k = std::lround(total / q);
+  // a negative cone of two quanta (a vertex of valence 6) where the total alone would fill over
+  // half the cones allowed: the map's dense system costs the cube of its cones and seams
+  st.negative_cone_quanta = quanta_given ? given_quanta : (-target_k > max_cones / 2 ? 2 : 1);
   std::vector<int> k(nv, 0);
   // cones, their neighbours and isolated vertices: no new cone there, left out of the spread
   std::vector<char> near_cone(nv, 0);
@@ -325,8 +343,10 @@ Remeshing_cones_status<TriangleMesh> place_remeshing_cones(const TriangleMesh& t
     if(best == nv) return false;
     st.crowded_cones += crowded[best];
     const int sv = s != 0 ? s : (u[best] > mean ? 1 : -1);
-    k[best] += sv;
-    ksum += sv;
+    // a negative cone takes as many quanta as the total still needs, up to the limit
+    const int quanta = sv < 0 ? int((std::max)(1L, (std::min)(long(st.negative_cone_quanta), ksum - target_k))) : 1;
+    k[best] += sv * quanta;
+    ksum += sv * quanta;
     // no cone next to another: a grid needs room between them
     near_cone[best] = 1;
     for(int h = m.vertex_out[best], h0 = h;;) {
