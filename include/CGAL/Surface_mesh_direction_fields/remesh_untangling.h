@@ -81,8 +81,10 @@ struct Untangle_status
 /// against the input's normals under its corners or at the point nearest its centroid, as quality
 /// measures of remeshes take it) get their corners moved by the same pattern search, after steps
 /// towards the neighbours' mean, a move kept only if it folds fewer faces around the vertex, or
-/// as many with the worst corner around it at a larger scaled Jacobian, and inverts none; best
-/// effort, reported as `folded_before` and `folded_after`. A remesh with no inverted and no
+/// as many with the worst corner around it at a larger scaled Jacobian, and inverts none. This
+/// runs in two passes: first without the normals nearest the centroid, then with them, a move of
+/// the second pass kept only if it also folds no more faces around the vertex by the first
+/// pass's test. Best effort, reported as `folded_before` and `folded_after`. A remesh with no inverted and no
 /// folded face is left as it is.
 /// The input's normal under a vertex is that of the input face it lies on, searched first among
 /// the faces near the one under a neighbour (a vertex off the input gets its closest face's); on
@@ -252,11 +254,6 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
       if(k < pending.size()) { waiting[pending[k]] = 2; queue.push_back(pending[k]); }
     }
   }
-  // How face f faces the input: the cosine between its area vector and the sum of the normals
-  // under its corners, or the input's normals at the point nearest its centroid (of every face
-  // there, on a side or corner), whichever is least (at most 0: inverted). The second sees a
-  // face bent over a ridge or a thin part whose corners agree with the input but whose middle
-  // does not (feline at 4,000 quads: 3 such faces, none by the corners).
   // the input point nearest face f's centroid, and the input face it lies in
   auto nearest_to_centroid = [&](std::size_t f) {
     const auto c = fv[f];
@@ -265,6 +262,11 @@ Untangle_status untangle_remesh(const TriangleMesh& input, PolygonMesh& remesh, 
     const auto q = closest(Input_point(centroid[0], centroid[1], centroid[2]), c[0]);
     return std::make_pair(V3{{CGAL::to_double(q.first.x()), CGAL::to_double(q.first.y()), CGAL::to_double(q.first.z())}}, q.second);
   };
+  // How face f faces the input: the cosine between its area vector and the sum of the normals
+  // under its corners, or the input's normals at the point nearest its centroid (of every face
+  // there, on a side or corner), whichever is least (at most 0: inverted). The second sees a
+  // face bent over a ridge or a thin part whose corners agree with the input but whose middle
+  // does not (feline at 4,000 quads: 3 such faces, none by the corners).
   auto facing = [&](std::size_t f) {
     const auto c = fv[f];
     V3 area, sum;
