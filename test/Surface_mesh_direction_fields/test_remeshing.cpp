@@ -30,6 +30,7 @@
 #include <CGAL/Surface_mesh_direction_fields/integer_grid_map.h>
 #include <CGAL/Surface_mesh_direction_fields/seamless_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/seamless_cone_moves.h>
+#include <CGAL/Surface_mesh_direction_fields/seamless_intrinsic_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/holonomy_group.h>
 #include <CGAL/Surface_mesh_direction_fields/compute_trivial_connection.h>
 #include <CGAL/Surface_mesh_direction_fields/boundary_aligned_field.h>
@@ -2352,11 +2353,89 @@ void seamless_metrics(const std::string& dir)
   SMDF_CHECK(open_runs >= (reduced ? 0u : 3u) && open_converged >= (reduced ? 0u : 1u));
 }
 
+// Seamless metrics with intrinsic flips (seamless_intrinsic_cone_metric()) of the closed shared
+// meshes of genus 1 or more and at most 40k faces, from the flat cone metric of their placed cones
+// with flips, including those whose holonomies start too far for the fixed triangulation. Read
+// back on a copy of the resulting triangulation: every vertex's curvature is the placed cone's (or
+// 0), the holonomy-group test (Theorem 3.2, N = 4) passes on a homotopy basis around the cones and
+// the handles, and the common subdivision with the input tiles both (its pieces' areas sum to each
+// input face's and each intrinsic face's area).
+void seamless_intrinsic_metrics(const std::string& dir)
+{
+  typedef Surface_mesh::Vertex_index V;
+  typedef Surface_mesh::Edge_index E;
+  std::size_t runs = 0, converged = 0, beyond_reach = 0, flipped = 0;
+  smdf_test::for_each_shared_mesh<Surface_mesh>(dir, false, [&](const smdf_test::Manifest_entry& e, const Surface_mesh& input) {
+    if(e.F > 40000 || e.genus == "0") return;
+    Surface_mesh mesh = input;
+    auto placed = mesh.add_property_map<E, double>("e:placed", 0.).first;
+    const auto cs = SMDF::place_remeshing_cones(mesh, placed);
+    if(cs.cones.size() > 120) return;   // the cheese
+    auto cone_target = mesh.add_property_map<V, double>("v:target", 0.).first;
+    std::vector<V> cone_vertices;
+    for(const auto& c : cs.cones) { cone_target[c.first] = c.second; cone_vertices.push_back(c.first); }
+    auto cl = mesh.add_property_map<E, double>("e:cone", 0.).first;
+    auto u = mesh.add_property_map<V, double>("v:u", 0.).first;
+    const SMDF::Cone_metric_status cm = SMDF::compute_cone_metric(mesh, cone_target, cl, SMDF::parameters::conformal_factor_map(u).common_subdivision(false));
+    if(!cm.converged) return;
+    SMDF::Seamless_intrinsic_metric_status st =
+        SMDF::seamless_intrinsic_cone_metric(mesh, u, SMDF::parameters::intrinsic_edge_flips(cm.triangulation_changed));
+    ++runs;
+    const std::string what = e.file + " (genus " + e.genus + ", " + std::to_string(cs.cones.size()) + " cones)";
+    std::cout << what << ": seamless metric with flips " << (st.success ? "converged" : st.message) << ", " << st.loops
+              << " loops, holonomy off by " << st.initial_holonomy_error << " -> " << st.holonomy_error << ", " << st.iterations
+              << " steps, " << st.cone_metric_flips << " + " << st.edge_flips << " flips, smallest angle " << st.min_angle
+              << (st.correspondence_message.empty() ? std::string() : ", " + st.correspondence_message) << std::endl;
+    SMDF_CHECK_MSG(st.loops == 2 * std::size_t(std::stoi(e.genus)), what << ": one loop per generator, " << st.loops);
+    if(!st.success) {
+      SMDF_CHECK_MSG(!st.message.empty(), what << ": a failure says why");
+      return;
+    }
+    ++converged;
+    beyond_reach += st.initial_holonomy_error > 0.3;
+    flipped += st.edge_flips > 0;
+    SMDF_CHECK_MSG(st.intrinsic_triangulation.has_common_subdivision(), what << ": the correspondence: " << st.correspondence_message);
+    Surface_mesh out;
+    auto ol = out.add_property_map<E, double>("e:length", 0.).first;
+    SMDF::copy_intrinsic_triangulation(st.intrinsic_triangulation, mesh, out, ol);
+    const SMDF::Intrinsic_mesh<Surface_mesh> im(out, SMDF::parameters::edge_length_map(ol));
+    double worst_k = 0;
+    for(auto v : vertices(out)) worst_k = std::max(worst_k, std::abs(im.vertex_curvature(v) - cone_target[V(v.idx())]));
+    const auto basis = SMDF::homotopy_basis(out, cone_vertices);
+    const auto after = SMDF::parallel_rosy_compatibility(SMDF::holonomy_group(out, basis, SMDF::parameters::edge_length_map(ol)), 4, 1e-8);
+    SMDF_CHECK_MSG(worst_k < 1e-9 && after.compatible, what << ": curvatures off by " << worst_k << ", holonomy-group test off by " << after.max_deviation);
+    if(!st.intrinsic_triangulation.has_common_subdivision()) return;
+    // the pieces tile both triangulations
+    const auto& pieces = st.intrinsic_triangulation.common_subdivision();
+    std::vector<double> in_area(num_faces(mesh), 0.), it_area(num_faces(out), 0.);
+    for(const auto& p : pieces) { in_area[std::size_t(p.input_face)] += p.input_area; it_area[std::size_t(p.intrinsic_face)] += p.intrinsic_area; }
+    double worst_in = 0, worst_it = 0;
+    for(auto f : faces(mesh)) worst_in = std::max(worst_in, std::abs(in_area[f.idx()] / CGAL::Polygon_mesh_processing::face_area(f, mesh) - 1));
+    for(auto f : faces(out)) {
+      const auto h = halfedge(f, out);
+      const double a = ol[edge(h, out)], b = ol[edge(next(h, out), out)], c = ol[edge(prev(h, out), out)];
+      const double s = 0.5 * (a + b + c);
+      worst_it = std::max(worst_it, std::abs(it_area[f.idx()] / std::sqrt(s * (s - a) * (s - b) * (s - c)) - 1));
+    }
+    SMDF_CHECK_MSG(worst_in < 1e-8 && worst_it < 1e-8, what << ": the common subdivision's pieces cover the input faces within " << worst_in
+                                                            << " and the intrinsic faces within " << worst_it << " of their areas");
+  });
+  std::cout << "seamless metrics with flips: " << converged << " of " << runs << " converged, " << beyond_reach
+            << " beyond the fixed triangulation's reach, " << flipped << " with flips" << std::endl;
+  const bool reduced = std::getenv("SMDF_TEST_MAX_FACES") != nullptr;
+  SMDF_CHECK(runs >= (reduced ? 1u : 8u) && converged == runs && beyond_reach >= (reduced ? 0u : 3u));
+}
+
 int main(int argc, char** argv)
 {
   const std::string part = argc > 1 ? argv[1] : "all";
+  if(part == "seamless") {   // the seamless metrics alone
+    const std::string dir = smdf_test::shared_data_dir();
+    if(!dir.empty()) { seamless_metrics(dir); seamless_intrinsic_metrics(dir); }
+    return smdf_test::finish();
+  }
   if(part != "all" && part != "automatic" && part != "polycube") {
-    std::cerr << "usage: test_remeshing [automatic|polycube]" << std::endl;
+    std::cerr << "usage: test_remeshing [automatic|polycube|seamless]" << std::endl;
     return 2;
   }
   const std::string dir = smdf_test::shared_data_dir();
@@ -2373,7 +2452,7 @@ int main(int argc, char** argv)
     if(!dir.empty()) { box_polycube(dir); ricci_flow_segments(dir); seam_relaxation(dir); flipped_flat_metric(dir); delaunay_refinement(dir); octahedron_polyhedron(dir); obelisk(dir); untangling(dir); }
   }
   if(part != "polycube") cube_through_intrinsic_triangulation();
-  if(part != "polycube" && !dir.empty()) { remeshing_cones(dir); cone_separation(dir); integer_grid_maps(dir); integer_grid_maps_open(dir); seamless_metrics(dir); }
+  if(part != "polycube" && !dir.empty()) { remeshing_cones(dir); cone_separation(dir); integer_grid_maps(dir); integer_grid_maps_open(dir); seamless_metrics(dir); seamless_intrinsic_metrics(dir); }
   if(dir.empty()) std::cout << "../shared/data not found: the shared meshes' parts skipped" << std::endl;
   return smdf_test::finish();
 }

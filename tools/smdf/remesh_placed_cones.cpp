@@ -12,6 +12,7 @@
 #include <CGAL/Surface_mesh_direction_fields/remeshing_cone_separation.h>
 #include <CGAL/Surface_mesh_direction_fields/remeshing_cones.h>
 #include <CGAL/Surface_mesh_direction_fields/seamless_cone_moves.h>
+#include <CGAL/Surface_mesh_direction_fields/seamless_intrinsic_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/seamless_metric.h>
 #include <CGAL/Surface_mesh_direction_fields/topology.h>
 
@@ -95,6 +96,54 @@ SMDF::Cone_metric_status intrinsic_cone_metric(const std::string& file, Mesh& ba
 }
 
 namespace {
+
+Edge_length_property cross_field_and_map(const std::string& file, Mesh& on, const std::vector<std::pair<vertex_descriptor, double>>& indices,
+                                         double requested_h, long requested_faces, Edge_length_property lengths, Json& out, Json& metric,
+                                         const std::function<void(const char*)>& stage, const std::function<void(const char*)>& timed);
+
+// The flat cone metric of the cones `current` (vertices of `base` or of its intrinsic copy, in the
+// same order; curvatures in radians) computed on `base` with intrinsic flips, then made seamless
+// with flips (seamless_intrinsic_cone_metric()). On success `intrinsic`, `surface` and `lengths`
+// become that triangulation and its metric. Returns the JSON of the step.
+Json seamless_with_flips(const std::string& file, Mesh& base, const std::vector<std::pair<vertex_descriptor, double>>& current,
+                         Intrinsic_surface& intrinsic, Mesh*& surface, Edge_length_property& lengths, Json& metric)
+{
+  Json j = Json::object();
+  auto targets = base.add_property_map<vertex_descriptor, double>("v:smdf_seamless_target", 0.).first;
+  auto u = base.add_property_map<vertex_descriptor, double>("v:smdf_seamless_factor", 0.).first;
+  auto flow = base.add_property_map<edge_descriptor, double>("e:smdf_seamless_flow", 0.).first;
+  for(vertex_descriptor v : vertices(base)) targets[v] = 0;
+  for(const auto& c : current) targets[vertex_descriptor(c.first.idx())] = c.second;
+  const SMDF::Cone_metric_status cm = on_file(file, [&] {
+    return SMDF::compute_cone_metric(base, targets, flow, SMDF::parameters::conformal_factor_map(u).common_subdivision(false));
+  });
+  j["cone_metric_converged"] = cm.converged;
+  if(!cm.converged) {
+    j["success"] = false;
+    j["message"] = "the flat cone metric with flips: " + cm.message;
+  } else {
+    SMDF::Seamless_intrinsic_metric_status ss = on_file(file, [&] {
+      return SMDF::seamless_intrinsic_cone_metric(base, u, SMDF::parameters::intrinsic_edge_flips(cm.triangulation_changed));
+    });
+    j["success"] = ss.success;
+    j["message"] = ss.message;
+    j["iterations"] = ss.iterations;
+    j["initial_holonomy_error"] = ss.initial_holonomy_error;
+    j["holonomy_error"] = ss.holonomy_error;
+    j["curvature_error"] = ss.curvature_error;
+    j["cone_metric_flips"] = ss.cone_metric_flips;
+    j["edge_flips"] = ss.edge_flips;
+    j["min_angle"] = ss.min_angle;
+    j["correspondence"] = ss.correspondence_message.empty() ? std::string("common subdivision") : ss.correspondence_message;
+    if(ss.success && ss.intrinsic_triangulation.has_common_subdivision())
+      use_intrinsic_triangulation(std::move(ss.intrinsic_triangulation), base, intrinsic, surface, lengths, metric);
+    else if(ss.success) j["success"] = false;
+  }
+  base.remove_property_map(flow);
+  base.remove_property_map(u);
+  base.remove_property_map(targets);
+  return j;
+}
 
 // One attempt with cones `cone_spacing` grid edges apart where the placement can.
 Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, Mesh& refined, Intrinsic_surface& intrinsic, Mesh*& surface, double requested_h,
@@ -324,11 +373,26 @@ Edge_length_property placed_cones_attempt(const std::string& file, Mesh& mesh, M
     sj["initial_holonomy_error"] = ss.initial_holonomy_error;
     sj["holonomy_error"] = ss.holonomy_error;
     sj["max_log_length_change"] = ss.max_log_length_change;
-    metric["seamless"] = std::move(sj);
     if(ss.success) for(edge_descriptor e : edges(on)) lengths[e] = seamless[e];
     on.remove_property_map(seamless);
+    if(!ss.success) {
+      // the fixed triangulation cannot move the holonomies that far: the metric of the current
+      // cones on the surface the triangulation was made from, then seamless with intrinsic flips
+      stage("seamless metric with intrinsic flips");
+      sj["with_flips"] = seamless_with_flips(file, surface == &intrinsic.mesh ? *intrinsic.of : on, current, intrinsic, surface, lengths, metric);
+    }
+    metric["seamless"] = std::move(sj);
     timed("seamless_metric_s");
   }
+  return cross_field_and_map(file, *surface, indices, requested_h, requested_faces, lengths, out, metric, stage, timed);
+}
+
+// The cross field of the cones `indices` on `on` under `lengths` (seamless where the topology asks)
+// and its integer-grid map; returns the map's edge lengths in grid units.
+Edge_length_property cross_field_and_map(const std::string& file, Mesh& on, const std::vector<std::pair<vertex_descriptor, double>>& indices,
+                                         double requested_h, long requested_faces, Edge_length_property lengths, Json& out, Json& metric,
+                                         const std::function<void(const char*)>& stage, const std::function<void(const char*)>& timed)
+{
   stage("cross field and integer-grid map");
   auto adjustment = on.add_property_map<edge_descriptor, double>("e:smdf_remesh_adjustment", 0.).first;
   auto field = on.add_property_map<face_descriptor, double>("f:smdf_remesh_field", 0.).first;

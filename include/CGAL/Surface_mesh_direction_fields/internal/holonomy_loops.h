@@ -12,6 +12,8 @@
 
 #include <CGAL/Surface_mesh_direction_fields/Intrinsic_mesh.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Mesh_arrays.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/topology.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/tree_cotree.h>
 
 #include <algorithm>
 #include <cmath>
@@ -22,20 +24,24 @@ namespace CGAL {
 namespace Surface_mesh_direction_fields {
 namespace internal {
 
-struct Loop_turn { int a, b; };   // entered by halfedge a, left by halfedge b (both of one face)
+// Entered by halfedge a, left by halfedge b, both of face `face`.
+struct Loop_turn { int a, b, face; };
 
+// The loops of a triangulation given as arrays, with its topology and tree-cotree generators:
+// first the handles' dual cycles (closed), then the boundary paths (open: the first turn enters
+// by an edge of the first boundary loop, the last leaves by one of another loop).
 template <typename TM>
-std::vector<std::vector<Loop_turn>> holonomy_loops(const Intrinsic_mesh<TM>& im)
+std::vector<std::vector<Loop_turn>> holonomy_loops(const Mesh_arrays<TM>& m, const Topology_arrays& topology,
+                                                   const std::vector<Generator_arrays>& generators)
 {
   typedef Loop_turn Turn;
-  const Mesh_arrays<TM>& m = im.arrays();
   const std::size_t nf = m.number_of_faces();
   std::vector<std::vector<Turn>> loops;
-  for(const auto& g : im.generator_arrays()) {
+  for(const auto& g : generators) {
     if(!g.handle || g.dual.empty()) continue;
     std::vector<Turn> t;
     const std::size_t n = g.dual.size();
-    for(std::size_t k = 0; k < n; ++k) t.push_back({g.dual[k], g.dual[(k + 1) % n] ^ 1});
+    for(std::size_t k = 0; k < n; ++k) t.push_back({g.dual[k], g.dual[(k + 1) % n] ^ 1, m.face[std::size_t(g.dual[k])]});
     loops.push_back(std::move(t));
   }
   // Open meshes with several boundary loops: a path of faces from an edge of the first loop to an
@@ -43,7 +49,7 @@ std::vector<std::vector<Loop_turn>> holonomy_loops(const Intrinsic_mesh<TM>& im)
   // the first loop's edges then lies along the other's only if the path turns by a multiple of
   // 2 pi / N from one edge to the other; the same sum of turns as a loop's holonomy measures it.
   {
-    const std::vector<std::vector<int>>& bloops = im.topology_arrays().loops;   // border halfedges
+    const std::vector<std::vector<int>>& bloops = topology.loops;   // border halfedges
     if(bloops.size() >= 2) {
       std::vector<int> parent(nf, -2);   // per face: the halfedge it was entered by (-1: a start face)
       std::vector<int> queue;
@@ -79,7 +85,7 @@ std::vector<std::vector<Loop_turn>> holonomy_loops(const Intrinsic_mesh<TM>& im)
         std::vector<Turn> t;
         for(int f = end, b = exit;;) {
           const int a = parent[std::size_t(f)] >= 0 ? parent[std::size_t(f)] : entry_edge(f);
-          t.push_back({a, b});
+          t.push_back({a, b, f});
           if(parent[std::size_t(f)] < 0) break;
           b = parent[std::size_t(f)] ^ 1;
           f = m.face[std::size_t(b)];
@@ -92,10 +98,17 @@ std::vector<std::vector<Loop_turn>> holonomy_loops(const Intrinsic_mesh<TM>& im)
   return loops;
 }
 
-// A loop's holonomy under the corner angles `angle` (per halfedge, at its source): pi per
-// crossing plus, per face, the turn from its entry to its exit edge.
 template <typename TM>
-double loop_holonomy(const Mesh_arrays<TM>& m, const std::vector<double>& angle, const std::vector<Loop_turn>& t)
+std::vector<std::vector<Loop_turn>> holonomy_loops(const Intrinsic_mesh<TM>& im)
+{
+  return holonomy_loops(im.arrays(), im.topology_arrays(), im.generator_arrays());
+}
+
+// A loop's holonomy under the corner angles `angle` (per halfedge, at its source): pi per
+// crossing plus, per face, the turn from its entry to its exit edge. `m` has the triangulation's
+// `next` (Mesh_arrays or Flippable_triangulation).
+template <typename Arrays>
+double loop_holonomy(const Arrays& m, const std::vector<double>& angle, const std::vector<Loop_turn>& t)
 {
   double hsum = CGAL_PI * double(t.size());
   for(const Loop_turn& x : t) {
@@ -107,8 +120,8 @@ double loop_holonomy(const Mesh_arrays<TM>& m, const std::vector<double>& angle,
 
 // Calls add(edge, d) with s times the derivative of the angle at source(c) in face(c) by the log
 // length of each side of that face (d theta_A / d lambda_BC = cot B + cot C, by AB: -cot B).
-template <typename TM, typename Add>
-void corner_angle_derivative(const Mesh_arrays<TM>& m, const std::vector<double>& angle, int c, double s, const Add& add)
+template <typename Arrays, typename Add>
+void corner_angle_derivative(const Arrays& m, const std::vector<double>& angle, int c, double s, const Add& add)
 {
   const int n = m.next[std::size_t(c)], p = m.next[std::size_t(n)];
   const double cn = 1 / std::tan(angle[std::size_t(n)]), cp = 1 / std::tan(angle[std::size_t(p)]);
@@ -118,8 +131,8 @@ void corner_angle_derivative(const Mesh_arrays<TM>& m, const std::vector<double>
 }
 
 // The same for a loop's holonomy (loop_holonomy()).
-template <typename TM, typename Add>
-void loop_holonomy_derivative(const Mesh_arrays<TM>& m, const std::vector<double>& angle, const std::vector<Loop_turn>& t, const Add& add)
+template <typename Arrays, typename Add>
+void loop_holonomy_derivative(const Arrays& m, const std::vector<double>& angle, const std::vector<Loop_turn>& t, const Add& add)
 {
   for(const Loop_turn& x : t) {
     corner_angle_derivative(m, angle, x.b, 1., add);
