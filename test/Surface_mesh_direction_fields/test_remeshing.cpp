@@ -2353,23 +2353,29 @@ void seamless_metrics(const std::string& dir)
   SMDF_CHECK(open_runs >= (reduced ? 0u : 3u) && open_converged >= (reduced ? 0u : 1u));
 }
 
-// Seamless metrics with intrinsic flips (seamless_intrinsic_cone_metric()) of the closed shared
-// meshes of genus 1 or more and at most 40k faces, from the flat cone metric of their placed cones
-// with flips, including those whose holonomies start too far for the fixed triangulation. Read
-// back on a copy of the resulting triangulation: every vertex's curvature is the placed cone's (or
-// 0), the holonomy-group test (Theorem 3.2, N = 4) passes on a homotopy basis around the cones and
-// the handles, and the common subdivision with the input tiles both (its pieces' areas sum to each
-// input face's and each intrinsic face's area).
+// Seamless metrics with intrinsic flips (seamless_intrinsic_cone_metric()) of the shared meshes
+// of at most 40k faces with a handle or several boundary loops, from the flat cone metric of their
+// placed cones (with flips where it needs them), including those whose holonomies start too far
+// for the fixed triangulation. Read back on a copy of the resulting triangulation: every vertex's
+// curvature is the placed one (cones, boundary corners, 0 elsewhere); on closed meshes the
+// holonomy-group test (Theorem 3.2, N = 4) passes on a homotopy basis around the cones and the
+// handles, on open ones every border edge has the same direction modulo pi/2 in a development; and
+// the common subdivision with the input tiles both (its pieces' areas sum to each input face's and
+// each intrinsic face's area).
 void seamless_intrinsic_metrics(const std::string& dir)
 {
   typedef Surface_mesh::Vertex_index V;
   typedef Surface_mesh::Edge_index E;
-  std::size_t runs = 0, converged = 0, beyond_reach = 0, flipped = 0;
-  smdf_test::for_each_shared_mesh<Surface_mesh>(dir, false, [&](const smdf_test::Manifest_entry& e, const Surface_mesh& input) {
-    if(e.F > 40000 || e.genus == "0") return;
+  std::size_t runs = 0, converged = 0, beyond_reach = 0, flipped = 0, open_runs = 0, open_converged = 0;
+  auto check = [&](const smdf_test::Manifest_entry& e, const Surface_mesh& input) {
+    const bool open = e.boundary_loops > 0;
+    if(e.F > 40000 || (e.genus == "0" && e.boundary_loops < 2)) return;
     Surface_mesh mesh = input;
     auto placed = mesh.add_property_map<E, double>("e:placed", 0.).first;
-    const auto cs = SMDF::place_remeshing_cones(mesh, placed);
+    // open: as smdf's first attempt at 4,000 quads, the cones 4 quad sides apart
+    const double h = std::sqrt(CGAL::Polygon_mesh_processing::area(mesh) / 4000);
+    const auto cs = open ? SMDF::place_remeshing_cones(mesh, placed, SMDF::parameters::minimum_cone_distance(4 * h))
+                         : SMDF::place_remeshing_cones(mesh, placed);
     if(cs.cones.size() > 120) return;   // the cheese
     auto cone_target = mesh.add_property_map<V, double>("v:target", 0.).first;
     std::vector<V> cone_vertices;
@@ -2381,17 +2387,21 @@ void seamless_intrinsic_metrics(const std::string& dir)
     SMDF::Seamless_intrinsic_metric_status st =
         SMDF::seamless_intrinsic_cone_metric(mesh, u, SMDF::parameters::intrinsic_edge_flips(cm.triangulation_changed));
     ++runs;
-    const std::string what = e.file + " (genus " + e.genus + ", " + std::to_string(cs.cones.size()) + " cones)";
+    open_runs += open;
+    const std::string what = e.file + " (genus " + e.genus + ", " + std::to_string(e.boundary_loops) + " boundary loops, " +
+                             std::to_string(cs.cones.size()) + " cones and corners)";
     std::cout << what << ": seamless metric with flips " << (st.success ? "converged" : st.message) << ", " << st.loops
-              << " loops, holonomy off by " << st.initial_holonomy_error << " -> " << st.holonomy_error << ", " << st.iterations
+              << " loops and paths, holonomy off by " << st.initial_holonomy_error << " -> " << st.holonomy_error << ", " << st.iterations
               << " steps, " << st.cone_metric_flips << " + " << st.edge_flips << " flips, smallest angle " << st.min_angle
               << (st.correspondence_message.empty() ? std::string() : ", " + st.correspondence_message) << std::endl;
-    SMDF_CHECK_MSG(st.loops == 2 * std::size_t(std::stoi(e.genus)), what << ": one loop per generator, " << st.loops);
+    const std::size_t expected_loops = 2 * std::size_t(std::stoi(e.genus)) + (open ? std::size_t(e.boundary_loops) - 1 : 0);
+    SMDF_CHECK_MSG(st.loops == expected_loops, what << ": one loop per handle generator and one path per further boundary loop, " << st.loops);
     if(!st.success) {
       SMDF_CHECK_MSG(!st.message.empty(), what << ": a failure says why");
       return;
     }
     ++converged;
+    open_converged += open;
     beyond_reach += st.initial_holonomy_error > 0.3;
     flipped += st.edge_flips > 0;
     SMDF_CHECK_MSG(st.intrinsic_triangulation.has_common_subdivision(), what << ": the correspondence: " << st.correspondence_message);
@@ -2401,29 +2411,58 @@ void seamless_intrinsic_metrics(const std::string& dir)
     const SMDF::Intrinsic_mesh<Surface_mesh> im(out, SMDF::parameters::edge_length_map(ol));
     double worst_k = 0;
     for(auto v : vertices(out)) worst_k = std::max(worst_k, std::abs(im.vertex_curvature(v) - cone_target[V(v.idx())]));
-    const auto basis = SMDF::homotopy_basis(out, cone_vertices);
-    const auto after = SMDF::parallel_rosy_compatibility(SMDF::holonomy_group(out, basis, SMDF::parameters::edge_length_map(ol)), 4, 1e-8);
-    SMDF_CHECK_MSG(worst_k < 1e-9 && after.compatible, what << ": curvatures off by " << worst_k << ", holonomy-group test off by " << after.max_deviation);
+    if(open) {
+      // the spread, modulo pi/2, of the border edges' directions in a development of the result
+      const auto dev = SMDF::develop_flat_metric(out, SMDF::parameters::edge_length_map(ol));
+      const double q = CGAL_PI / 2;
+      double first = -1, spread = 0;
+      for(auto hb : halfedges(out)) {
+        if(!is_border(hb, out)) continue;
+        const auto x = opposite(hb, out);
+        const auto f = face(x, out);
+        const auto h0 = halfedge(f, out);
+        const int k = x == h0 ? 0 : x == next(h0, out) ? 1 : 2;
+        const auto c = dev.corners(f);
+        const double a = std::atan2(c[std::size_t((k + 1) % 3)].y() - c[std::size_t(k)].y(), c[std::size_t((k + 1) % 3)].x() - c[std::size_t(k)].x());
+        const double r = a - q * std::floor(a / q);
+        if(first < 0) first = r;
+        const double d = std::abs(r - first);
+        spread = std::max(spread, std::min(d, q - d));
+      }
+      SMDF_CHECK_MSG(worst_k < 1e-9 && spread < 1e-7, what << ": curvatures off by " << worst_k << ", border directions by " << spread);
+    } else {
+      const auto basis = SMDF::homotopy_basis(out, cone_vertices);
+      const auto after = SMDF::parallel_rosy_compatibility(SMDF::holonomy_group(out, basis, SMDF::parameters::edge_length_map(ol)), 4, 1e-8);
+      SMDF_CHECK_MSG(worst_k < 1e-9 && after.compatible, what << ": curvatures off by " << worst_k << ", holonomy-group test off by " << after.max_deviation);
+    }
     if(!st.intrinsic_triangulation.has_common_subdivision()) return;
     // the pieces tile both triangulations
-    const auto& pieces = st.intrinsic_triangulation.common_subdivision();
     std::vector<double> in_area(num_faces(mesh), 0.), it_area(num_faces(out), 0.);
-    for(const auto& p : pieces) { in_area[std::size_t(p.input_face)] += p.input_area; it_area[std::size_t(p.intrinsic_face)] += p.intrinsic_area; }
+    for(const auto& p : st.intrinsic_triangulation.common_subdivision()) {
+      in_area[std::size_t(p.input_face)] += p.input_area;
+      it_area[std::size_t(p.intrinsic_face)] += p.intrinsic_area;
+    }
     double worst_in = 0, worst_it = 0;
     for(auto f : faces(mesh)) worst_in = std::max(worst_in, std::abs(in_area[f.idx()] / CGAL::Polygon_mesh_processing::face_area(f, mesh) - 1));
     for(auto f : faces(out)) {
-      const auto h = halfedge(f, out);
-      const double a = ol[edge(h, out)], b = ol[edge(next(h, out), out)], c = ol[edge(prev(h, out), out)];
+      const auto hf = halfedge(f, out);
+      const double a = ol[edge(hf, out)], b = ol[edge(next(hf, out), out)], c = ol[edge(prev(hf, out), out)];
       const double s = 0.5 * (a + b + c);
       worst_it = std::max(worst_it, std::abs(it_area[f.idx()] / std::sqrt(s * (s - a) * (s - b) * (s - c)) - 1));
     }
     SMDF_CHECK_MSG(worst_in < 1e-8 && worst_it < 1e-8, what << ": the common subdivision's pieces cover the input faces within " << worst_in
                                                             << " and the intrinsic faces within " << worst_it << " of their areas");
-  });
-  std::cout << "seamless metrics with flips: " << converged << " of " << runs << " converged, " << beyond_reach
+  };
+  smdf_test::for_each_shared_mesh<Surface_mesh>(dir, false, check);
+  smdf_test::for_each_shared_mesh<Surface_mesh>(dir, true, check);
+  std::cout << "seamless metrics with flips: " << converged << " of " << runs << " converged (" << open_runs << " open), " << beyond_reach
             << " beyond the fixed triangulation's reach, " << flipped << " with flips" << std::endl;
+  // measured: the 11 closed ones converge, 5 of them from 0.31-0.78 rad off; of the 5 open ones
+  // the alex (0.36 rad), the annulus and the punctured torus; the beetle and the holes stall
+  // (Newton's progress; triangles at the boundary, whose edges cannot flip, at the smallest angle)
   const bool reduced = std::getenv("SMDF_TEST_MAX_FACES") != nullptr;
-  SMDF_CHECK(runs >= (reduced ? 1u : 8u) && converged == runs && beyond_reach >= (reduced ? 0u : 3u));
+  SMDF_CHECK(runs >= (reduced ? 1u : 16u) && converged - open_converged == runs - open_runs && open_converged >= (reduced ? 0u : 3u) &&
+             beyond_reach >= (reduced ? 0u : 5u));
 }
 
 int main(int argc, char** argv)

@@ -468,7 +468,15 @@ void record_holonomy(const Json& metric, Json& a)
       a["holonomy_error_before_moves"] = *e;
       a["cone_moves"] = *moves->find("moves");
     }
-  if(const Json* s = metric.find("seamless")) a["seamless_holonomy_error"] = *s->find("holonomy_error");
+  if(const Json* s = metric.find("seamless")) {
+    a["seamless_holonomy_error"] = *s->find("holonomy_error");
+    if(const Json* w = s->find("with_flips")) {   // the fixed triangulation failed; the flips' outcome
+      Json r = Json::object();
+      for(const char* k : {"success", "holonomy_error", "edge_flips", "message"})
+        if(const Json* x = w->find(k)) r[k] = *x;
+      a["seamless_with_flips"] = std::move(r);
+    }
+  }
 }
 
 } // namespace

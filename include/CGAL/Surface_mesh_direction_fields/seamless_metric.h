@@ -91,8 +91,7 @@ inline double corner_angle_of(double opposite, double a, double b)
 /// stalls 0.04-0.18 rad short where they start 0.33-0.78 away (punctured torus, botijo, double
 /// torus, eight, genus-3 part, rocker arm, fertility, casting): triangles reach the smallest
 /// angle allowed, after up to 20 s on the 82k-face botijo. Beyond 0.3 rad the status therefore
-/// fails at once. Penner coordinates with intrinsic Delaunay flips (Campen et al.) would lift
-/// that limit; not built.
+/// fails at once; seamless_intrinsic_cone_metric() lifts that limit with intrinsic flips.
 ///
 /// Throws `Input_error` for several components or \f$N < 1\f$.
 template <typename TriangleMesh, typename InputLengthMap, typename OutputLengthMap,
