@@ -2353,6 +2353,22 @@ void seamless_metrics(const std::string& dir)
   SMDF_CHECK(open_runs >= (reduced ? 0u : 3u) && open_converged >= (reduced ? 0u : 1u));
 }
 
+// The seamless metric with flips of `mesh`'s placed cones, for a comparison of mesh types.
+template <typename Mesh>
+SMDF::Seamless_intrinsic_metric_status seamless_with_flips_of(const Mesh& mesh)
+{
+  auto placed = get(CGAL::dynamic_edge_property_t<double>(), mesh);
+  const auto cs = SMDF::place_remeshing_cones(mesh, placed);
+  auto target = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+  for(auto v : vertices(mesh)) put(target, v, 0.);
+  for(const auto& c : cs.cones) put(target, c.first, c.second);
+  auto lengths = get(CGAL::dynamic_edge_property_t<double>(), mesh);
+  auto u = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+  const SMDF::Cone_metric_status cm = SMDF::compute_cone_metric(mesh, target, lengths, SMDF::parameters::conformal_factor_map(u).common_subdivision(false));
+  SMDF_CHECK(cm.converged);
+  return SMDF::seamless_intrinsic_cone_metric(mesh, u, SMDF::parameters::intrinsic_edge_flips(cm.triangulation_changed));
+}
+
 // Seamless metrics with intrinsic flips (seamless_intrinsic_cone_metric()) of the shared meshes
 // of at most 40k faces with a handle or several boundary loops, from the flat cone metric of their
 // placed cones (with flips where it needs them), including those whose holonomies start too far
@@ -2455,6 +2471,16 @@ void seamless_intrinsic_metrics(const std::string& dir)
   };
   smdf_test::for_each_shared_mesh<Surface_mesh>(dir, false, check);
   smdf_test::for_each_shared_mesh<Surface_mesh>(dir, true, check);
+  // Polyhedron_3: the same metric as on the Surface_mesh (the double torus, 0.64 rad off)
+  Polyhedron p;
+  Surface_mesh sm;
+  SMDF::read_triangle_mesh(dir + "/meshes/double-torus_jnd.off", p);
+  SMDF::read_triangle_mesh(dir + "/meshes/double-torus_jnd.off", sm);
+  const SMDF::Seamless_intrinsic_metric_status ps = seamless_with_flips_of(p), ss = seamless_with_flips_of(sm);
+  SMDF_CHECK_MSG(ps.success && ss.success && ps.iterations == ss.iterations && ps.edge_flips == ss.edge_flips &&
+                     ps.intrinsic_triangulation.has_common_subdivision() && ps.intrinsic_triangulation.number_of_edges() == num_edges(sm),
+                 "double torus: Polyhedron_3 " << ps.iterations << " steps, " << ps.edge_flips << " flips; Surface_mesh " << ss.iterations
+                                               << ", " << ss.edge_flips);
   std::cout << "seamless metrics with flips: " << converged << " of " << runs << " converged (" << open_runs << " open), " << beyond_reach
             << " beyond the fixed triangulation's reach, " << flipped << " with flips" << std::endl;
   // measured: the 11 closed ones converge, 5 of them from 0.31-0.78 rad off; of the 5 open ones
