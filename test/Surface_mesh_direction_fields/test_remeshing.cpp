@@ -2196,6 +2196,29 @@ void integer_grid_maps_open(const std::string& dir)
   SMDF_CHECK(runs >= (reduced ? 1u : 4u) && unfolded * 2 >= runs && tessellated == unfolded);
 }
 
+// The spread, modulo pi/2, of the border edges' directions in a development of `mesh` under the
+// flat metric `l` (0 when every boundary runs along the grid of one cross field).
+double border_direction_spread(const Surface_mesh& mesh, Surface_mesh::Property_map<Surface_mesh::Edge_index, double> l)
+{
+  const auto dev = SMDF::develop_flat_metric(mesh, SMDF::parameters::edge_length_map(l));
+  const double q = CGAL_PI / 2;
+  double first = -1, worst = 0;
+  for(auto hb : halfedges(mesh)) {
+    if(!is_border(hb, mesh)) continue;
+    const auto x = opposite(hb, mesh);
+    const auto f = face(x, mesh);
+    const auto h0 = halfedge(f, mesh);
+    const int k = x == h0 ? 0 : x == next(h0, mesh) ? 1 : 2;
+    const auto c = dev.corners(f);
+    const double a = std::atan2(c[std::size_t((k + 1) % 3)].y() - c[std::size_t(k)].y(), c[std::size_t((k + 1) % 3)].x() - c[std::size_t(k)].x());
+    const double r = a - q * std::floor(a / q);
+    if(first < 0) first = r;
+    const double d = std::abs(r - first);
+    worst = std::max(worst, std::min(d, q - d));
+  }
+  return worst;
+}
+
 // Seamless metrics (seamless_cone_metric(), metric compensation's rotational part) of the closed
 // shared meshes of genus 1 or more and at most 40k faces, from the flat cone metric of their
 // placed cones on the input's edges. Where it succeeds, read back: every vertex's curvature is
@@ -2309,26 +2332,7 @@ void seamless_metrics(const std::string& dir)
     ++open_runs;
     const std::string what = e.file + " (genus " + e.genus + ", " + std::to_string(e.boundary_loops) + " boundary loops, " +
                              std::to_string(cs.cones.size()) + " cones and corners)";
-    // the spread, modulo pi/2, of the border edges' directions in a development of metric l
-    auto border_spread = [&](Surface_mesh::Property_map<Surface_mesh::Edge_index, double> l) {
-      const auto dev = SMDF::develop_flat_metric(mesh, SMDF::parameters::edge_length_map(l));
-      const double q = CGAL_PI / 2;
-      double first = -1, worst = 0;
-      for(auto hb : halfedges(mesh)) {
-        if(!is_border(hb, mesh)) continue;
-        const auto x = opposite(hb, mesh);
-        const auto f = face(x, mesh);
-        const auto h0 = halfedge(f, mesh);
-        const int k = x == h0 ? 0 : x == next(h0, mesh) ? 1 : 2;
-        const auto c = dev.corners(f);
-        const double a = std::atan2(c[std::size_t((k + 1) % 3)].y() - c[std::size_t(k)].y(), c[std::size_t((k + 1) % 3)].x() - c[std::size_t(k)].x());
-        const double r = a - q * std::floor(a / q);
-        if(first < 0) first = r;
-        const double d = std::abs(r - first);
-        worst = std::max(worst, std::min(d, q - d));
-      }
-      return worst;
-    };
+    auto border_spread = [&](Surface_mesh::Property_map<Surface_mesh::Edge_index, double> l) { return border_direction_spread(mesh, l); };
     std::cout << what << ": seamless metric " << (st.success ? "converged" : st.message) << ", " << st.loops << " loops and paths, off by "
               << st.initial_holonomy_error << " -> " << st.holonomy_error << ", border directions spread modulo pi/2 " << border_spread(cl);
     const std::size_t expected_loops = 2 * std::size_t(std::stoi(e.genus)) + std::size_t(e.boundary_loops) - 1;
@@ -2428,23 +2432,7 @@ void seamless_intrinsic_metrics(const std::string& dir)
     double worst_k = 0;
     for(auto v : vertices(out)) worst_k = std::max(worst_k, std::abs(im.vertex_curvature(v) - cone_target[V(v.idx())]));
     if(open) {
-      // the spread, modulo pi/2, of the border edges' directions in a development of the result
-      const auto dev = SMDF::develop_flat_metric(out, SMDF::parameters::edge_length_map(ol));
-      const double q = CGAL_PI / 2;
-      double first = -1, spread = 0;
-      for(auto hb : halfedges(out)) {
-        if(!is_border(hb, out)) continue;
-        const auto x = opposite(hb, out);
-        const auto f = face(x, out);
-        const auto h0 = halfedge(f, out);
-        const int k = x == h0 ? 0 : x == next(h0, out) ? 1 : 2;
-        const auto c = dev.corners(f);
-        const double a = std::atan2(c[std::size_t((k + 1) % 3)].y() - c[std::size_t(k)].y(), c[std::size_t((k + 1) % 3)].x() - c[std::size_t(k)].x());
-        const double r = a - q * std::floor(a / q);
-        if(first < 0) first = r;
-        const double d = std::abs(r - first);
-        spread = std::max(spread, std::min(d, q - d));
-      }
+      const double spread = border_direction_spread(out, ol);
       SMDF_CHECK_MSG(worst_k < 1e-9 && spread < 1e-7, what << ": curvatures off by " << worst_k << ", border directions by " << spread);
     } else {
       const auto basis = SMDF::homotopy_basis(out, cone_vertices);

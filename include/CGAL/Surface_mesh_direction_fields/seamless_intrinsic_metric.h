@@ -157,17 +157,7 @@ Seamless_intrinsic_metric_status seamless_intrinsic_cone_metric(const TriangleMe
 
   std::vector<double> angle(2 * ne, 0.);   // per halfedge with a face: the angle at its source
   auto angles_of = [&](const internal::Flippable_triangulation& t, const std::vector<double>& l) {
-    double lo = CGAL_PI;
-    for(std::size_t f = 0; f < nf; ++f) {
-      const int h0 = t.face_halfedge[f], h1 = t.next[std::size_t(h0)], h2 = t.next[std::size_t(h1)];
-      const double a = l[std::size_t(h0 >> 1)], b = l[std::size_t(h1 >> 1)], c = l[std::size_t(h2 >> 1)];
-      if(!(a < b + c && b < a + c && c < a + b)) return -1.;
-      angle[std::size_t(h0)] = internal::corner_angle_of(b, a, c);   // at source(h0): opposite side h1
-      angle[std::size_t(h1)] = internal::corner_angle_of(c, a, b);
-      angle[std::size_t(h2)] = CGAL_PI - angle[std::size_t(h0)] - angle[std::size_t(h1)];
-      lo = (std::min)(lo, (std::min)(angle[std::size_t(h0)], (std::min)(angle[std::size_t(h1)], angle[std::size_t(h2)])));
-    }
-    return lo;
+    return internal::corner_angles_of(t, l, angle);
   };
   auto curvature = [&](const internal::Flippable_triangulation& t, std::vector<double>& K) {
     K.assign(nv, 0.);

@@ -51,6 +51,25 @@ inline double corner_angle_of(double opposite, double a, double b)
   return std::acos((std::max)(-1., (std::min)(1., c)));
 }
 
+// The corner angles of every face of a triangulation `t` (Mesh_arrays or Flippable_triangulation)
+// under the side lengths `len`, per halfedge at its source; returns the smallest, or -1 if a face
+// violates the triangle inequality.
+template <typename Arrays>
+double corner_angles_of(const Arrays& t, const std::vector<double>& len, std::vector<double>& angle)
+{
+  double lo = CGAL_PI;
+  for(std::size_t f = 0; f < t.face_halfedge.size(); ++f) {
+    const int h0 = t.face_halfedge[f], h1 = t.next[std::size_t(h0)], h2 = t.next[std::size_t(h1)];
+    const double a = len[std::size_t(h0 >> 1)], b = len[std::size_t(h1 >> 1)], c = len[std::size_t(h2 >> 1)];
+    if(!(a < b + c && b < a + c && c < a + b)) return -1.;
+    angle[std::size_t(h0)] = corner_angle_of(b, a, c);   // at source(h0): opposite side h1
+    angle[std::size_t(h1)] = corner_angle_of(c, a, b);
+    angle[std::size_t(h2)] = CGAL_PI - angle[std::size_t(h0)] - angle[std::size_t(h1)];
+    lo = (std::min)(lo, (std::min)(angle[std::size_t(h0)], (std::min)(angle[std::size_t(h1)], angle[std::size_t(h2)])));
+  }
+  return lo;
+}
+
 } // namespace internal
 
 /// \ingroup PkgSurfaceMeshDirectionFieldsRemeshing
@@ -120,19 +139,7 @@ Seamless_metric_status seamless_cone_metric(const TriangleMesh& tm, const InputL
   std::vector<std::vector<Turn>> loops = internal::holonomy_loops(im);
   st.loops = loops.size();
   std::vector<double> angle(2 * ne, 0.);   // per halfedge with a face: the angle at its source
-  auto angles_of = [&](const std::vector<double>& len) {
-    double lo = CGAL_PI;
-    for(std::size_t f = 0; f < nf; ++f) {
-      const int h0 = m.face_halfedge[f], h1 = m.next[std::size_t(h0)], h2 = m.next[std::size_t(h1)];
-      const double a = len[std::size_t(h0 >> 1)], b = len[std::size_t(h1 >> 1)], c = len[std::size_t(h2 >> 1)];
-      if(!(a < b + c && b < a + c && c < a + b)) return -1.;
-      angle[std::size_t(h0)] = internal::corner_angle_of(b, a, c);   // at source(h0): opposite side h1
-      angle[std::size_t(h1)] = internal::corner_angle_of(c, a, b);
-      angle[std::size_t(h2)] = CGAL_PI - angle[std::size_t(h0)] - angle[std::size_t(h1)];
-      lo = (std::min)(lo, (std::min)(angle[std::size_t(h0)], (std::min)(angle[std::size_t(h1)], angle[std::size_t(h2)])));
-    }
-    return lo;
-  };
+  auto angles_of = [&](const std::vector<double>& len) { return internal::corner_angles_of(m, len, angle); };
   auto holonomy = [&](const std::vector<Turn>& t) { return internal::loop_holonomy(m, angle, t); };
   // rows: the curvature of every vertex but the first (Gauss-Bonnet fixes its own), then the loops
   int nrows = 0;
