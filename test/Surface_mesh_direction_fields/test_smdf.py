@@ -2296,6 +2296,23 @@ def test_shared_remesh_open(smdf, c, meshes, tmp):
                 "remesh bob: cones moved (holonomy %r -> %r in %r moves), seamless metric (%r -> %r), the map's seamless energy %r"
                 % (mv.get("initial_holonomy_error"), mv.get("holonomy_error"), mv.get("moves"), sm.get("initial_holonomy_error"),
                    sm.get("holonomy_error"), g.get("seamless_energy")))
+    # the fertility (genus 4) at 4,000 quads: its placed cones' holonomies start 0.77 rad off, too far
+    # for the fixed triangulation even after the cone moves; the seamless metric with intrinsic
+    # flips reaches them, the map is made on its triangulation and the remesh placed on the input
+    # through its common subdivision: a valid remesh
+    fertility = os.path.join(meshes, "fertility_igltut.off")
+    r = smdf.json(["remesh", fertility, "--faces", "4000", "--out", os.path.join(tmp, "fertility.obj")], "remesh fertility (seamless with flips)")
+    if r:
+        sm = r.get("metric", {}).get("seamless", {})
+        wf = sm.get("with_flips", {})
+        g = r.get("integer_grid_map", {})
+        c.check(sm.get("success") is False and wf.get("success") is True and wf.get("initial_holonomy_error", 0) > 0.3
+                and wf.get("holonomy_error", 1) < 1e-9 and wf.get("edge_flips", 0) > 0 and wf.get("correspondence") == "common subdivision"
+                and r.get("metric", {}).get("intrinsic_triangulation") is True and g.get("seamless_energy", 1) < 1e-12,
+                "remesh fertility: the fixed triangulation's seamless metric fails (%r), with flips it converges (%r -> %r, %r flips, "
+                "%r), the map's seamless energy %r" % (sm.get("message"), wf.get("initial_holonomy_error"), wf.get("holonomy_error"),
+                                                        wf.get("edge_flips"), wf.get("correspondence"), g.get("seamless_energy")))
+        automatic_remesh_read_back(c, "fertility_igltut.off", fertility, os.path.join(tmp, "fertility.obj"), r, "remesh fertility")
     # the rotor (genus 1): at 1,000 quads, bound 0.5 and spacing 6, rounding the 10 cones'
     # positions implied a seam translation of -18.5, which the map then refused; a rounding must
     # keep integral every value it implies, of either phase. The map is now valid (its own
