@@ -1225,15 +1225,26 @@ void remeshing_cones(const std::string& dir)
 // fewer after; the total curvature is kept, 2 cones fewer per cancelled pair, the boundary's
 // corners in place, no two cones adjacent; the metric of the new cones converges. On both
 // Surface_mesh and Polyhedron_3 (the same counts).
+// The cones place_remeshing_cones() places on `m` (its defaults): its status, and the cones as a
+// curvature per vertex (0 elsewhere).
+template <typename Mesh>
+auto placed_cone_curvatures(const Mesh& m)
+{
+  auto placed = get(CGAL::dynamic_edge_property_t<double>(), m);
+  const auto ps = SMDF::place_remeshing_cones(m, placed);
+  auto curvature = get(CGAL::dynamic_vertex_property_t<double>(), m);
+  for(auto v : vertices(m)) put(curvature, v, 0.);
+  for(const auto& c : ps.cones) put(curvature, c.first, c.second);
+  return std::make_pair(ps, curvature);
+}
+
 template <typename Mesh>
 std::size_t check_cone_separation(const Mesh& m, double quads, const std::string& what, Cone_separation_counts& counts)
 {
   typedef typename boost::graph_traits<Mesh>::vertex_descriptor V;
-  auto placed = get(CGAL::dynamic_edge_property_t<double>(), m);
-  const auto ps = SMDF::place_remeshing_cones(m, placed);
-  auto curvature = get(CGAL::dynamic_vertex_property_t<double>(), m);
-  for(V v : vertices(m)) put(curvature, v, 0.);
-  for(const auto& c : ps.cones) put(curvature, c.first, c.second);
+  const auto placement = placed_cone_curvatures(m);
+  const auto& ps = placement.first;
+  const auto& curvature = placement.second;
   auto l = get(CGAL::dynamic_edge_property_t<double>(), m);
   const auto cm = SMDF::compute_cone_metric(m, curvature, l, SMDF::parameters::intrinsic_edge_flips(false));
   if(!cm.converged) { std::cout << what << ": the cone metric needs flips (skipped)" << std::endl; return 0; }
@@ -2361,11 +2372,7 @@ void seamless_metrics(const std::string& dir)
 template <typename Mesh>
 SMDF::Seamless_intrinsic_metric_status seamless_with_flips_of(const Mesh& mesh)
 {
-  auto placed = get(CGAL::dynamic_edge_property_t<double>(), mesh);
-  const auto cs = SMDF::place_remeshing_cones(mesh, placed);
-  auto target = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
-  for(auto v : vertices(mesh)) put(target, v, 0.);
-  for(const auto& c : cs.cones) put(target, c.first, c.second);
+  const auto target = placed_cone_curvatures(mesh).second;
   auto lengths = get(CGAL::dynamic_edge_property_t<double>(), mesh);
   auto u = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
   const SMDF::Cone_metric_status cm = SMDF::compute_cone_metric(mesh, target, lengths, SMDF::parameters::conformal_factor_map(u).common_subdivision(false));
