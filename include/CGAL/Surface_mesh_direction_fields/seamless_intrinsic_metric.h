@@ -160,12 +160,7 @@ Seamless_intrinsic_metric_status seamless_intrinsic_cone_metric(const TriangleMe
     return internal::corner_angles_of(t, l, angle);
   };
   auto curvature = [&](const internal::Flippable_triangulation& t, std::vector<double>& K) {
-    K.assign(nv, 0.);
-    for(std::size_t v = 0; v < nv; ++v) if(!m.is_isolated(int(v))) K[v] = m.is_boundary_vertex(int(v)) ? CGAL_PI : 2 * CGAL_PI;
-    for(std::size_t f = 0; f < nf; ++f) {
-      int h = t.face_halfedge[f];
-      for(int i = 0; i < 3; ++i, h = t.next[std::size_t(h)]) K[std::size_t(t.source(h))] -= angle[std::size_t(h)];
-    }
+    internal::vertex_curvatures_of(m, t, angle, K);
   };
   const double start_min_angle = angles_of(tri, len);
   if(!(start_min_angle > 0)) { st.message = "the input metric's Delaunay triangulation is degenerate"; return st; }
@@ -212,7 +207,7 @@ Seamless_intrinsic_metric_status seamless_intrinsic_cone_metric(const TriangleMe
   };
   const std::vector<double> l0 = len;
   std::vector<int> count(nf, 0);
-  auto measure = [&]() {   // the current state's angles, curvatures and residual
+  auto measure = [&]() {   // the current state's angles and curvatures
     angles_of(tri, len);
     curvature(tri, K);
   };
@@ -236,18 +231,7 @@ Seamless_intrinsic_metric_status seamless_intrinsic_cone_metric(const TriangleMe
       const double stage_tol = stage == stages ? tol : 1e-6;
       for(; it < max_iterations; ++it) {
         if(st.curvature_error <= stage_tol && st.holonomy_error <= stage_tol) break;
-        std::vector<Eigen::Triplet<double>> tr;
-        for(std::size_t f = 0; f < nf; ++f) {
-          int h = tri.face_halfedge[f];
-          for(int i = 0; i < 3; ++i, h = tri.next[std::size_t(h)]) {
-            const int r = row[std::size_t(tri.source(h))];
-            if(r >= 0) internal::corner_angle_derivative(tri, angle, h, -1., [&](int e, double d) { tr.emplace_back(r, e, d); });
-          }
-        }
-        for(std::size_t i = 0; i < loops.size(); ++i)
-          internal::loop_holonomy_derivative(tri, angle, loops[i], [&](int e, double d) { tr.emplace_back(loop_row0 + int(i), e, d); });
-        Eigen::SparseMatrix<double> J(nrows, int(ne));
-        J.setFromTriplets(tr.begin(), tr.end());
+        const Eigen::SparseMatrix<double> J = internal::seamless_jacobian(tri, angle, row, loop_row0, loops, ne);
         Eigen::SparseMatrix<double> JJt = J * Eigen::SparseMatrix<double>(J.transpose());
         // a relative 1e-12 on the diagonal: on a torus without cones a holonomy row is a
         // combination of curvature rows (a flat torus has no rotational holonomy)

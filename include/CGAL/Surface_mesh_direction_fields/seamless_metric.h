@@ -70,6 +70,41 @@ double corner_angles_of(const Arrays& t, const std::vector<double>& len, std::ve
   return lo;
 }
 
+// The curvature of every vertex (angle defect, geodesic curvature on the boundary) from the corner
+// angles of a triangulation `t` (Mesh_arrays or Flippable_triangulation) of the mesh `m`.
+template <typename TM, typename Arrays>
+void vertex_curvatures_of(const Mesh_arrays<TM>& m, const Arrays& t, const std::vector<double>& angle, std::vector<double>& K)
+{
+  const std::size_t nv = m.number_of_vertices();
+  K.assign(nv, 0.);
+  for(std::size_t v = 0; v < nv; ++v) if(!m.is_isolated(int(v))) K[v] = m.is_boundary_vertex(int(v)) ? CGAL_PI : 2 * CGAL_PI;
+  for(std::size_t f = 0; f < t.face_halfedge.size(); ++f) {
+    int h = t.face_halfedge[f];
+    for(int i = 0; i < 3; ++i, h = t.next[std::size_t(h)]) K[std::size_t(t.source(h))] -= angle[std::size_t(h)];
+  }
+}
+
+// The Jacobian of a seamless metric's equations in the log lengths: rows `row[v]` (-1: none) the
+// curvature of vertex v (minus its corner angles' derivatives), then from `loop_row0` one per loop.
+template <typename Arrays>
+Eigen::SparseMatrix<double> seamless_jacobian(const Arrays& t, const std::vector<double>& angle, const std::vector<int>& row,
+                                              int loop_row0, const std::vector<std::vector<Loop_turn>>& loops, std::size_t ne)
+{
+  std::vector<Eigen::Triplet<double>> tr;
+  for(std::size_t f = 0; f < t.face_halfedge.size(); ++f) {
+    int h = t.face_halfedge[f];
+    for(int i = 0; i < 3; ++i, h = t.next[std::size_t(h)]) {
+      const int r = row[std::size_t(t.source(h))];
+      if(r >= 0) corner_angle_derivative(t, angle, h, -1., [&](int e, double d) { tr.emplace_back(r, e, d); });
+    }
+  }
+  for(std::size_t i = 0; i < loops.size(); ++i)
+    loop_holonomy_derivative(t, angle, loops[i], [&](int e, double d) { tr.emplace_back(loop_row0 + int(i), e, d); });
+  Eigen::SparseMatrix<double> J(loop_row0 + int(loops.size()), int(ne));
+  J.setFromTriplets(tr.begin(), tr.end());
+  return J;
+}
+
 } // namespace internal
 
 /// \ingroup PkgSurfaceMeshDirectionFieldsRemeshing
@@ -129,7 +164,7 @@ Seamless_metric_status seamless_cone_metric(const TriangleMesh& tm, const InputL
   const internal::Mesh_arrays<TriangleMesh>& m = im.arrays();
   if(im.topology_arrays().components.size() != 1)
     throw Input_error(Input_error::INVALID_ARGUMENT, "seamless_cone_metric() needs a mesh of one component");
-  const std::size_t nv = m.number_of_vertices(), ne = m.number_of_edges(), nf = m.number_of_faces();
+  const std::size_t nv = m.number_of_vertices(), ne = m.number_of_edges();
   const double period = 2 * CGAL_PI / N;
   std::vector<double> l0(ne), l(ne);
   for(std::size_t e = 0; e < ne; ++e) l0[e] = l[e] = m.length[e];
@@ -146,14 +181,7 @@ Seamless_metric_status seamless_cone_metric(const TriangleMesh& tm, const InputL
   const std::vector<int> row = m.indices_but_first_vertex(nrows);
   const int loop_row0 = nrows;
   nrows += int(loops.size());
-  auto curvature = [&](std::vector<double>& K) {
-    K.assign(nv, 0.);
-    for(std::size_t v = 0; v < nv; ++v) if(!m.is_isolated(int(v))) K[v] = m.is_boundary_vertex(int(v)) ? CGAL_PI : 2 * CGAL_PI;
-    for(std::size_t f = 0; f < nf; ++f) {
-      int h = m.face_halfedge[f];
-      for(int i = 0; i < 3; ++i, h = m.next[std::size_t(h)]) K[std::size_t(m.source(h))] -= angle[std::size_t(h)];
-    }
-  };
+  auto curvature = [&](std::vector<double>& K) { internal::vertex_curvatures_of(m, m, angle, K); };
   if(angles_of(l) < 0) { st.message = "the input lengths violate the triangle inequality"; return st; }
   std::vector<double> K0, K;
   curvature(K0);
@@ -210,18 +238,7 @@ Seamless_metric_status seamless_cone_metric(const TriangleMesh& tm, const InputL
   for(; it < max_iterations; ++it) {
     if(st.curvature_error <= stage_tol && st.holonomy_error <= stage_tol) break;
     // J: d(curvature)/d(lambda) = -sum of the corner derivatives; d(holonomy)/d(lambda) likewise
-    std::vector<Eigen::Triplet<double>> tr;
-    auto add_corner = [&](int r, int c, double s) {   // s times the derivative of the angle at source(c)
-      if(r >= 0) internal::corner_angle_derivative(m, angle, c, s, [&](int e, double d) { tr.emplace_back(r, e, d); });
-    };
-    for(std::size_t f = 0; f < nf; ++f) {
-      int h = m.face_halfedge[f];
-      for(int i = 0; i < 3; ++i, h = m.next[std::size_t(h)]) add_corner(row[std::size_t(m.source(h))], h, -1.);
-    }
-    for(std::size_t i = 0; i < loops.size(); ++i)
-      internal::loop_holonomy_derivative(m, angle, loops[i], [&](int e, double d) { tr.emplace_back(loop_row0 + int(i), e, d); });
-    Eigen::SparseMatrix<double> J(nrows, int(ne));
-    J.setFromTriplets(tr.begin(), tr.end());
+    const Eigen::SparseMatrix<double> J = internal::seamless_jacobian(m, angle, row, loop_row0, loops, ne);
     const Eigen::SparseMatrix<double> JJt = J * Eigen::SparseMatrix<double>(J.transpose());
     Cholmod_cholesky::Matrix lower = JJt.triangularView<Eigen::Lower>();
     std::string msg;
