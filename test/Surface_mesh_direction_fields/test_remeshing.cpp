@@ -1835,6 +1835,111 @@ void untangling(const std::string& dir)
                                                                  << outcome[2000] << " left, across the ear)");
 }
 
+// The integer solutions of the seams' conditions (internal/Integer_grid_map/seam_lattice.h), on
+// random homogeneous integer systems shaped as integer_grid_map() writes them (a few unknowns per
+// condition, coefficients +-1 and +-2 as the closings of nodes and of quarter- and half-turn
+// cones put them, realified complex coefficients (1 - i^k) included, and on systems of at most 5
+// unknowns any coefficient up to 6): B's columns solve every
+// condition, the coordinate rows T satisfy T B = I (so every integer solution in B's span is B t
+// with t = T y an integer vector), the number of free variables is n minus the conditions' rank,
+// and, on small systems, every integer solution in a box found by enumeration is B (T y).
+void seam_lattice_core()
+{
+  typedef SMDF::internal::Seam_lattice Lattice;
+  std::mt19937 rng(20261207);
+  std::size_t systems = 0, enumerated = 0, combined = 0;
+  for(int trial = 0; trial < 400; ++trial) {
+    const int n = 1 + int(rng() % (trial < 200 ? 5 : 40));
+    const int m = int(rng() % std::size_t(n + 3));
+    std::vector<Lattice::Sparse> rows;
+    for(int r = 0; r < m; ++r) {
+      Lattice::Sparse row;
+      if(n >= 4 && rng() % 3 == 0) {   // (1 - i^k) Z - T = 0, realified: Z = (z0, z1), T = (t0, t1)
+        const int k = 1 + int(rng() % 3), z = int(rng() % std::size_t(n - 1)), t = (z + 2 + int(rng() % std::size_t(n - 2))) % n;
+        const std::complex<double> c = 1. - std::pow(std::complex<double>(0, 1), k);
+        const bool imaginary_part = rng() % 2;
+        Lattice::Sparse q;
+        auto add = [&](int i, long long v) { if(v != 0) q[i] += v; };
+        if(!imaginary_part) { add(z, std::lround(c.real())); add((z + 1) % n, -std::lround(c.imag())); }
+        else { add(z, std::lround(c.imag())); add((z + 1) % n, std::lround(c.real())); }
+        add(t, -1);
+        for(const auto& e : q) if(e.second != 0) row[e.first] = e.second;
+      } else {
+        // small systems: any small coefficients; large ones: a node's closing (+-1), sometimes a 2
+        const int entries = 1 + int(rng() % 4);
+        for(int j = 0; j < entries; ++j) {
+          static const long long small_system[] = {1, -1, 2, -2, 3, -4, 6}, large_system[] = {1, -1, 1, -1, 1, -1, 2, -2};
+          row[int(rng() % std::size_t(n))] += n <= 5 ? small_system[rng() % 7] : large_system[rng() % 8];
+        }
+        for(auto it = row.begin(); it != row.end();) it = it->second == 0 ? row.erase(it) : std::next(it);
+      }
+      if(!row.empty()) rows.push_back(row);
+    }
+    Lattice lattice(n, n / 2);
+    std::string msg;
+    bool added = true;
+    for(const auto& row : rows) added = added && lattice.add(row, msg);
+    SMDF_CHECK_MSG(added, "seam lattice, system " << trial << ": " << msg);
+    if(!added) continue;
+    ++systems;
+    const std::vector<int> fv = lattice.free_variables();
+    Eigen::MatrixXd C = Eigen::MatrixXd::Zero(Eigen::Index(rows.size()), n);
+    for(std::size_t r = 0; r < rows.size(); ++r) for(const auto& e : rows[r]) C(Eigen::Index(r), e.first) = double(e.second);
+    const Eigen::Index rank = rows.empty() ? 0 : Eigen::FullPivLU<Eigen::MatrixXd>(C).rank();
+    SMDF_CHECK_MSG(Eigen::Index(fv.size()) == n - rank, "seam lattice, system " << trial << ": " << fv.size() << " free variables, " << n - rank << " expected");
+    std::vector<Lattice::Sparse> columns;
+    for(int w : fv) columns.push_back(lattice.column(w));
+    for(std::size_t a = 0; a < fv.size(); ++a) {
+      for(const auto& row : rows) {   // C b = 0, exactly
+        long long dot = 0;
+        for(const auto& e : row) { const auto it = columns[a].find(e.first); if(it != columns[a].end()) dot += e.second * it->second; }
+        SMDF_CHECK_MSG(dot == 0, "seam lattice, system " << trial << ": a basis vector breaks a condition by " << dot);
+      }
+      for(std::size_t b = 0; b < fv.size(); ++b) {   // T B = I, exactly
+        long long dot = 0;
+        for(const auto& e : lattice.coordinate(fv[a])) { const auto it = columns[b].find(e.first); if(it != columns[b].end()) dot += e.second * it->second; }
+        SMDF_CHECK_MSG(dot == (a == b ? 1 : 0), "seam lattice, system " << trial << ": T B is not the identity at " << a << ", " << b);
+      }
+      combined += lattice.coordinate(fv[a]).size() > 1;
+    }
+    if(n > 4) continue;
+    // every integer solution in [-4, 4]^n is B (T y)
+    std::vector<long long> y(std::size_t(n), -4);
+    for(;;) {
+      bool solves = true;
+      for(const auto& row : rows) { long long dot = 0; for(const auto& e : row) dot += e.second * y[std::size_t(e.first)]; solves = solves && dot == 0; }
+      if(solves) {
+        std::vector<long long> back(std::size_t(n), 0);
+        for(std::size_t a = 0; a < fv.size(); ++a) {
+          long long t = 0;
+          for(const auto& e : lattice.coordinate(fv[a])) t += e.second * y[std::size_t(e.first)];
+          for(const auto& e : columns[a]) back[std::size_t(e.first)] += e.second * t;
+        }
+        SMDF_CHECK_MSG(back == y, "seam lattice, system " << trial << ": an integer solution is not B T y");
+        ++enumerated;
+      }
+      int i = 0;
+      while(i < n && y[std::size_t(i)] == 4) y[std::size_t(i++)] = -4;
+      if(i == n) break;
+      ++y[std::size_t(i)];
+    }
+  }
+  {   // a dense system of large coefficients: the changes of variables outgrow 2^30, said so
+    Lattice lattice(60, 30);
+    std::string msg;
+    bool added = true;
+    for(int r = 0; r < 60 && added; ++r) {
+      Lattice::Sparse row;
+      for(int j = 0; j < 60; ++j) row[j] = 2 + (long long)(rng() % 5);
+      added = lattice.add(row, msg);
+    }
+    SMDF_CHECK_MSG(!added && msg.find("2^30") != std::string::npos, "seam lattice: a dense system of coefficients 2 to 6 reduced without overflow, or failed without saying why");
+  }
+  std::cout << "seam lattice: " << systems << " random systems, " << combined << " coordinates that combine several values, "
+            << enumerated << " integer solutions enumerated, each B T y" << std::endl;
+  SMDF_CHECK_MSG(combined > 0, "seam lattice: no system needed a combined coordinate (the extended-Euclid path untested)");
+}
+
 // Quads of a remesh folded at a corner (not convex, none inverted) on a flat input: a 6 x 6 grid
 // of quads on the square [0, 3]^2 (the input: 12 x 12 cells, two triangles each), three inner
 // vertices pushed into a neighbouring quad. untangle_remesh() counts the folded quads, unfolds
@@ -2511,7 +2616,7 @@ int main(int argc, char** argv)
     winding_faults_core();
     if(!dir.empty()) { box_polycube(dir); ricci_flow_segments(dir); seam_relaxation(dir); flipped_flat_metric(dir); delaunay_refinement(dir); octahedron_polyhedron(dir); obelisk(dir); untangling(dir); }
   }
-  if(part != "polycube") cube_through_intrinsic_triangulation();
+  if(part != "polycube") { seam_lattice_core(); cube_through_intrinsic_triangulation(); }
   if(part != "polycube" && !dir.empty()) { remeshing_cones(dir); cone_separation(dir); integer_grid_maps(dir); integer_grid_maps_open(dir); seamless_metrics(dir); seamless_intrinsic_metrics(dir); }
   if(dir.empty()) std::cout << "../shared/data not found: the shared meshes' parts skipped" << std::endl;
   return smdf_test::finish();

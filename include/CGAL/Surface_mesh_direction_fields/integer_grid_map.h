@@ -18,7 +18,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/local_resolve.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/map_factor.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/seam_layout.h>
-#include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/small_conditions.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/seam_lattice.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/winding.h>
 
 #include <Eigen/Dense>
@@ -47,8 +47,10 @@ struct Integer_grid_map_status
   std::vector<std::pair<std::size_t, int>> singularities;
   std::size_t cut_edges = 0;   ///< edges of the cut graph (seams)
   std::size_t arcs = 0;        ///< seams between the cut graph's nodes, one translation each
-  std::size_t rounded = 0;     ///< integer values fixed (singularity and translation coordinates)
-  std::size_t implied = 0;     ///< integer values that the others already implied
+  /// integer values rounded: the coordinates of the seams' conditions' integer solutions
+  /// (mostly singularity positions and translations themselves)
+  std::size_t rounded = 0;
+  std::size_t implied = 0;     ///< integer values that the seams' conditions fix given the rounded ones
   /// triangles whose image is folded (clockwise) or degenerate; success requires none
   std::size_t folded_triangles = 0;
   std::size_t seamless_folded_triangles = 0;   ///< the same count for the seamless map, before rounding
@@ -95,11 +97,15 @@ struct Integer_grid_map_status
 /// of rotation \f$i^k\f$: \f$(1 - i^k) Z = T\f$; at a node: \f$T = 0\f$). One sparse Cholesky
 /// factorisation of the whole system with the small unknowns ordered last (its trailing block is
 /// their Schur complement; the vertex block split in two domains factored on two threads) and a
-/// dense system for the small unknowns give the seamless map. Then the singularity
-/// coordinates, then the translations, are rounded one at a time, nearest to an integer first,
-/// each re-solving only the dense system (values the earlier ones already imply are checked,
-/// not fixed again). The read-back counts folded triangles: rounding can fold the map where
-/// singularities are closer than about one grid unit; the status then fails.
+/// dense system for the small unknowns give the seamless map. The conditions have integer
+/// coefficients; unimodular changes of variables (a column Hermite reduction) write their integer
+/// solutions as \f$y = B t\f$, \f$t\f$ any integer vector. The coordinates of \f$t\f$ (the
+/// singularity positions first, then the translations; mostly these values themselves) are
+/// rounded one at a time, nearest to an integer first, each re-solving only the dense system
+/// restricted to \f$B\f$'s span. Any rounding keeps every condition with integers (a cone of
+/// \f$-\pi\f$, whose closing has a coefficient 2, constrains parities that rounding the values
+/// one by one could not meet). The read-back counts folded triangles: rounding can fold the map
+/// where singularities are closer than about one grid unit; the status then fails.
 ///
 /// <b>Boundary.</b> On an open mesh the cut graph's seams end on the boundary, and the boundary
 /// splits into straight runs at its corners (vertices where it turns under the metric) and where
@@ -247,31 +253,62 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
     re.rhs = target.real();
     imr.rhs = target.imag();
   };
-  // linear conditions on the small unknowns (internal/Integer_grid_map/small_conditions.h)
-  internal::Small_conditions conditions(ns);
-  auto add_condition = [&](const Eigen::VectorXd& row, double value) { return conditions.add(row, value); };
+  // the seams' conditions on the small unknowns (the closings, the lines, the gauge): homogeneous,
+  // with integer coefficients (sums of powers of i); their integer solutions are y = B t, t any
+  // integer vector (internal/Integer_grid_map/seam_lattice.h)
+  typedef internal::Seam_lattice::Sparse Int_row;
+  std::vector<Int_row> condition_rows;
+  bool integral = true;
+  auto put_integer = [&](Int_row& row, int k, double c) {
+    const double r = std::round(c);
+    if(std::abs(c - r) > 1e-9) integral = false;
+    if(r == 0) return;
+    const internal::Seam_lattice::Int v = row[k] + internal::Seam_lattice::Int(r);
+    if(v == 0) row.erase(k); else row[k] = v;
+  };
+  auto add_condition = [&](Int_row&& row) { if(!row.empty()) condition_rows.push_back(std::move(row)); };
   for(const internal::Corner_layout::Closing& c : closings) {
-    Eigen::VectorXd re = Eigen::VectorXd::Zero(ns), imr = Eigen::VectorXd::Zero(ns);
+    Int_row re, imr;
     for(const auto& p : c.t) {
-      re[2 * p.first] += p.second.real(); re[2 * p.first + 1] -= p.second.imag();
-      imr[2 * p.first] += p.second.imag(); imr[2 * p.first + 1] += p.second.real();
+      put_integer(re, 2 * p.first, p.second.real()); put_integer(re, 2 * p.first + 1, -p.second.imag());
+      put_integer(imr, 2 * p.first, p.second.imag()); put_integer(imr, 2 * p.first + 1, p.second.real());
     }
-    add_condition(re, 0);
-    add_condition(imr, 0);
+    add_condition(std::move(re));
+    add_condition(std::move(imr));
   }
-  auto unit_row = [&](int k) { Eigen::VectorXd e = Eigen::VectorXd::Zero(ns); e[k] = 1; return e; };
-  for(int k = narcs; k < narcs + nlines; ++k) add_condition(unit_row(2 * k + 1), 0);   // the lines' values are real
+  auto unit_row = [&](int k) { Int_row e; e[k] = 1; return e; };
+  for(int k = narcs; k < narcs + nlines; ++k) add_condition(unit_row(2 * k + 1));   // the lines' values are real
   for(const internal::Corner_layout::Line_condition& lc : line_conditions) {   // Im(sum c_k S_k) - Re(line) = 0
-    Eigen::VectorXd row = Eigen::VectorXd::Zero(ns);
-    for(const auto& p : lc.t) { row[2 * p.first] += p.second.imag(); row[2 * p.first + 1] += p.second.real(); }
-    row[2 * lc.line] -= 1;
-    if(row.cwiseAbs().maxCoeff() > 1e-12) add_condition(row, 0);   // inside a line: 0 = 0, no projection
+    Int_row row;
+    for(const auto& p : lc.t) { put_integer(row, 2 * p.first, p.second.imag()); put_integer(row, 2 * p.first + 1, p.second.real()); }
+    put_integer(row, 2 * lc.line, -1);
+    add_condition(std::move(row));   // inside a line: 0 = 0, none
   }
   if(first_point >= 0) {   // the first singularity or corner at the origin
-    add_condition(unit_row(2 * first_point), 0);
-    add_condition(unit_row(2 * first_point + 1), 0);
+    add_condition(unit_row(2 * first_point));
+    add_condition(unit_row(2 * first_point + 1));
   } else if(nlines > 0)
-    add_condition(unit_row(2 * narcs), 0);
+    add_condition(unit_row(2 * narcs));
+  if(!integral) { st.message = "the seams' conditions have coefficients that are not integers (a matching that is no quarter turn)"; return st; }
+  // the translations are eliminated first, the positions of singularities and corners kept free
+  // where a condition allows (they are ordered last): as Bommes et al. round, positions first
+  internal::Seam_lattice lattice(ns, 2 * (narcs + nlines));
+  for(const Int_row& row : condition_rows)
+    if(!lattice.add(row, st.message)) return st;
+  const std::vector<int> free_variables = lattice.free_variables();
+  const Eigen::Index nt = Eigen::Index(free_variables.size());
+  Eigen::SparseMatrix<double> B(ns, nt);   // y = B t
+  {
+    std::vector<Eigen::Triplet<double>> tb;
+    for(Eigen::Index j = 0; j < nt; ++j)
+      for(const auto& e : lattice.column(free_variables[std::size_t(j)])) tb.emplace_back(e.first, int(j), double(e.second));
+    B.setFromTriplets(tb.begin(), tb.end());
+  }
+  // R^T R of the conditions: the penalty that makes the whole matrix positive definite
+  Eigen::MatrixXd penalty = Eigen::MatrixXd::Zero(ns, ns);
+  for(const Int_row& row : condition_rows)
+    for(const auto& p : row)
+      for(const auto& q : row) penalty(p.first, q.first) += double(p.second) * double(q.second);
   // the normal equations with a stiffness per face (1, raised where the map folds: Bommes et
   // al.'s local stiffening), factored with the small unknowns last (map_factor.h): their Schur
   // complement S y = rs on the small unknowns, S = Hss - Hbs^T Hbb^-1 Hbs
@@ -280,7 +317,6 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   internal::Map_factor chol;
   Eigen::SparseMatrix<double> Hbs;
   std::vector<double> stiffness(nf, 1.);
-  const Eigen::MatrixXd& penalty = conditions.penalty();   // R^T R of the conditions before the roundings
   internal::Map_factor::Matrix A;
   double w = 1;   // the penalty's weight
   // face f's rows, weighted by k times their cotan weights: its vertex block summed in fb, its
@@ -361,12 +397,6 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   if(!assemble()) return st;
   auto big_of = [&](const Eigen::VectorXd& small) {   // the vertex unknowns given the small ones
     return chol.solve_vertices(Eigen::VectorXd(gb - Hbs * small));
-  };
-  // minimise y^T S y - 2 rs^T y subject to Q y = delta (independent rows): the KKT system
-  auto solve_small = [&](Eigen::VectorXd& y) {
-    const Eigen::VectorXd sol = conditions.kkt(S).partialPivLu().solve(conditions.kkt_rhs(rs));
-    y = sol.head(ns);
-    return sol.allFinite();
   };
   Eigen::VectorXd y, z;
   auto value = [&](const Expr& e) {
@@ -450,95 +480,50 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
     }
     return true;
   };
-  // M = N (N^T S N)^-1 N^T, N a basis of the conditions' null space (the top-left block of the
-  // KKT matrix's inverse): a new condition a.y = v moves y by M a (v - a.y) / (a.M a) and takes
-  // the rank one (M a)(M a)^T / (a.M a) off M, O(ns^2) per rounding instead of a dense solve
-  Eigen::MatrixXd M;
-  auto constrained_inverse = [&]() -> bool {
-    const Eigen::Index mq = Eigen::Index(conditions.size());
-    const Eigen::MatrixXd K = conditions.kkt(S);
-    Eigen::MatrixXd E = Eigen::MatrixXd::Zero(ns + mq, ns);
-    E.topRows(ns).setIdentity();
-    M = K.partialPivLu().solve(E).topRows(ns);
-    M = 0.5 * (M + M.transpose()).eval();
-    return M.allFinite();
-  };
-  if(!constrained_inverse()) { st.message = "the seams' conditions are inconsistent"; return st; }
-  // the seamless map: every condition so far (closings, lines, gauge) is homogeneous, so it is
-  // M rs (no second dense solve of the KKT system: 9 GFlop at 1,210 small unknowns)
-  y = M * rs;
+  // the seamless map on the lattice's span: t minimises t^T G t - 2 g^T t, G = B^T S B, g = B^T rs
+  const Eigen::MatrixXd SB = S * B;
+  Eigen::MatrixXd Ginv;
+  Eigen::VectorXd t;
+  {
+    const Eigen::MatrixXd G = B.transpose() * SB;
+    const Eigen::LLT<Eigen::MatrixXd> llt(G);
+    if(llt.info() != Eigen::Success) { st.message = "the map's system on the seams' conditions is singular"; return st; }
+    Ginv = llt.solve(Eigen::MatrixXd::Identity(nt, nt));
+    t = Ginv * (B.transpose() * rs);
+  }
+  y = B * t;
   const Eigen::VectorXd y_seamless = y;
-  // 8. rounding: singularity positions, then translations, the nearest to an integer first.
-  // Rounding one value can imply others through the closings with a non-unit coefficient (a seam
-  // that leaves and re-enters the same singularity: 1 - i^k); the value is then moved to the next
-  // integers until every implied value is an integer too.
-  auto implied_by = [&](int k) { return conditions.implied(k); };
-  const double m_scale = ns > 0 ? (std::max)(M.diagonal().cwiseAbs().maxCoeff(), 1e-300) : 1.;
+  // 8. rounding: the lattice's coordinates, those of singularity and corner positions alone
+  // first, then the others, the nearest to an integer first (Bommes et al.'s greedy rounding).
+  // Each is fixed by a rank-one update of G^-1 (O(nt^2)); any integer t gives an integer y that
+  // meets every condition, so no value is ever left without an admissible integer.
+  st.implied = std::size_t(ns - nt);
+  std::vector<int> phase_of(std::size_t(nt), 0);
+  for(Eigen::Index j = 0; j < nt; ++j)
+    for(const auto& e : lattice.coordinate(free_variables[std::size_t(j)]))
+      if(e.first < 2 * (narcs + nlines)) phase_of[std::size_t(j)] = 1;
+  const double g_scale = nt > 0 ? (std::max)(Ginv.diagonal().cwiseAbs().maxCoeff(), 1e-300) : 1.;
   for(int phase = 0; phase < 2; ++phase) {
-    // this phase's values, and the next phase's (a rounding here may imply one: it must stay integral)
-    std::vector<int> todo, later;
-    for(int k = 0; k < nsmall; ++k)
-      if((phase == 0) == (k >= narcs + nlines)) { todo.push_back(2 * k); todo.push_back(2 * k + 1); }
-      else if(phase == 0) { later.push_back(2 * k); later.push_back(2 * k + 1); }
+    std::vector<Eigen::Index> todo;
+    for(Eigen::Index j = 0; j < nt; ++j) if(phase_of[std::size_t(j)] == phase) todo.push_back(j);
     while(!todo.empty()) {
-      // the implied ones first: checked, not fixed
-      bool any = false;
-      for(std::size_t i = 0; i < todo.size();) {
-        const int k = todo[i];
-        if(!implied_by(k)) { ++i; continue; }
-        if(std::abs(y[k] - std::round(y[k])) > 1e-6) {
-          st.message = "a seam translation implied by the others is not an integer (" + std::to_string(y[k]) + ")";
-          return st;
-        }
-        ++st.implied;
-        todo.erase(todo.begin() + std::ptrdiff_t(i));
-        any = true;
-      }
-      if(any) continue;
       std::size_t best = 0;
       for(std::size_t i = 1; i < todo.size(); ++i)
-        if(std::abs(y[todo[i]] - std::round(y[todo[i]])) < std::abs(y[todo[best]] - std::round(y[todo[best]]))) best = i;
-      const int k = todo[best];
+        if(std::abs(t[todo[i]] - std::round(t[todo[i]])) < std::abs(t[todo[best]] - std::round(t[todo[best]]))) best = i;
+      const Eigen::Index j = todo[best];
       todo.erase(todo.begin() + std::ptrdiff_t(best));
-      const double r0 = std::round(y[k]), dir = y[k] >= r0 ? 1 : -1;
-      const std::size_t q0 = conditions.size();   // the conditions before this value's (no copy: 10 MB each at 1,210 small unknowns)
-      bool placed = false;
-      const Eigen::VectorXd Ma = M.col(k);
-      const double aMa = Ma[k];
-      const bool update = aMa > 1e-10 * m_scale;   // else (round-off on a nearly implied value) a full solve
-      for(double v : {r0, r0 + dir, r0 - dir, r0 + 2 * dir, r0 - 2 * dir}) {
-        conditions.drop_to(q0);
-        add_condition(unit_row(k), v);
-        Eigen::VectorXd yt;
-        if(update) yt = y + Ma * ((v - y[k]) / aMa);
-        else if(!solve_small(yt)) continue;
-        auto off_integer = [&](int j) { return implied_by(j) && std::abs(yt[j] - std::round(yt[j])) > 1e-6; };
-        if(std::any_of(todo.begin(), todo.end(), off_integer) || std::any_of(later.begin(), later.end(), off_integer)) continue;
-        y = yt;
-        placed = true;
-        break;
+      const double v = std::round(t[j]), d = Ginv(j, j);
+      if(d > 1e-14 * g_scale) {   // else t_j is already fixed by the others (round-off)
+        const Eigen::VectorXd c = Ginv.col(j);
+        t.noalias() += c * ((v - t[j]) / d);
+        Ginv.noalias() -= (c / d) * c.transpose();
       }
-      if(placed) {
-        if(update) M.noalias() -= (Ma / aMa) * Ma.transpose();
-        else if(!constrained_inverse()) { st.message = "the seams' conditions are inconsistent"; return st; }
-      }
-      if(!placed) {
-        st.message = "no integer value near " + std::to_string(y[k]) + " keeps the seams' translations integers";
-        return st;
-      }
+      t[j] = v;
       ++st.rounded;
     }
   }
-  // every small unknown (a translation or a singularity's position, in grid units) is now an
-  // integer fixed by the conditions: snapped, free of the updates' round-off (a dense solve of the
-  // conditions would cost O(ns^3) more)
-  for(int k = 0; k < ns; ++k) {
-    if(std::abs(y[k] - std::round(y[k])) > 1e-6) {
-      st.message = "a rounded value drifted from its integer (" + std::to_string(y[k]) + ")";
-      return st;
-    }
-    y[k] = std::round(y[k]);
-  }
+  for(Eigen::Index j = 0; j < nt; ++j) t[j] = std::round(t[j]);
+  y = B * t;   // integers: B's entries and t are
   // 9. the vertex unknowns, the corners' images and the read-back
   auto folds = [&]() {
     std::size_t n = 0;
