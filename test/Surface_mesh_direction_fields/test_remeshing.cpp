@@ -1847,7 +1847,7 @@ void seam_lattice_core()
 {
   typedef SMDF::internal::Seam_lattice Lattice;
   std::mt19937 rng(20261207);
-  std::size_t systems = 0, enumerated = 0, combined = 0;
+  std::size_t systems = 0, enumerated = 0, combined = 0, rounded_values = 0;
   for(int trial = 0; trial < 400; ++trial) {
     const int n = 1 + int(rng() % (trial < 200 ? 5 : 40));
     const int m = int(rng() % std::size_t(n + 3));
@@ -1902,6 +1902,49 @@ void seam_lattice_core()
       }
       combined += lattice.coordinate(fv[a]).size() > 1;
     }
+    // rounding: values fixed one at a time, each to the nearest admitted integer of a random
+    // target; in the end every value is determined, and the integers solve every condition and
+    // keep every fixed value. On small systems an admitted value is checked against enumeration:
+    // a value that some integer solution in [-3, 3]^n takes (with the earlier fixes) is admitted.
+    {
+      Lattice rounding(n, n / 2);
+      for(const auto& row : rows) rounding.add(row, msg);
+      std::vector<std::pair<int, long long>> fixed;
+      std::vector<int> order(static_cast<std::size_t>(n));
+      for(int k = 0; k < n; ++k) order[std::size_t(k)] = k;
+      std::shuffle(order.begin(), order.end(), rng);
+      bool sound = true;
+      for(int k : order) {
+        if(rounding.determined(k)) continue;
+        const long long target = static_cast<long long>(rng() % 7) - 3;
+        long long v = target;
+        for(int step = 1; !rounding.admits(k, v) && step < 64; ++step) v = target + ((step + 1) / 2) * (step % 2 == 1 ? 1 : -1);
+        if(n <= 4) {   // every value an enumerated solution takes is admitted
+          std::vector<long long> y(std::size_t(n), -3);
+          for(;;) {
+            bool solves = true;
+            for(const auto& row : rows) { long long dot = 0; for(const auto& e : row) dot += e.second * y[std::size_t(e.first)]; solves = solves && dot == 0; }
+            for(const auto& f : fixed) solves = solves && y[std::size_t(f.first)] == f.second;
+            if(solves) sound = sound && rounding.admits(k, y[std::size_t(k)]);
+            int i = 0;
+            while(i < n && y[std::size_t(i)] == 3) y[std::size_t(i++)] = -3;
+            if(i == n) break;
+            ++y[std::size_t(i)];
+          }
+        }
+        Lattice::Sparse fix;
+        fix[k] = 1;
+        SMDF_CHECK_MSG(rounding.add(fix, msg, v), "seam lattice, system " << trial << ": an admitted value was refused: " << msg);
+        fixed.emplace_back(k, v);
+      }
+      SMDF_CHECK_MSG(sound, "seam lattice, system " << trial << ": a value that an integer solution takes was not admitted");
+      bool all = true, solves = true, kept = true;
+      for(int k = 0; k < n; ++k) all = all && rounding.determined(k);
+      for(const auto& row : rows) { long long dot = 0; for(const auto& e : row) dot += e.second * rounding.offset(e.first); solves = solves && dot == 0; }
+      for(const auto& f : fixed) kept = kept && rounding.offset(f.first) == f.second;
+      SMDF_CHECK_MSG(all && solves && kept, "seam lattice, system " << trial << ": after the roundings, determined " << all << ", solves " << solves << ", fixed values kept " << kept);
+      rounded_values += fixed.size();
+    }
     if(n > 4) continue;
     // every integer solution in [-4, 4]^n is B (T y)
     std::vector<long long> y(std::size_t(n), -4);
@@ -1936,7 +1979,7 @@ void seam_lattice_core()
     SMDF_CHECK_MSG(!added && msg.find("2^30") != std::string::npos, "seam lattice: a dense system of coefficients 2 to 6 reduced without overflow, or failed without saying why");
   }
   std::cout << "seam lattice: " << systems << " random systems, " << combined << " coordinates that combine several values, "
-            << enumerated << " integer solutions enumerated, each B T y" << std::endl;
+            << enumerated << " integer solutions enumerated, each B T y; " << rounded_values << " values rounded to admitted integers" << std::endl;
   SMDF_CHECK_MSG(combined > 0, "seam lattice: no system needed a combined coordinate (the extended-Euclid path untested)");
 }
 

@@ -47,9 +47,7 @@ struct Integer_grid_map_status
   std::vector<std::pair<std::size_t, int>> singularities;
   std::size_t cut_edges = 0;   ///< edges of the cut graph (seams)
   std::size_t arcs = 0;        ///< seams between the cut graph's nodes, one translation each
-  /// integer values rounded: the coordinates of the seams' conditions' integer solutions
-  /// (mostly singularity positions and translations themselves)
-  std::size_t rounded = 0;
+  std::size_t rounded = 0;     ///< integer values fixed (singularity and translation coordinates)
   std::size_t implied = 0;     ///< integer values that the seams' conditions fix given the rounded ones
   /// triangles whose image is folded (clockwise) or degenerate; success requires none
   std::size_t folded_triangles = 0;
@@ -97,15 +95,16 @@ struct Integer_grid_map_status
 /// of rotation \f$i^k\f$: \f$(1 - i^k) Z = T\f$; at a node: \f$T = 0\f$). One sparse Cholesky
 /// factorisation of the whole system with the small unknowns ordered last (its trailing block is
 /// their Schur complement; the vertex block split in two domains factored on two threads) and a
-/// dense system for the small unknowns give the seamless map. The conditions have integer
-/// coefficients; unimodular changes of variables (a column Hermite reduction) write their integer
-/// solutions as \f$y = B t\f$, \f$t\f$ any integer vector. The coordinates of \f$t\f$ (the
-/// singularity positions first, then the translations; mostly these values themselves) are
-/// rounded one at a time, nearest to an integer first, each re-solving only the dense system
-/// restricted to \f$B\f$'s span. Any rounding keeps every condition with integers (a cone of
-/// \f$-\pi\f$, whose closing has a coefficient 2, constrains parities that rounding the values
-/// one by one could not meet). The read-back counts folded triangles: rounding can fold the map
-/// where singularities are closer than about one grid unit; the status then fails.
+/// dense system for the small unknowns give the seamless map. Then the singularity
+/// coordinates, then the translations, are rounded one at a time, nearest to an integer first,
+/// each re-solving only the dense system (restricted to the conditions' solutions). The
+/// conditions have integer coefficients; unimodular changes of variables (a column Hermite
+/// reduction) keep their integer solutions exactly, so each value is rounded to the nearest
+/// integer that still leaves one (a cone of \f$-\pi\f$, whose closing has a coefficient 2,
+/// constrains parities), and values the others determine are not rounded again. No rounding can
+/// leave a later value without an admissible integer. The read-back counts folded triangles:
+/// rounding can fold the map where singularities are closer than about one grid unit; the status
+/// then fails.
 ///
 /// <b>Boundary.</b> On an open mesh the cut graph's seams end on the boundary, and the boundary
 /// splits into straight runs at its corners (vertices where it turns under the metric) and where
@@ -493,37 +492,55 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   }
   y = B * t;
   const Eigen::VectorXd y_seamless = y;
-  // 8. rounding: the lattice's coordinates, those of singularity and corner positions alone
-  // first, then the others, the nearest to an integer first (Bommes et al.'s greedy rounding).
-  // Each is fixed by a rank-one update of G^-1 (O(nt^2)); any integer t gives an integer y that
-  // meets every condition, so no value is ever left without an admissible integer.
-  st.implied = std::size_t(ns - nt);
-  std::vector<int> phase_of(std::size_t(nt), 0);
-  for(Eigen::Index j = 0; j < nt; ++j)
-    for(const auto& e : lattice.coordinate(free_variables[std::size_t(j)]))
-      if(e.first < 2 * (narcs + nlines)) phase_of[std::size_t(j)] = 1;
+  st.implied = 0;
+  // 8. rounding: singularity and corner positions, then translations and lines, the nearest to an
+  // integer first (Bommes et al.'s greedy rounding). A value y_k = B_k t + c_k is fixed by a
+  // rank-one update of G^-1 (O(nt^2)), to the nearest integer that the lattice admits (a parity
+  // may exclude the nearest: the next is then tried); a value the fixed ones already determine is
+  // not rounded again. No rounding can leave a later value without an admissible integer.
+  const Eigen::SparseMatrix<double, Eigen::RowMajor> Brow = B;
   const double g_scale = nt > 0 ? (std::max)(Ginv.diagonal().cwiseAbs().maxCoeff(), 1e-300) : 1.;
+  auto current = [&](int k) { return Brow.row(k).dot(t); };
   for(int phase = 0; phase < 2; ++phase) {
-    std::vector<Eigen::Index> todo;
-    for(Eigen::Index j = 0; j < nt; ++j) if(phase_of[std::size_t(j)] == phase) todo.push_back(j);
+    std::vector<int> todo;
+    for(int k = 0; k < ns; ++k) if((k >= 2 * (narcs + nlines)) == (phase == 0)) todo.push_back(k);
     while(!todo.empty()) {
       std::size_t best = 0;
-      for(std::size_t i = 1; i < todo.size(); ++i)
-        if(std::abs(t[todo[i]] - std::round(t[todo[i]])) < std::abs(t[todo[best]] - std::round(t[todo[best]]))) best = i;
-      const Eigen::Index j = todo[best];
+      double best_gap = 2;
+      for(std::size_t i = 0; i < todo.size(); ++i) {
+        const int k = todo[i];
+        if(lattice.determined(k)) { best = i; best_gap = -1; break; }   // implied: taken off first
+        const double v = current(k), gap = std::abs(v - std::round(v));
+        if(gap < best_gap) { best = i; best_gap = gap; }
+      }
+      const int k = todo[best];
       todo.erase(todo.begin() + std::ptrdiff_t(best));
-      const double v = std::round(t[j]), d = Ginv(j, j);
-      if(d > 1e-14 * g_scale) {   // else t_j is already fixed by the others (round-off)
-        const Eigen::VectorXd c = Ginv.col(j);
-        t.noalias() += c * ((v - t[j]) / d);
+      if(best_gap < 0) { ++st.implied; continue; }
+      const double yk = current(k);
+      const double r0 = std::round(yk), dir = yk >= r0 ? 1 : -1;
+      double v = r0;
+      for(int step = 1; !lattice.admits(k, internal::Seam_lattice::Int(v)); ++step) {   // r0, r0 + dir, r0 - dir, r0 + 2 dir, ...
+        if(step > 64) { st.message = "no integer near " + std::to_string(yk) + " is admitted by the seams' conditions"; return st; }
+        v = r0 + dir * ((step + 1) / 2) * (step % 2 == 1 ? 1 : -1);
+      }
+      internal::Seam_lattice::Sparse fix;
+      fix[k] = 1;
+      if(!lattice.add(fix, st.message, internal::Seam_lattice::Int(v))) return st;
+      const Eigen::VectorXd ak = Brow.row(k).transpose();
+      const Eigen::VectorXd c = Ginv * ak;
+      const double d = ak.dot(c);
+      if(d > 1e-14 * g_scale) {   // else y_k barely moves t (round-off on a value nearly determined)
+        t.noalias() += c * ((v - yk) / d);
         Ginv.noalias() -= (c / d) * c.transpose();
       }
-      t[j] = v;
       ++st.rounded;
     }
   }
-  for(Eigen::Index j = 0; j < nt; ++j) t[j] = std::round(t[j]);
-  y = B * t;   // integers: B's entries and t are
+  // every small unknown is now determined by the lattice: the exact integers, free of round-off
+  for(int k = 0; k < ns; ++k) {
+    if(!lattice.determined(k)) { st.message = "a seam value was left undetermined by the rounding"; return st; }
+    y[k] = double(lattice.offset(k));
+  }
   // 9. the vertex unknowns, the corners' images and the read-back
   auto folds = [&]() {
     std::size_t n = 0;

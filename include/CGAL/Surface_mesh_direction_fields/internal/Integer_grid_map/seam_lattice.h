@@ -5,19 +5,20 @@
 #define CGAL_SURFACE_MESH_DIRECTION_FIELDS_INTERNAL_INTEGER_GRID_MAP_SEAM_LATTICE_H
 
 // The integer solutions of the seams' conditions of integer_grid_map() (integer_grid_map.h): the
-// closings around the vertices, the boundary's lines and the gauge are homogeneous linear
-// conditions C y = 0 with integer coefficients on the small unknowns y (translations, lines,
-// singularity and corner positions, real and imaginary parts). Every integer solution is y = B t
-// for exactly one integer vector t, and t = T y: rounding the coordinates of t one at a time can
-// never reach a dead end where no integer value keeps the others integers (a cone of -pi puts a
-// coefficient 2 into its closing, and rounding y itself then had to guess parities).
+// closings around the vertices, the boundary's lines and the gauge are linear conditions C y = 0
+// with integer coefficients on the small unknowns y (translations, lines, singularity and corner
+// positions, real and imaginary parts), and rounding adds y_k = v one value at a time. Which
+// integers v keep the system solvable in integers is exact here: a cone of -pi puts a coefficient
+// 2 into its closing, and rounding without this had to guess parities (and could reach a value
+// with no admissible integer at all).
 //
-// B and T come from unimodular changes of variables, one condition at a time (a column Hermite
-// reduction): y = U w with U integer and unimodular, starting from U = identity. A condition,
-// written in the current w, with a coefficient +-1 expresses that variable by the others, which
-// are substituted for it; otherwise two of its variables are replaced by two integer combinations
-// of them (extended Euclid) until one coefficient is their gcd g and the others 0, and then g w = 0
-// makes that variable 0. The variables left are t; T's rows are the matching rows of U^-1.
+// Every integer solution is y = U w + c for integer w, U integer: starting from U = identity,
+// c = 0, each condition is written in the current w. A coefficient +-1 expresses that variable by
+// the others, which are substituted for it; otherwise two of its variables are replaced by two
+// integer combinations of them (extended Euclid, determinant 1) until one coefficient is their gcd
+// g and the others 0, and g w = r fixes that variable (no integer solution if g does not divide
+// r). y_k can take the value v iff the gcd of its coefficients in w divides v - c_k. B = the
+// columns of U of the variables left, T = the matching rows of U^-1 (T B = I): y = B t + c.
 
 #include <cstddef>
 #include <cstdlib>
@@ -39,7 +40,8 @@ public:
 
   // variables of index `kept_from` and up are eliminated only where no other can be
   explicit Seam_lattice(int n, int kept_from)
-    : kept_from_(kept_from), expr_(std::size_t(n)), uses_(std::size_t(n)), coordinate_(std::size_t(n)), alive_(std::size_t(n), 1)
+    : kept_from_(kept_from), expr_(std::size_t(n)), offset_(std::size_t(n), 0), uses_(std::size_t(n)), coordinate_(std::size_t(n)),
+      alive_(std::size_t(n), 1)
   {
     for(int k = 0; k < n; ++k) {
       expr_[std::size_t(k)][k] = 1;
@@ -48,17 +50,26 @@ public:
     }
   }
 
-  // sum_k c_k y_k = 0 over the integer solutions so far. The variable eliminated by a coefficient
-  // +-1 is one below `kept_from` if there is one, among those the one in the fewest y (the least
-  // fill). False with `msg` if a coefficient grows beyond 2^30 (no shared mesh came near).
-  bool add(const Sparse& condition, std::string& msg)
+  // sum_k c_k y_k = value over the integer solutions so far. The variable eliminated by a
+  // coefficient +-1 is one below `kept_from` if there is one, among those the one in the fewest y
+  // (the least fill). False with `msg` if there is then no integer solution, or if a coefficient
+  // grows beyond 2^30 (no shared mesh came near).
+  bool add(const Sparse& condition, std::string& msg, Int value = 0)
   {
-    Sparse row;   // the condition in the current variables w
-    for(const auto& c : condition)
+    Sparse row;   // the condition in the current variables w: row . w = r
+    Int r = value;
+    for(const auto& c : condition) {
       for(const auto& e : expr_[std::size_t(c.first)])
         if(!accumulate(row, e.first, c.second, e.second, msg)) return false;
+      r -= c.second * offset_[std::size_t(c.first)];
+      if(!fits(r, msg)) return false;
+    }
     for(;;) {
-      if(row.empty()) { ++redundant_; return true; }
+      if(row.empty()) {
+        if(r != 0) { msg = "the seams' conditions have no integer solution"; return false; }
+        ++redundant_;
+        return true;
+      }
       int pivot = -1, smallest = -1;
       auto preferred = [&](int a, int b) {   // a is a better pivot than b
         if((a < kept_from_) != (b < kept_from_)) return a < kept_from_;
@@ -71,10 +82,11 @@ public:
       if(pivot < 0 && row.size() == 1) pivot = smallest;   // g w = 0: w = 0
       if(pivot >= 0) {
         const Int cp = row[pivot];
-        Sparse by;   // w_pivot = sum_j by_j w_j
+        Sparse by;   // w_pivot = sum_j by_j w_j + r / cp
         if(std::llabs(cp) == 1)
           for(const auto& e : row) if(e.first != pivot) by[e.first] = -e.second * cp;
-        return substitute(pivot, by, msg);
+        else if(r % cp != 0) { msg = "the seams' conditions have no integer solution"; return false; }
+        return substitute(pivot, by, r / cp, msg);
       }
       // no unit coefficient: combine the smallest with another so that one of them carries gcd
       int other = -1;   // the next smallest: the gcd comes in few steps
@@ -89,6 +101,18 @@ public:
       row.erase(other);
     }
   }
+
+  // whether y_k = v leaves an integer solution: the gcd of y_k's coefficients divides v - c_k
+  bool admits(int k, Int v) const
+  {
+    Int g = 0;
+    for(const auto& e : expr_[std::size_t(k)]) g = gcd(g, std::llabs(e.second));
+    const Int d = v - offset_[std::size_t(k)];
+    return g == 0 ? d == 0 : d % g == 0;
+  }
+  // y_k is fixed by the conditions so far (to offset(k))
+  bool determined(int k) const { return expr_[std::size_t(k)].empty(); }
+  Int offset(int k) const { return offset_[std::size_t(k)]; }
 
   // the free variables t, in increasing index
   std::vector<int> free_variables() const
@@ -126,6 +150,7 @@ private:
     if(v == 0) s.erase(i); else s[i] = v;
     return true;
   }
+  static Int gcd(Int a, Int b) { while(b != 0) { const Int r = a % b; a = b; b = r; } return a; }
   static Int extended_gcd(Int a, Int b, Int& x, Int& y)
   {
     Int x0 = 1, y0 = 0, x1 = 0, y1 = 1;
@@ -139,14 +164,16 @@ private:
     x = x0; y = y0;
     return a;
   }
-  // w_p = sum_j by_j w_j in every y; w_p is then no longer a variable
-  bool substitute(int p, const Sparse& by, std::string& msg)
+  // w_p = sum_j by_j w_j + constant in every y; w_p is then no longer a variable
+  bool substitute(int p, const Sparse& by, Int constant, std::string& msg)
   {
     const std::set<int> users = uses_[std::size_t(p)];
     for(int k : users) {
       Sparse& e = expr_[std::size_t(k)];
       const Int c = e[p];
       e.erase(p);
+      offset_[std::size_t(k)] += c * constant;
+      if(!fits(offset_[std::size_t(k)], msg)) return false;
       for(const auto& b : by) {
         if(!accumulate(e, b.first, c, b.second, msg)) return false;
         if(e.count(b.first)) uses_[std::size_t(b.first)].insert(k); else uses_[std::size_t(b.first)].erase(k);
@@ -181,7 +208,8 @@ private:
   }
 
   int kept_from_;
-  std::vector<Sparse> expr_;          // per y_k: its expression in the variables w
+  std::vector<Sparse> expr_;          // per y_k: its expression in the variables w (U's row k)
+  std::vector<Int> offset_;           // per y_k: its constant c_k
   std::vector<std::set<int>> uses_;   // per variable w: the y_k whose expression holds it
   std::vector<Sparse> coordinate_;    // per variable w: its expression in y (a row of U^-1)
   std::vector<char> alive_;           // w is still a variable (not expressed by the others)
