@@ -168,8 +168,6 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   const std::vector<Cplx>& big_dir = layout.big_dir;
   const int nsmall = layout.nsmall, nbig = layout.nbig;
   const std::vector<Expr>& corner = layout.corner;
-  const auto& closings = layout.closings;
-  const auto& line_conditions = layout.line_conditions;
   for(std::size_t v = 0; v < nv; ++v) {
     if(singular[v]) {
       int k = ((turns[v] % 4) + 4) % 4;
@@ -253,42 +251,13 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
     imr.rhs = target.imag();
   };
   // the seams' conditions on the small unknowns (the closings, the lines, the gauge): homogeneous,
-  // with integer coefficients (sums of powers of i); their integer solutions are y = B t, t any
-  // integer vector (internal/Integer_grid_map/seam_lattice.h)
+  // with integer coefficients (internal/Integer_grid_map/seam_lattice.h)
   typedef internal::Seam_lattice::Sparse Int_row;
   std::vector<Int_row> condition_rows;
-  bool integral = true;
-  auto put_integer = [&](Int_row& row, int k, double c) {
-    const double r = std::round(c);
-    if(std::abs(c - r) > 1e-9) integral = false;
-    if(r == 0) return;
-    const internal::Seam_lattice::Int v = row[k] + internal::Seam_lattice::Int(r);
-    if(v == 0) row.erase(k); else row[k] = v;
-  };
-  auto add_condition = [&](Int_row&& row) { if(!row.empty()) condition_rows.push_back(std::move(row)); };
-  for(const internal::Corner_layout::Closing& c : closings) {
-    Int_row re, imr;
-    for(const auto& p : c.t) {
-      put_integer(re, 2 * p.first, p.second.real()); put_integer(re, 2 * p.first + 1, -p.second.imag());
-      put_integer(imr, 2 * p.first, p.second.imag()); put_integer(imr, 2 * p.first + 1, p.second.real());
-    }
-    add_condition(std::move(re));
-    add_condition(std::move(imr));
+  if(!internal::seam_condition_rows(layout, narcs, nlines, first_point, condition_rows)) {
+    st.message = "the seams' conditions have coefficients that are not integers (a matching that is no quarter turn)";
+    return st;
   }
-  auto unit_row = [&](int k) { Int_row e; e[k] = 1; return e; };
-  for(int k = narcs; k < narcs + nlines; ++k) add_condition(unit_row(2 * k + 1));   // the lines' values are real
-  for(const internal::Corner_layout::Line_condition& lc : line_conditions) {   // Im(sum c_k S_k) - Re(line) = 0
-    Int_row row;
-    for(const auto& p : lc.t) { put_integer(row, 2 * p.first, p.second.imag()); put_integer(row, 2 * p.first + 1, p.second.real()); }
-    put_integer(row, 2 * lc.line, -1);
-    add_condition(std::move(row));   // inside a line: 0 = 0, none
-  }
-  if(first_point >= 0) {   // the first singularity or corner at the origin
-    add_condition(unit_row(2 * first_point));
-    add_condition(unit_row(2 * first_point + 1));
-  } else if(nlines > 0)
-    add_condition(unit_row(2 * narcs));
-  if(!integral) { st.message = "the seams' conditions have coefficients that are not integers (a matching that is no quarter turn)"; return st; }
   // the translations are eliminated first, the positions of singularities and corners kept free
   // where a condition allows (they are ordered last): as Bommes et al. round, positions first
   internal::Seam_lattice lattice(ns, 2 * (narcs + nlines));

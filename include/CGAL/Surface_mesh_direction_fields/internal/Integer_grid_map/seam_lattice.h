@@ -20,6 +20,9 @@
 // r). y_k can take the value v iff the gcd of its coefficients in w divides v - c_k. B = the
 // columns of U of the variables left, T = the matching rows of U^-1 (T B = I): y = B t + c.
 
+#include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/seam_layout.h>
+
+#include <cmath>
 #include <cstddef>
 #include <cstdlib>
 #include <map>
@@ -215,6 +218,47 @@ private:
   std::vector<char> alive_;           // w is still a variable (not expressed by the others)
   std::size_t redundant_ = 0;
 };
+
+// The seams' conditions of `layout` as integer rows over the real small unknowns (2 k and 2 k + 1:
+// the real and imaginary parts of small unknown k), each = 0: the closings, the lines' values
+// real, the boundary's line conditions, and the gauge (`first_point` at the origin if there is
+// one, else the first line at 0). False if a coefficient is no integer (sums of powers of i are).
+inline bool seam_condition_rows(const Corner_layout& layout, int narcs, int nlines, int first_point, std::vector<Seam_lattice::Sparse>& rows)
+{
+  typedef Seam_lattice::Sparse Row;
+  bool integral = true;
+  auto put = [&](Row& row, int k, double c) {
+    const double r = std::round(c);
+    if(std::abs(c - r) > 1e-9) integral = false;
+    if(r == 0) return;
+    const Seam_lattice::Int v = row[k] + Seam_lattice::Int(r);
+    if(v == 0) row.erase(k); else row[k] = v;
+  };
+  auto add = [&](Row&& row) { if(!row.empty()) rows.push_back(std::move(row)); };
+  for(const Corner_layout::Closing& c : layout.closings) {
+    Row re, imr;
+    for(const auto& p : c.t) {
+      put(re, 2 * p.first, p.second.real()); put(re, 2 * p.first + 1, -p.second.imag());
+      put(imr, 2 * p.first, p.second.imag()); put(imr, 2 * p.first + 1, p.second.real());
+    }
+    add(std::move(re));
+    add(std::move(imr));
+  }
+  auto unit_row = [](int k) { Row e; e[k] = 1; return e; };
+  for(int k = narcs; k < narcs + nlines; ++k) add(unit_row(2 * k + 1));   // the lines' values are real
+  for(const Corner_layout::Line_condition& lc : layout.line_conditions) {   // Im(sum c_k S_k) - Re(line) = 0
+    Row row;
+    for(const auto& p : lc.t) { put(row, 2 * p.first, p.second.imag()); put(row, 2 * p.first + 1, p.second.real()); }
+    put(row, 2 * lc.line, -1);
+    add(std::move(row));   // inside a line: 0 = 0, none
+  }
+  if(first_point >= 0) {   // the first singularity or corner at the origin
+    add(unit_row(2 * first_point));
+    add(unit_row(2 * first_point + 1));
+  } else if(nlines > 0)
+    add(unit_row(2 * narcs));
+  return integral;
+}
 
 } // namespace internal
 } // namespace Surface_mesh_direction_fields
