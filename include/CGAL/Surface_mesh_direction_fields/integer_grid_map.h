@@ -258,8 +258,8 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
     st.message = "the seams' conditions have coefficients that are not integers (a matching that is no quarter turn)";
     return st;
   }
-  // the translations are eliminated first, the positions of singularities and corners kept free
-  // where a condition allows (they are ordered last): as Bommes et al. round, positions first
+  // the translations eliminated first, the positions of singularities and corners (ordered last)
+  // only where no other variable can be
   internal::Seam_lattice lattice(ns, 2 * (narcs + nlines));
   for(const Int_row& row : condition_rows)
     if(!lattice.add(row, st.message)) return st;
@@ -461,9 +461,8 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   }
   y = B * t;
   const Eigen::VectorXd y_seamless = y;
-  st.implied = 0;
   // 8. rounding: singularity and corner positions, then translations and lines, the nearest to an
-  // integer first (Bommes et al.'s greedy rounding). A value y_k = B_k t + c_k is fixed by a
+  // integer first (Bommes et al.'s greedy rounding). A value y_k = B_k t is fixed by a
   // rank-one update of G^-1 (O(nt^2)), to the nearest integer that the lattice admits (a parity
   // may exclude the nearest: the next is then tried); a value the fixed ones already determine is
   // not rounded again. No rounding can leave a later value without an admissible integer.

@@ -70,7 +70,6 @@ public:
     for(;;) {
       if(row.empty()) {
         if(r != 0) { msg = "the seams' conditions have no integer solution"; return false; }
-        ++redundant_;
         return true;
       }
       int pivot = -1, smallest = -1;
@@ -133,7 +132,6 @@ public:
   }
   // the free variable w in terms of y: the row of T
   const Sparse& coordinate(int w) const { return coordinate_[std::size_t(w)]; }
-  std::size_t redundant_conditions() const { return redundant_; }
 
 private:
   static constexpr Int limit = Int(1) << 30;
@@ -216,7 +214,6 @@ private:
   std::vector<std::set<int>> uses_;   // per variable w: the y_k whose expression holds it
   std::vector<Sparse> coordinate_;    // per variable w: its expression in y (a row of U^-1)
   std::vector<char> alive_;           // w is still a variable (not expressed by the others)
-  std::size_t redundant_ = 0;
 };
 
 // The seams' conditions of `layout` as integer rows over the real small unknowns (2 k and 2 k + 1:
