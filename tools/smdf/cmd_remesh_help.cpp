@@ -141,7 +141,9 @@ Command remesh_command()
           "start near multiples of pi/2 (metric.cone_moves: {moves, initial_holonomy_error,\n"
           "holonomy_error}) and, if that remesh fails, tries the cones as placed), stage_timings (the last\n"
           "attempt's: placement_s, cone_metric_s, cross_field_s, integer_grid_map_s) and integer_grid_map:\n"
-          "{success, message, singularities, seams, boundary_corners, boundary_lines, rounded_values, folded_triangles,\n"
+          "{success, message, singularities, seams, boundary_corners, boundary_lines, rounded_values, t_mesh_arcs (arcs of the\n"
+          "seamless map's T-mesh, kept nonnegative by the rounding; t_mesh_failure: why none were traced), rounded_apart,\n"
+          "held_arcs, collapsed_arcs, negative_arcs, folded_triangles,\n"
           "winding_faults (vertices the map wraps around wrongly), stiffening_rounds, seamless_energy, seamless_folded_triangles (before rounding), integer_energy,\n"
           "min_area_ratio}. An attempt whose placement takes --max-cones cones or more fails at once\n"
           "(the map's time grows as their cube).\n",

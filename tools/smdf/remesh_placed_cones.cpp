@@ -436,6 +436,12 @@ Edge_length_property cross_field_and_map(const std::string& file, Mesh& on, cons
   ig["boundary_corners"] = gs.boundary_corners.size();
   ig["boundary_lines"] = gs.boundary_lines;
   ig["rounded_values"] = gs.rounded;
+  ig["t_mesh_arcs"] = gs.t_mesh_arcs;
+  if(!gs.t_mesh_failure.empty()) ig["t_mesh_failure"] = gs.t_mesh_failure;
+  ig["rounded_apart"] = gs.rounded_apart;
+  ig["held_arcs"] = gs.held_arcs;
+  ig["collapsed_arcs"] = gs.collapsed_arcs;
+  ig["negative_arcs"] = gs.negative_arcs;
   ig["folded_triangles"] = gs.folded_triangles;
   ig["winding_faults"] = gs.winding_faults;
   ig["stiffening_rounds"] = gs.stiffening_rounds;
@@ -555,6 +561,7 @@ Edge_length_property placed_cones_metric(const std::string& file, Mesh& mesh, Me
       if(const Json* ig = f.json.find("integer_grid_map")) {   // folds before and after rounding
         a["seamless_folded_triangles"] = *ig->find("seamless_folded_triangles");
         a["folded_triangles"] = *ig->find("folded_triangles");
+        a["negative_arcs"] = *ig->find("negative_arcs");
         a["min_area_ratio"] = *ig->find("min_area_ratio");
       }
       attempts.push_back(std::move(a));

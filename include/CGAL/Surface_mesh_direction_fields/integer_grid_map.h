@@ -17,6 +17,8 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/development.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/local_resolve.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/map_factor.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/motorcycle_graph.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/quantization.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/seam_layout.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/seam_lattice.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/winding.h>
@@ -55,6 +57,18 @@ struct Integer_grid_map_status
   /// vertices the map winds around otherwise than the field asks, no triangle folded (a branch
   /// point, the boundary folding back along its grid line); success requires none
   std::size_t winding_faults = 0;
+  /// the T-mesh of the seamless map (Campen, Bommes and Kobbelt 2015: the separatrices traced
+  /// from the singularities and corners until each meets a line traced before it): its arcs,
+  /// whose lengths the rounding keeps nonnegative, and at least 1 where they measure half a grid
+  /// unit or more in the seamless map
+  std::size_t t_mesh_arcs = 0;
+  std::string t_mesh_failure;      ///< why the T-mesh could not be traced (the rounding then keeps no arc), else empty
+  std::size_t rounded_apart = 0;   ///< values rounded to an admitted integer other than the nearest, to keep the arcs' lengths
+  /// arcs held at their least length where rounding would shorten them further: 0 (their ends
+  /// aligned) for an arc shorter than half a grid unit in the seamless map, else 1
+  std::size_t held_arcs = 0;
+  std::size_t collapsed_arcs = 0;  ///< arcs of length 0 in the integer map
+  std::size_t negative_arcs = 0;   ///< arcs of negative length in the integer map (a fold is then certain)
   int stiffening_rounds = 0;   ///< re-solves with the faces around folded ones weighted more
   /// boundary vertices where the boundary turns (by a multiple of \f$\pi/2\f$ under the metric):
   /// integer points of the map, in vertex order, with the quarter turns there
@@ -95,16 +109,22 @@ struct Integer_grid_map_status
 /// of rotation \f$i^k\f$: \f$(1 - i^k) Z = T\f$; at a node: \f$T = 0\f$). One sparse Cholesky
 /// factorisation of the whole system with the small unknowns ordered last (its trailing block is
 /// their Schur complement; the vertex block split in two domains factored on two threads) and a
-/// dense system for the small unknowns give the seamless map. Then the singularity
-/// coordinates, then the translations, are rounded one at a time, nearest to an integer first,
-/// each re-solving only the dense system (restricted to the conditions' solutions). The
-/// conditions have integer coefficients; unimodular changes of variables (a column Hermite
-/// reduction) keep their integer solutions exactly, so each value is rounded to the nearest
-/// integer that still leaves one (a cone of \f$-\pi\f$, whose closing has a coefficient 2,
-/// constrains parities), and values the others determine are not rounded again. No rounding can
-/// leave a later value without an admissible integer. The read-back counts folded triangles:
-/// rounding can fold the map where singularities are closer than about one grid unit; the status
-/// then fails.
+/// dense system for the small unknowns give the seamless map. Its T-mesh (Campen, Bommes and
+/// Kobbelt 2015) is traced: the separatrices of the singularities and corners, straight lines
+/// through the triangles and across the seams, each stopping where it meets a line traced before
+/// (the motorcycle graph); each arc between two nodes has a length linear in the small unknowns.
+/// Then the singularity coordinates, then the translations, are rounded one at a time, nearest to
+/// an integer first, each re-solving only the dense system (restricted to the conditions'
+/// solutions). The conditions have integer coefficients; unimodular changes of variables (a column
+/// Hermite reduction) keep their integer solutions exactly, so each value is rounded to an integer
+/// that still leaves one (a cone of \f$-\pi\f$, whose closing has a coefficient 2, constrains
+/// parities): the nearest that keeps every arc of the T-mesh nonnegative, and at least 1 where it
+/// measures half a grid unit or more in the seamless map (an arc that still falls short is held
+/// there); values the others determine are not rounded again. No rounding can leave a later value
+/// without an admissible integer. The T-mesh is not traced where the seamless map folds around a
+/// singularity or along the boundary (`t_mesh_failure` says where); the rounding then keeps no
+/// arc. The read-back counts folded triangles: rounding can fold the map where singularities are
+/// closer than about one grid unit; the status then fails.
 ///
 /// <b>Boundary.</b> On an open mesh the cut graph's seams end on the boundary, and the boundary
 /// splits into straight runs at its corners (vertices where it turns under the metric) and where
@@ -392,6 +412,7 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   // If triangles still fold, the whole system is factored again each round (measured in the
   // manual). The seamless map is not stiffened: each round there needed a new Schur complement
   // and the shared meshes remeshed no better with it.
+  const std::vector<double> expected_angle = internal::map_angle_sums_expected(m, seams);
   std::vector<char> free_vertex(nv, 0), free_col(std::size_t(nb), 0);
   std::vector<double> reach(nv, std::numeric_limits<double>::infinity());
   std::vector<int> hops(nv, 0);
@@ -405,7 +426,6 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
       if(big_dir[std::size_t(big[v])] == Cplx(0, 0)) free_col[std::size_t(col) + 1] = 1;
     }
   };
-  const std::vector<double> expected_angle = internal::map_angle_sums_expected(m, seams);
   auto unfold = [&]() -> bool {
     z = big_of(y);   // the unstiffened system, as factored
     for(int phase = 0; phase < 2; ++phase) {
@@ -461,53 +481,29 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   }
   y = B * t;
   const Eigen::VectorXd y_seamless = y;
-  // 8. rounding: singularity and corner positions, then translations and lines, the nearest to an
-  // integer first (Bommes et al.'s greedy rounding). A value y_k = B_k t is fixed by a
-  // rank-one update of G^-1 (O(nt^2)), to the nearest integer that the lattice admits (a parity
-  // may exclude the nearest: the next is then tried); a value the fixed ones already determine is
-  // not rounded again. No rounding can leave a later value without an admissible integer.
+  // 8. the T-mesh of the seamless map (motorcycle_graph.h), then the rounding (quantization.h):
+  // singularity and corner positions, then translations and lines, the nearest to an integer
+  // first, each to an admitted integer that keeps the T-mesh's arcs nonnegative
   const Eigen::SparseMatrix<double, Eigen::RowMajor> Brow = B;
-  const double g_scale = nt > 0 ? (std::max)(Ginv.diagonal().cwiseAbs().maxCoeff(), 1e-300) : 1.;
-  auto current = [&](int k) { return Brow.row(k).dot(t); };
-  for(int phase = 0; phase < 2; ++phase) {
-    std::vector<int> todo;
-    for(int k = 0; k < ns; ++k) if((k >= 2 * (narcs + nlines)) == (phase == 0)) todo.push_back(k);
-    while(!todo.empty()) {
-      std::size_t best = 0;
-      double best_gap = 2;
-      for(std::size_t i = 0; i < todo.size(); ++i) {
-        const int k = todo[i];
-        if(lattice.determined(k)) { best = i; best_gap = -1; break; }   // implied: taken off first
-        const double v = current(k), gap = std::abs(v - std::round(v));
-        if(gap < best_gap) { best = i; best_gap = gap; }
-      }
-      const int k = todo[best];
-      todo.erase(todo.begin() + std::ptrdiff_t(best));
-      if(best_gap < 0) { ++st.implied; continue; }
-      const double yk = current(k);
-      const double r0 = std::round(yk), dir = yk >= r0 ? 1 : -1;
-      double v = r0;
-      for(int step = 1; !lattice.admits(k, internal::Seam_lattice::Int(v)); ++step) {   // r0, r0 + dir, r0 - dir, r0 + 2 dir, ...
-        if(step > 64) { st.message = "no integer near " + std::to_string(yk) + " is admitted by the seams' conditions"; return st; }
-        v = r0 + dir * ((step + 1) / 2) * (step % 2 == 1 ? 1 : -1);
-      }
-      internal::Seam_lattice::Sparse fix;
-      fix[k] = 1;
-      if(!lattice.add(fix, st.message, internal::Seam_lattice::Int(v))) return st;
-      const Eigen::VectorXd ak = Brow.row(k).transpose();
-      const Eigen::VectorXd c = Ginv * ak;
-      const double d = ak.dot(c);
-      if(d > 1e-14 * g_scale) {   // else y_k barely moves t (round-off on a value nearly determined)
-        t.noalias() += c * ((v - yk) / d);
-        Ginv.noalias() -= (c / d) * c.transpose();
-      }
-      ++st.rounded;
-    }
-  }
+  internal::Separatrix_arcs arcs;
+  z = big_of(y);
+  if(!internal::trace_separatrix_arcs(m, topo, seams, layout, expected_angle, image, y, arcs, st.t_mesh_failure)) arcs = internal::Separatrix_arcs();
+  st.t_mesh_arcs = arcs.forms.size();
+  internal::Quantization_counts qc;
+  if(!internal::quantize(lattice, Brow, Ginv, t, 2 * (narcs + nlines), arcs.forms, qc, st.message)) return st;
+  st.rounded = qc.rounded;
+  st.implied = qc.implied;
+  st.rounded_apart = qc.moved;
+  st.held_arcs = qc.held_arcs;
   // every small unknown is now determined by the lattice: the exact integers, free of round-off
   for(int k = 0; k < ns; ++k) {
     if(!lattice.determined(k)) { st.message = "a seam value was left undetermined by the rounding"; return st; }
     y[k] = double(lattice.offset(k));
+  }
+  for(const internal::Linear_form& arc : arcs.forms) {
+    const double l = arc(y);
+    st.negative_arcs += l < -0.5;
+    st.collapsed_arcs += std::abs(l) < 0.5;
   }
   // 9. the vertex unknowns, the corners' images and the read-back
   auto folds = [&]() {
