@@ -1430,6 +1430,58 @@ std::string t_mesh_summary(const SMDF::Integer_grid_map_status& st)
          " collapsed, " + std::to_string(st.negative_arcs) + " negative, " + std::to_string(st.rounded_apart) + " values rounded apart)";
 }
 
+// The T-mesh of a known seamless map: the planar staircase polygon (0,0) (7,0) (7,2) (4,2) (4,5)
+// (2,5) (2,7) (0,7) with a constant field. Its two concave corners send two separatrices each;
+// the one from (2,5) downwards meets the one from (4,2) leftwards at (2,2) after that one passed
+// there (3 units against 2) and stops (the motorcycle rule); the three others end on the
+// boundary. 4 separatrices make 5 arcs, and the 8 boundary runs are cut into 11 by 3 ends: 16
+// arcs. On a grid mesh (each separatrix runs along edges and through vertices) and on the same
+// mesh with its interior vertices moved at random.
+void staircase_t_mesh()
+{
+  typedef Surface_mesh::Face_index F;
+  typedef Surface_mesh::Halfedge_index H;
+  const int n = 2;   // squares per unit
+  auto inside = [](double x, double y) { return y < 2 ? x < 7 : y < 5 ? x < 4 : y < 7 && x < 2; };
+  for(int jitter = 0; jitter < 2; ++jitter) {
+    smdf_test::Soup soup;
+    std::map<std::pair<int, int>, std::size_t> index;
+    auto vertex = [&](int i, int j) {
+      const auto it = index.find({i, j});
+      if(it != index.end()) return it->second;
+      soup.points.push_back({double(i) / n, double(j) / n, 0.});
+      return index[{i, j}] = soup.points.size() - 1;
+    };
+    for(int i = 0; i < 7 * n; ++i)
+      for(int j = 0; j < 7 * n; ++j) {
+        if(!inside((i + 0.5) / n, (j + 0.5) / n)) continue;
+        const std::size_t a = vertex(i, j), b = vertex(i + 1, j), c = vertex(i + 1, j + 1), d = vertex(i, j + 1);
+        if((i + j) % 2 == 0) { soup.faces.push_back({a, b, c}); soup.faces.push_back({a, c, d}); }
+        else { soup.faces.push_back({a, b, d}); soup.faces.push_back({b, c, d}); }
+      }
+    Surface_mesh mesh;
+    smdf_test::soup_to_mesh(soup, mesh);
+    if(jitter) {
+      std::mt19937 rng(11u);
+      std::uniform_real_distribution<double> u(-0.3 / n, 0.3 / n);
+      for(auto v : vertices(mesh))
+        if(!is_border(v, mesh)) mesh.point(v) = K::Point_3(mesh.point(v).x() + u(rng), mesh.point(v).y() + u(rng), 0);
+    }
+    auto fa = mesh.add_property_map<F, double>("f:angle", 0.).first;
+    for(auto f : faces(mesh)) {   // the field along x, from halfedge(f)
+      const H h = halfedge(f, mesh);
+      const K::Point_3 &p = mesh.point(source(h, mesh)), &q = mesh.point(target(h, mesh));
+      fa[f] = -std::atan2(q.y() - p.y(), q.x() - p.x());
+    }
+    auto uv = mesh.add_property_map<H, std::array<double, 2>>("h:uv").first;
+    const SMDF::Integer_grid_map_status st = SMDF::integer_grid_map(mesh, fa, 0.37, uv);
+    const std::string what = std::string("staircase, ") + (jitter ? "interior vertices moved" : "grid mesh");
+    std::cout << what << ": " << t_mesh_summary(st) << ", " << (st.success ? "unfolded" : st.message) << std::endl;
+    SMDF_CHECK_MSG(st.t_mesh_failure.empty() && st.t_mesh_arcs == 16, what << ": " << st.t_mesh_arcs << " T-mesh arcs, 16 expected " << st.t_mesh_failure);
+    SMDF_CHECK_MSG(st.success && st.boundary_corners.size() == 8 && st.negative_arcs == 0, what << ": " << st.message);
+  }
+}
+
 void integer_grid_maps(const std::string& dir)
 {
   typedef Surface_mesh::Vertex_index V;
@@ -2674,6 +2726,7 @@ int main(int argc, char** argv)
     return smdf_test::finish();
   }
   if(part == "maps") {   // the integer-grid maps alone
+    staircase_t_mesh();
     const std::string dir = smdf_test::shared_data_dir();
     if(!dir.empty()) { integer_grid_maps(dir); integer_grid_maps_open(dir); }
     return smdf_test::finish();
@@ -2697,7 +2750,7 @@ int main(int argc, char** argv)
     if(!dir.empty()) { box_polycube(dir); ricci_flow_segments(dir); seam_relaxation(dir); flipped_flat_metric(dir); octahedron_polyhedron(dir); obelisk(dir); }
   }
   if(runs("untangling") && !dir.empty()) { delaunay_refinement(dir); untangling(dir); }
-  if(runs("automatic")) { seam_lattice_core(); cube_through_intrinsic_triangulation(); }
+  if(runs("automatic")) { seam_lattice_core(); staircase_t_mesh(); cube_through_intrinsic_triangulation(); }
   if(runs("automatic") && !dir.empty()) { remeshing_cones(dir); cone_separation(dir); integer_grid_maps(dir); integer_grid_maps_open(dir); seamless_metrics(dir); seamless_intrinsic_metrics(dir); }
   if(dir.empty()) std::cout << "../shared/data not found: the shared meshes' parts skipped" << std::endl;
   return smdf_test::finish();

@@ -106,7 +106,10 @@ bool trace_separatrix_arcs(const Mesh_arrays<TM>& m, const Topology_arrays& topo
   struct Forms { Linear_form iso, offset; double offset_value = 0; };   // along in the trace's first chart = Re(P / d) - offset
   struct Segment { int trace, forms, next; Cplx a, b, dir; };
   struct Node { double along; Linear_form form; };
-  struct Trace { int face = -1, forms = -1; Cplx p, d; double length = 0; std::vector<Node> nodes; };
+  // p: where the trace enters its face; at a vertex (its start) the line runs `shift` to the left
+  // of p (a symbolic perturbation: no line runs along an edge or through a vertex, where two
+  // lines would meet unseen, a grid-aligned mesh's common case)
+  struct Trace { int face = -1, forms = -1; Cplx p, d; double shift = 0, length = 0; std::vector<Node> nodes; };
   std::vector<Forms> pool;
   std::vector<Segment> segments;
   std::vector<int> head(nf, -1), border_segment(m.number_of_edges(), -1);
@@ -155,7 +158,9 @@ bool trace_separatrix_arcs(const Mesh_arrays<TM>& m, const Topology_arrays& topo
     const bool border_first = m.face[std::size_t(x ^ 1)] < 0;
     for(const Cplx& d : units) {
       const double ca = cross(a, d), cb = cross(d, b);
-      if(cb > 1e-12 * std::abs(b) && (border_first ? ca > 1e-9 * std::abs(a) : ca >= 0) && (std::real(d * std::conj(a)) > 0 || ca > 0))
+      // along side a within round-off: this corner's (the line runs on its left, inside); along b: the next one's
+      if(cb > 1e-12 * std::abs(b) && (border_first ? ca > 1e-9 * std::abs(a) : ca >= -1e-12 * std::abs(a)) &&
+         (std::real(d * std::conj(a)) > 0 || ca > 0))
         dirs.push_back(d);
     }
   };
@@ -214,6 +219,9 @@ bool trace_separatrix_arcs(const Mesh_arrays<TM>& m, const Topology_arrays& topo
       dprev = d;
     }
   }
+  double extent = 0;   // the map's size, for the perturbation
+  for(std::size_t f = 0; f < nf; ++f) extent = (std::max)(extent, std::abs(image(m.face_halfedge[f])));
+  const double shift = 1e-9 * (1 + extent);
   // 2. the separatrices of the singularities and of the corners, all started at length 0
   typedef std::pair<double, int> Event;
   std::priority_queue<Event, std::vector<Event>, std::greater<Event>> queue;
@@ -230,6 +238,7 @@ bool trace_separatrix_arcs(const Mesh_arrays<TM>& m, const Topology_arrays& topo
         Trace t;
         t.face = m.face[std::size_t(x)];
         t.p = image(x);
+        t.shift = shift;
         t.d = d;
         Forms fo;
         Linear_form along;
@@ -285,16 +294,18 @@ bool trace_separatrix_arcs(const Mesh_arrays<TM>& m, const Topology_arrays& topo
     const double scale = std::abs(P[1] - P[0]) + std::abs(P[2] - P[0]);
     double sg[3];
     for(int c = 0; c < 3; ++c) {   // which side of the line each corner is on; on it within round-off
-      sg[c] = cross(t.d, P[c] - t.p);
+      sg[c] = cross(t.d, P[c] - t.p) - t.shift;
       if(std::abs(sg[c]) < 1e-12 * scale) sg[c] = 0;
     }
+    const Cplx pl = t.p + Cplx(0, t.shift) * t.d;   // on the line
+    t.shift = 0;
     int a = -1;
     for(int c = 0; c < 3; ++c) if(sg[c] <= 0 && sg[(c + 1) % 3] > 0) a = c;
     if(a < 0) { message = "a separatrix left its triangle (the seamless map folds)"; return false; }
     const int b = (a + 1) % 3;
     const double lambda = sg[a] / (sg[a] - sg[b]);
     Cplx x = P[a] + lambda * (P[b] - P[a]);
-    const double s_exit = ((x - t.p) / t.d).real();
+    const double s_exit = ((x - pl) / t.d).real();
     // the first line of another direction crossed before the exit
     double s_hit = s_exit + 1e-12 * scale;
     int hit = -1;
@@ -302,16 +313,16 @@ bool trace_separatrix_arcs(const Mesh_arrays<TM>& m, const Topology_arrays& topo
       const Segment& S = segments[std::size_t(si)];
       const double mu = (t.d / S.dir).imag();
       if(std::abs(mu) < 0.5) continue;   // parallel
-      const double s = ((S.a / S.dir).imag() - (t.p / S.dir).imag()) / mu;
+      const double s = ((S.a / S.dir).imag() - (pl / S.dir).imag()) / mu;
       if(!(s > 1e-9 * scale) || !(s < s_hit)) continue;
-      const double along = ((t.p + s * t.d) / S.dir).real();
+      const double along = ((pl + s * t.d) / S.dir).real();
       if(along < (S.a / S.dir).real() - 1e-12 * scale || along > (S.b / S.dir).real() + 1e-12 * scale) continue;
       s_hit = s;
       hit = si;
     }
-    const Cplx p0 = t.p;
+    const Cplx p0 = pl;
     if(hit >= 0) {
-      x = t.p + s_hit * t.d;
+      x = pl + s_hit * t.d;
       const Segment& S = segments[std::size_t(hit)];
       segments.push_back(Segment{ti, t.forms, head[std::size_t(f)], p0, x, t.d});
       head[std::size_t(f)] = int(segments.size()) - 1;
@@ -349,6 +360,7 @@ bool trace_separatrix_arcs(const Mesh_arrays<TM>& m, const Topology_arrays& topo
       if(!found) { message = "no triangle around vertex " + std::to_string(w) + " continues a separatrix"; return false; }
       t.face = m.face[std::size_t(xc)];
       t.p = image(xc);
+      t.shift = shift;
       queue.emplace(t.length, ti);
       continue;
     }
