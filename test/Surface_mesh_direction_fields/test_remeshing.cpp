@@ -1427,7 +1427,8 @@ std::string t_mesh_summary(const SMDF::Integer_grid_map_status& st)
 {
   if(!st.t_mesh_failure.empty()) return "no T-mesh (" + st.t_mesh_failure + ")";
   return std::to_string(st.t_mesh_arcs) + " T-mesh arcs (" + std::to_string(st.held_arcs) + " held, " + std::to_string(st.collapsed_arcs) +
-         " collapsed, " + std::to_string(st.negative_arcs) + " negative, " + std::to_string(st.rounded_apart) + " values rounded apart)";
+         " collapsed, " + std::to_string(st.negative_arcs) + " negative, " + std::to_string(st.rounded_apart) + " values rounded apart" +
+         (st.arcs_kept ? "; kept" : "") + ")";
 }
 
 // The T-mesh of a known seamless map: the planar staircase polygon (0,0) (7,0) (7,2) (4,2) (4,5)

@@ -143,7 +143,8 @@ Command remesh_command()
           "attempt's: placement_s, cone_metric_s, cross_field_s, integer_grid_map_s) and integer_grid_map:\n"
           "{success, message, singularities, seams, boundary_corners, boundary_lines, rounded_values, t_mesh_arcs (arcs of the\n"
           "seamless map's T-mesh, kept nonnegative by the rounding; t_mesh_failure: why none were traced), rounded_apart,\n"
-          "held_arcs, collapsed_arcs, negative_arcs, folded_triangles,\n"
+          "held_arcs, collapsed_arcs, negative_arcs, arcs_kept (the map is the second rounding's, which kept the arcs:\n"
+          "the first, greedy, folded), folded_triangles,\n"
           "winding_faults (vertices the map wraps around wrongly), stiffening_rounds, seamless_energy, seamless_folded_triangles (before rounding), integer_energy,\n"
           "min_area_ratio}. An attempt whose placement takes --max-cones cones or more fails at once\n"
           "(the map's time grows as their cube).\n",

@@ -442,6 +442,7 @@ Edge_length_property cross_field_and_map(const std::string& file, Mesh& on, cons
   ig["held_arcs"] = gs.held_arcs;
   ig["collapsed_arcs"] = gs.collapsed_arcs;
   ig["negative_arcs"] = gs.negative_arcs;
+  ig["arcs_kept"] = gs.arcs_kept;
   ig["folded_triangles"] = gs.folded_triangles;
   ig["winding_faults"] = gs.winding_faults;
   ig["stiffening_rounds"] = gs.stiffening_rounds;
