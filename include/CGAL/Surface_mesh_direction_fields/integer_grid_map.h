@@ -557,19 +557,15 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
       if(!A.isCompressed()) A.makeCompressed();
       if(!stiffened.empty() && !chol.factor(A, nb, msg)) { st.message = "the map's system could not be factored: " + msg; return st; }
     }
-    lattice = lattice0;
-    Ginv = Ginv0;
-    t = t0;
+    lattice = lattice0; Ginv = Ginv0; t = t0;
     const bool done = round_and_unfold(arcs.forms);
     std::size_t faults2 = done ? folds() : faults + 1;
     if(done && faults2 == 0) faults2 = internal::winding_faults(m, expected_angle, image).size();
     st.arcs_kept = faults2 < faults;
     if(!st.arcs_kept) {   // the first map stays
       const int rounds = st.stiffening_rounds;
-      st = first;
-      st.stiffening_rounds = rounds;
-      y = y1;
-      z = z1;
+      (st = first).stiffening_rounds = rounds;
+      y = y1; z = z1;
     }
     st.message.clear();
   }

@@ -151,8 +151,9 @@ bool trace_separatrix_arcs(const Mesh_arrays<TM>& m, const Topology_arrays& topo
     return int(pool.size()) - 1;
   };
   // the axis directions leaving vertex v into the corner x's face, strictly inside its sector
-  // (on its first side too where that side is a border edge)
-  auto directions_in_corner = [&](int x, std::vector<Cplx>& dirs) {
+  // (on its first side too where that side is a border edge), each with the room on its left
+  // before side b (cross(d, b)): the line is shifted left by less
+  auto directions_in_corner = [&](int x, std::vector<std::pair<Cplx, double>>& dirs) {
     dirs.clear();
     const Cplx p = image(x), a = image(m.next[std::size_t(x)]) - p, b = image(m.prev(x)) - p;
     const bool border_first = m.face[std::size_t(x ^ 1)] < 0;
@@ -161,7 +162,7 @@ bool trace_separatrix_arcs(const Mesh_arrays<TM>& m, const Topology_arrays& topo
       // along side a within round-off: this corner's (the line runs on its left, inside); along b: the next one's
       if(cb > 1e-12 * std::abs(b) && (border_first ? ca > 1e-9 * std::abs(a) : ca >= -1e-12 * std::abs(a)) &&
          (std::real(d * std::conj(a)) > 0 || ca > 0))
-        dirs.push_back(d);
+        dirs.emplace_back(d, cb);
     }
   };
   auto start_node = [&](const Corner_expression& e, Cplx p, Cplx d) {
@@ -225,7 +226,7 @@ bool trace_separatrix_arcs(const Mesh_arrays<TM>& m, const Topology_arrays& topo
   // 2. the separatrices of the singularities and of the corners, all started at length 0
   typedef std::pair<double, int> Event;
   std::priority_queue<Event, std::vector<Event>, std::greater<Event>> queue;
-  std::vector<Cplx> dirs;
+  std::vector<std::pair<Cplx, double>> dirs;
   for(std::size_t v = 0; v < nv; ++v) {
     const bool border = m.is_boundary_vertex(int(v));
     if(!(border ? seams.boundary_corner[v] : seams.singular[v])) continue;
@@ -234,11 +235,12 @@ bool trace_separatrix_arcs(const Mesh_arrays<TM>& m, const Topology_arrays& topo
     const int x0 = m.vertex_out[v];
     for(int x = x0;;) {
       directions_in_corner(x, dirs);
-      for(const Cplx& d : dirs) {
+      for(const auto& dc : dirs) {
+        const Cplx d = dc.first;
         Trace t;
         t.face = m.face[std::size_t(x)];
         t.p = image(x);
-        t.shift = shift;
+        t.shift = (std::min)(shift, dc.second / 2);
         t.d = d;
         Forms fo;
         Linear_form along;
@@ -295,7 +297,7 @@ bool trace_separatrix_arcs(const Mesh_arrays<TM>& m, const Topology_arrays& topo
     double sg[3];
     for(int c = 0; c < 3; ++c) {   // which side of the line each corner is on; on it within round-off
       sg[c] = cross(t.d, P[c] - t.p) - t.shift;
-      if(std::abs(sg[c]) < 1e-12 * scale) sg[c] = 0;
+      if(std::abs(sg[c]) < 1e-14 * scale) sg[c] = 0;
     }
     const Cplx pl = t.p + Cplx(0, t.shift) * t.d;   // on the line
     t.shift = 0;
@@ -354,13 +356,13 @@ bool trace_separatrix_arcs(const Mesh_arrays<TM>& m, const Topology_arrays& topo
         t.forms = moved(t.forms, t.d, tau);
         xc = yv ^ 1;
         directions_in_corner(xc, dirs);
-        for(const Cplx& d : dirs) if(std::abs(d - t.d) < 1e-9) found = true;
+        for(const auto& dc : dirs)
+          if(std::abs(dc.first - t.d) < 1e-9) { found = true; t.shift = (std::min)(shift, dc.second / 2); }
         if(xc == xw && !found) break;
       }
       if(!found) { message = "no triangle around vertex " + std::to_string(w) + " continues a separatrix"; return false; }
       t.face = m.face[std::size_t(xc)];
       t.p = image(xc);
-      t.shift = shift;
       queue.emplace(t.length, ti);
       continue;
     }
