@@ -325,7 +325,7 @@ bool trace_separatrix_arcs(const Mesh_arrays<TM>& m, const Topology_arrays& topo
     const Cplx p0 = pl;
     if(hit >= 0) {
       x = pl + s_hit * t.d;
-      const Segment& S = segments[std::size_t(hit)];
+      const Segment S = segments[std::size_t(hit)];   // a copy: the push below may move the segments
       segments.push_back(Segment{ti, t.forms, head[std::size_t(f)], p0, x, t.d});
       head[std::size_t(f)] = int(segments.size()) - 1;
       junction(S.trace, S.forms, S.dir, t, x);
