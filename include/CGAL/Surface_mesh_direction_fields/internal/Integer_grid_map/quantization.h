@@ -81,7 +81,7 @@ inline bool quantize(Seam_lattice& lattice, const Eigen::SparseMatrix<double, Ei
   };
   // the arcs fallen short of their least length held there (or at the next length with an
   // integer solution), the shortest first
-  auto hold_negative_arcs = [&]() -> bool {
+  auto hold_short_arcs = [&]() -> bool {
     for(;;) {
       Eigen::Index worst = -1;
       for(Eigen::Index j = 0; j < q.size(); ++j)
@@ -156,7 +156,7 @@ inline bool quantize(Seam_lattice& lattice, const Eigen::SparseMatrix<double, Ei
         Ginv.noalias() -= (c / d) * c.transpose();
       }
       ++counts.rounded;
-      if(!arcs.empty() && !hold_negative_arcs()) return false;
+      if(!arcs.empty() && !hold_short_arcs()) return false;
     }
   }
   return true;
