@@ -483,7 +483,6 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
     t = Ginv * (B.transpose() * rs);
   }
   y = B * t;
-  const Eigen::VectorXd y_seamless = y;
   // 8. the seamless map read back, and its T-mesh (motorcycle_graph.h)
   auto folds = [&]() {
     std::size_t n = 0;

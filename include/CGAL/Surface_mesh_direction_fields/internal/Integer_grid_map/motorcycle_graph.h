@@ -78,11 +78,10 @@ inline void small_part_forms(const std::vector<std::pair<int, Cplx>>& small, Cpl
   }
 }
 
-// The arcs of the T-mesh: per arc, its length as a form in y and its value on the seamless map.
+// The arcs of the T-mesh: per arc, its length as a form in y.
 struct Separatrix_arcs
 {
   std::vector<Linear_form> forms;
-  std::vector<double> lengths;
   std::size_t traces = 0;      // separatrices traced (boundary runs between corners included)
   std::size_t junctions = 0;   // nodes where a separatrix ends on another line or on the boundary
   std::size_t crossings = 0;   // triangles crossed, summed over the separatrices
@@ -400,7 +399,6 @@ bool trace_separatrix_arcs(const Mesh_arrays<TM>& m, const Topology_arrays& topo
       }
       if(l.terms.empty()) continue;
       out.forms.push_back(std::move(l));
-      out.lengths.push_back(value);
     }
   }
   return true;

@@ -69,15 +69,18 @@ inline bool quantize(Seam_lattice& lattice, const Eigen::SparseMatrix<double, Ei
   // folded triangles, cheburashka 71 / 65 / 172 / 36, homer 46 / 57 / 456 / 48.
   Eigen::VectorXd min_arc(q.size());
   for(Eigen::Index j = 0; j < q.size(); ++j) min_arc[j] = q[j] >= 0.5 ? 1. : 0.;
-  // a @ t = target: t moves within the conditions so far, by a rank-one update of G^-1
+  // a @ t moved by d * step within the conditions so far (c = G^-1 a, d = a @ c, qc = Q c if
+  // known), a rank-one update of G^-1
+  auto update = [&](const Eigen::VectorXd& c, double d, double step, const Eigen::VectorXd& qc) {
+    t.noalias() += c * step;
+    if(qc.size() > 0) q.noalias() += qc * step; else q.noalias() += Q * (c * step);
+    Ginv.noalias() -= (c / d) * c.transpose();
+  };
+  // a @ t = target (a not yet fixed: else round-off on a value nearly determined)
   auto impose = [&](const Eigen::VectorXd& a, double target) {
     const Eigen::VectorXd c = Ginv * a;
     const double d = a.dot(c);
-    if(!(d > 1e-14 * g_scale)) return;   // a @ t is already fixed (round-off on a value nearly determined)
-    const double step = (target - a.dot(t)) / d;
-    t.noalias() += c * step;
-    q.noalias() += Q * (c * step);
-    Ginv.noalias() -= (c / d) * c.transpose();
+    if(d > 1e-14 * g_scale) update(c, d, (target - a.dot(t)) / d, Eigen::VectorXd());
   };
   // the arcs fallen short of their least length held there (or at the next length with an
   // integer solution), the shortest first
@@ -149,12 +152,7 @@ inline bool quantize(Seam_lattice& lattice, const Eigen::SparseMatrix<double, Ei
       Seam_lattice::Sparse fix;
       fix[k] = 1;
       if(!lattice.add(fix, message, Seam_lattice::Int(chosen))) return false;
-      if(d > 1e-14 * g_scale) {
-        const double s = (chosen - yk) / d;
-        t.noalias() += c * s;
-        if(!arcs.empty()) q.noalias() += qc * s;
-        Ginv.noalias() -= (c / d) * c.transpose();
-      }
+      if(d > 1e-14 * g_scale) update(c, d, (chosen - yk) / d, qc);
       ++counts.rounded;
       if(!arcs.empty() && !hold_short_arcs()) return false;
     }
