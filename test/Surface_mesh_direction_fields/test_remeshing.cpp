@@ -1420,14 +1420,19 @@ void check_t_mesh(const SMDF::Integer_grid_map_status& st, std::size_t nodes, co
   if(!st.t_mesh_failure.empty()) return;
   ++traced;
   SMDF_CHECK_MSG(st.t_mesh_arcs >= nodes, what << ": " << st.t_mesh_arcs << " T-mesh arcs for " << nodes << " singularities and corners");
-  SMDF_CHECK_MSG(st.held_arcs <= st.t_mesh_arcs && st.collapsed_arcs + st.negative_arcs <= st.t_mesh_arcs, what << ": arcs miscounted");
+  SMDF_CHECK_MSG(st.held_arcs <= st.t_mesh_arcs + st.t_mesh_spans && st.collapsed_arcs + st.negative_arcs <= st.t_mesh_arcs &&
+                     st.short_spans <= st.t_mesh_spans,
+                 what << ": arcs miscounted");
+  // a boundary run between consecutive corners, at least, per corner
+  SMDF_CHECK_MSG(st.t_mesh_spans >= st.boundary_corners.size(), what << ": " << st.t_mesh_spans << " spans for " << st.boundary_corners.size() << " corners");
 }
 
 std::string t_mesh_summary(const SMDF::Integer_grid_map_status& st)
 {
   if(!st.t_mesh_failure.empty()) return "no T-mesh (" + st.t_mesh_failure + ")";
   return std::to_string(st.t_mesh_arcs) + " T-mesh arcs (" + std::to_string(st.held_arcs) + " held, " + std::to_string(st.collapsed_arcs) +
-         " collapsed, " + std::to_string(st.negative_arcs) + " negative, " + std::to_string(st.rounded_apart) + " values rounded apart" +
+         " collapsed, " + std::to_string(st.negative_arcs) + " negative, " + std::to_string(st.rounded_apart) + " values rounded apart, " +
+         std::to_string(st.short_spans) + " of " + std::to_string(st.t_mesh_spans) + " spans short" +
          (st.arcs_kept ? "; kept" : "") + ")";
 }
 
@@ -1436,7 +1441,7 @@ std::string t_mesh_summary(const SMDF::Integer_grid_map_status& st)
 // the one from (2,5) downwards meets the one from (4,2) leftwards at (2,2) after that one passed
 // there (3 units against 2) and stops (the motorcycle rule); the three others end on the
 // boundary. 4 separatrices make 5 arcs, and the 8 boundary runs are cut into 11 by 3 ends: 16
-// arcs. On a grid mesh (each separatrix runs along edges and through vertices) and on the same
+// arcs; 11 spans (the 8 runs and the 3 separatrices that end on the boundary). On a grid mesh (each separatrix runs along edges and through vertices) and on the same
 // mesh with its interior vertices moved at random.
 void staircase_t_mesh()
 {
@@ -1479,6 +1484,8 @@ void staircase_t_mesh()
     const std::string what = std::string("staircase, ") + (jitter ? "interior vertices moved" : "grid mesh");
     std::cout << what << ": " << t_mesh_summary(st) << ", " << (st.success ? "unfolded" : st.message) << std::endl;
     SMDF_CHECK_MSG(st.t_mesh_failure.empty() && st.t_mesh_arcs == 16, what << ": " << st.t_mesh_arcs << " T-mesh arcs, 16 expected " << st.t_mesh_failure);
+    // spans: the 8 boundary runs, and the 3 separatrices that end on the boundary
+    SMDF_CHECK_MSG(st.t_mesh_spans == 11 && st.short_spans == 0, what << ": " << st.t_mesh_spans << " spans, 11 expected, " << st.short_spans << " short");
     SMDF_CHECK_MSG(st.success && st.boundary_corners.size() == 8 && st.negative_arcs == 0, what << ": " << st.message);
   }
 }

@@ -442,6 +442,8 @@ Edge_length_property cross_field_and_map(const std::string& file, Mesh& on, cons
   ig["held_arcs"] = gs.held_arcs;
   ig["collapsed_arcs"] = gs.collapsed_arcs;
   ig["negative_arcs"] = gs.negative_arcs;
+  ig["t_mesh_spans"] = gs.t_mesh_spans;
+  ig["short_spans"] = gs.short_spans;
   ig["arcs_kept"] = gs.arcs_kept;
   ig["folded_triangles"] = gs.folded_triangles;
   ig["winding_faults"] = gs.winding_faults;

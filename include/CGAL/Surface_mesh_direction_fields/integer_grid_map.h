@@ -69,6 +69,11 @@ struct Integer_grid_map_status
   std::size_t held_arcs = 0;
   std::size_t collapsed_arcs = 0;  ///< arcs of length 0 in the integer map
   std::size_t negative_arcs = 0;   ///< arcs of negative length in the integer map (a fold is then certain)
+  /// the T-mesh's spans (boundary runs between corners; separatrices from a singularity or concave
+  /// corner that end on the boundary or at a singularity), which both roundings keep at least 1
+  /// long: those of them shorter in the integer map (a fold is then certain)
+  std::size_t t_mesh_spans = 0;
+  std::size_t short_spans = 0;   ///< see `t_mesh_spans`
   bool arcs_kept = false;          ///< the map kept is the second rounding's, which kept the arcs' lengths
   int stiffening_rounds = 0;   ///< re-solves with the faces around folded ones weighted more
   /// boundary vertices where the boundary turns (by a multiple of \f$\pi/2\f$ under the metric):
@@ -120,7 +125,11 @@ struct Integer_grid_map_status
 /// Hermite reduction) keep their integer solutions exactly, so each value is rounded to the
 /// nearest integer that still leaves one (a cone of \f$-\pi\f$, whose closing has a
 /// coefficient 2, constrains parities); values the others determine are not rounded again. No
-/// rounding can leave a later value without an admissible integer. If that map folds, the
+/// rounding can leave a later value without an admissible integer. Both roundings keep the
+/// T-mesh's spans at least 1 long, as any valid map has them: the boundary runs between corners,
+/// and the separatrices that run from a singularity or concave corner to the boundary or to
+/// another singularity (else a cone falls on the boundary, or two corners or cones on one point).
+/// If that map folds, the
 /// rounding is done again, each value to the nearest admitted integer that keeps every arc of the
 /// T-mesh nonnegative, and at least 1 where it measures half a grid unit or more in the seamless
 /// map (an arc that still falls short is held there); the map with fewer folded triangles is
@@ -510,6 +519,7 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   internal::Separatrix_arcs arcs;
   if(!internal::trace_separatrix_arcs(m, topo, seams, layout, expected_angle, image, y, arcs, st.t_mesh_failure)) arcs = internal::Separatrix_arcs();
   st.t_mesh_arcs = arcs.forms.size();
+  st.t_mesh_spans = arcs.spans.size();
   // 9. the rounding (quantization.h), the vertex unknowns and local stiffening: first Bommes et
   // al.'s greedy rounding alone; if the map folds, again keeping the T-mesh's arcs (the better
   // map kept). Measured on test_remeshing's maps, the arcs' conditions alone: the casting unfolds
@@ -521,7 +531,7 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   const Eigen::VectorXd t0 = t;
   auto round_and_unfold = [&](const std::vector<internal::Linear_form>& kept) -> bool {
     internal::Quantization_counts qc;
-    if(!internal::quantize(lattice, Brow, Ginv, t, 2 * (narcs + nlines), kept, qc, st.message)) return false;
+    if(!internal::quantize(lattice, Brow, Ginv, t, 2 * (narcs + nlines), kept, arcs.spans, qc, st.message)) return false;
     st.rounded = qc.rounded;
     st.implied = qc.implied;
     st.rounded_apart = qc.moved;
@@ -537,6 +547,8 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
       st.negative_arcs += l < -0.5;
       st.collapsed_arcs += std::abs(l) < 0.5;
     }
+    st.short_spans = 0;
+    for(const internal::Linear_form& span : arcs.spans) st.short_spans += span(y) < 0.5;
     if(!unfold()) { if(st.message.empty()) st.message = "the stiffened system could not be solved"; return false; }
     return true;
   };

@@ -82,6 +82,10 @@ inline void small_part_forms(const std::vector<std::pair<int, Cplx>>& small, Cpl
 struct Separatrix_arcs
 {
   std::vector<Linear_form> forms;
+  // the whole length of every boundary run between corners, and of every separatrix that ends on
+  // the boundary or at a singularity: at least 1 in any valid map (two corners, a cone and the
+  // boundary, or two cones would fall on one point)
+  std::vector<Linear_form> spans;
   std::size_t traces = 0;      // separatrices traced (boundary runs between corners included)
   std::size_t junctions = 0;   // nodes where a separatrix ends on another line or on the boundary
   std::size_t crossings = 0;   // triangles crossed, summed over the separatrices
@@ -108,7 +112,7 @@ bool trace_separatrix_arcs(const Mesh_arrays<TM>& m, const Topology_arrays& topo
   // p: where the trace enters its face; at a vertex (its start) the line runs `shift` to the left
   // of p (a symbolic perturbation: no line runs along an edge or through a vertex, where two
   // lines would meet unseen, a grid-aligned mesh's common case)
-  struct Trace { int face = -1, forms = -1; Cplx p, d; double shift = 0, length = 0; std::vector<Node> nodes; };
+  struct Trace { int face = -1, forms = -1; Cplx p, d; double shift = 0, length = 0; std::vector<Node> nodes; bool spans = false; };
   std::vector<Forms> pool;
   std::vector<Segment> segments;
   std::vector<int> head(nf, -1), border_segment(m.number_of_edges(), -1);
@@ -214,6 +218,7 @@ bool trace_separatrix_arcs(const Mesh_arrays<TM>& m, const Topology_arrays& topo
         e.form.add(fx.offset, -1);
         e.along -= fx.offset_value;
         traces[std::size_t(tr)].nodes.push_back(std::move(e));
+        traces[std::size_t(tr)].spans = true;
       }
       xprev = x;
       dprev = d;
@@ -341,6 +346,7 @@ bool trace_separatrix_arcs(const Mesh_arrays<TM>& m, const Topology_arrays& topo
         e.form.add(pool[std::size_t(t.forms)].offset, -1);
         e.along -= pool[std::size_t(t.forms)].offset_value;
         t.nodes.push_back(std::move(e));
+        t.spans = true;
         ++out.junctions;
         continue;
       }
@@ -367,6 +373,7 @@ bool trace_separatrix_arcs(const Mesh_arrays<TM>& m, const Topology_arrays& topo
     }
     const int h = hs[a];   // the exit edge, from corner a to corner b
     if(m.face[std::size_t(h ^ 1)] < 0) {   // the boundary
+      t.spans = true;
       const int bs = border_segment[std::size_t(h >> 1)];
       if(bs >= 0) junction(segments[std::size_t(bs)].trace, segments[std::size_t(bs)].forms, segments[std::size_t(bs)].dir, t, x);
       else {   // a loop with no corner: its line's form from the edge's corner
@@ -386,20 +393,24 @@ bool trace_separatrix_arcs(const Mesh_arrays<TM>& m, const Topology_arrays& topo
     t.face = m.face[std::size_t(h ^ 1)];
     queue.emplace(t.length, ti);
   }
-  // 4. the arcs: consecutive nodes along each trace, checked against the seamless map
+  // 4. the arcs: consecutive nodes along each trace, checked against the seamless map; the spans:
+  // first to last node of the traces that end on the boundary or at a singularity
+  auto length_form = [&](const Node& from, const Node& to, std::vector<Linear_form>& into) {
+    Linear_form l = to.form;
+    l.add(from.form, -1);
+    const double value = to.along - from.along;
+    if(!(std::abs(l(y) - value) <= 1e-6 * (1 + std::abs(value)))) {
+      message = "an arc of the T-mesh measures " + std::to_string(value) + " in the seamless map but its form gives " + std::to_string(l(y));
+      return false;
+    }
+    if(!l.terms.empty()) into.push_back(std::move(l));
+    return true;
+  };
   for(Trace& t : traces) {
     std::sort(t.nodes.begin(), t.nodes.end(), [](const Node& p, const Node& q) { return p.along < q.along; });
-    for(std::size_t i = 0; i + 1 < t.nodes.size(); ++i) {
-      Linear_form l = t.nodes[i + 1].form;
-      l.add(t.nodes[i].form, -1);
-      const double value = t.nodes[i + 1].along - t.nodes[i].along;
-      if(!(std::abs(l(y) - value) <= 1e-6 * (1 + std::abs(value)))) {
-        message = "an arc of the T-mesh measures " + std::to_string(value) + " in the seamless map but its form gives " + std::to_string(l(y));
-        return false;
-      }
-      if(l.terms.empty()) continue;
-      out.forms.push_back(std::move(l));
-    }
+    for(std::size_t i = 0; i + 1 < t.nodes.size(); ++i)
+      if(!length_form(t.nodes[i], t.nodes[i + 1], out.forms)) return false;
+    if(t.spans && t.nodes.size() >= 2 && !length_form(t.nodes.front(), t.nodes.back(), out.spans)) return false;
   }
   return true;
 }

@@ -12,7 +12,9 @@
 // valid map can follow), and those at least half a unit long in the seamless map at least 1:
 // among the admitted integers nearest to a value, the first that keeps every arc at its least
 // length once t is re-solved is taken; an arc that still falls short is held at its least length
-// (0: its ends aligned), a further condition on the lattice and on t.
+// (0: its ends aligned), a further condition on the lattice and on t. The T-mesh's spans (a
+// boundary run between corners, a separatrix from a cone or corner to the boundary or to another
+// cone) keep a length of at least 1 in both roundings: any valid map has them so.
 
 #include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/motorcycle_graph.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/seam_lattice.h>
@@ -41,26 +43,29 @@ struct Quantization_counts
 
 // Rounds y = B t (B given by its rows Brow; Ginv = G^-1, updated in place with t) in two phases:
 // values from index `first_point` on (singularity and corner positions) first, then the others;
-// the nearest to an integer first. False with a message if the lattice admits no integer near a
-// value.
+// the nearest to an integer first, keeping the lengths of `arcs` and `spans` (either may be empty).
+// False with a message if the lattice admits no integer near a value.
 inline bool quantize(Seam_lattice& lattice, const Eigen::SparseMatrix<double, Eigen::RowMajor>& Brow, Eigen::MatrixXd& Ginv,
-                     Eigen::VectorXd& t, int first_point, const std::vector<Linear_form>& arcs, Quantization_counts& counts,
-                     std::string& message)
+                     Eigen::VectorXd& t, int first_point, const std::vector<Linear_form>& arcs, const std::vector<Linear_form>& spans,
+                     Quantization_counts& counts, std::string& message)
 {
   const int ns = int(Brow.rows());
   const Eigen::Index nt = Brow.cols();
-  // the arcs in t: Q = R B, their current lengths q = Q t
+  std::vector<const Linear_form*> kept;   // the arcs, then the spans
+  for(const Linear_form& a : arcs) kept.push_back(&a);
+  for(const Linear_form& a : spans) kept.push_back(&a);
+  // the kept lengths in t: Q = R B, their current values q = Q t
   Eigen::SparseMatrix<double, Eigen::RowMajor> Q;
   {
     std::vector<Eigen::Triplet<double>> tr;
-    for(std::size_t j = 0; j < arcs.size(); ++j)
-      for(const auto& e : arcs[j].terms) tr.emplace_back(int(j), e.first, e.second);
-    Eigen::SparseMatrix<double, Eigen::RowMajor> R(Eigen::Index(arcs.size()), ns);
+    for(std::size_t j = 0; j < kept.size(); ++j)
+      for(const auto& e : kept[j]->terms) tr.emplace_back(int(j), e.first, e.second);
+    Eigen::SparseMatrix<double, Eigen::RowMajor> R(Eigen::Index(kept.size()), ns);
     R.setFromTriplets(tr.begin(), tr.end());
     Q = (R * Eigen::SparseMatrix<double>(Brow)).pruned();
   }
   Eigen::VectorXd q = Q * t;
-  std::vector<char> held(arcs.size(), 0);
+  std::vector<char> held(kept.size(), 0);
   const double g_scale = nt > 0 ? (std::max)(Ginv.diagonal().cwiseAbs().maxCoeff(), 1e-300) : 1.;
   const double tol = 1e-7;
   // an arc at least half a unit long in the seamless map keeps a length of at least 1; a shorter
@@ -68,7 +73,7 @@ inline bool quantize(Seam_lattice& lattice, const Eigen::SparseMatrix<double, Ei
   // alone / collapses allowed everywhere / no collapse at all / this): casting 14 / 12 / 0 / 0
   // folded triangles, cheburashka 71 / 65 / 172 / 36, homer 46 / 57 / 456 / 48.
   Eigen::VectorXd min_arc(q.size());
-  for(Eigen::Index j = 0; j < q.size(); ++j) min_arc[j] = q[j] >= 0.5 ? 1. : 0.;
+  for(Eigen::Index j = 0; j < q.size(); ++j) min_arc[j] = std::size_t(j) >= arcs.size() || q[j] >= 0.5 ? 1. : 0.;
   // a @ t moved by d * step within the conditions so far (c = G^-1 a, d = a @ c, qc = Q c if
   // known), a rank-one update of G^-1
   auto update = [&](const Eigen::VectorXd& c, double d, double step, const Eigen::VectorXd& qc) {
@@ -92,7 +97,7 @@ inline bool quantize(Seam_lattice& lattice, const Eigen::SparseMatrix<double, Ei
       if(worst < 0) return true;
       held[std::size_t(worst)] = 1;
       Seam_lattice::Sparse row;
-      for(const auto& e : arcs[std::size_t(worst)].terms) row[e.first] = Seam_lattice::Int(std::lround(e.second));
+      for(const auto& e : kept[std::size_t(worst)]->terms) row[e.first] = Seam_lattice::Int(std::lround(e.second));
       std::string why;
       const Seam_lattice::Int shortest = Seam_lattice::Int(min_arc[worst]);
       Seam_lattice::Int length = shortest;
@@ -125,7 +130,7 @@ inline bool quantize(Seam_lattice& lattice, const Eigen::SparseMatrix<double, Ei
       const Eigen::VectorXd ak = Brow.row(k).transpose();
       const Eigen::VectorXd c = Ginv * ak;
       const double d = ak.dot(c);
-      const Eigen::VectorXd qc = arcs.empty() ? Eigen::VectorXd() : Eigen::VectorXd(Q * c);
+      const Eigen::VectorXd qc = kept.empty() ? Eigen::VectorXd() : Eigen::VectorXd(Q * c);
       // the admitted integers r0, r0 + dir, r0 - dir, r0 + 2 dir, ...: the first that keeps every
       // arc at its least length once t is re-solved, else the one that falls least short
       const double r0 = std::round(yk), dir = yk >= r0 ? 1 : -1;
@@ -136,7 +141,7 @@ inline bool quantize(Seam_lattice& lattice, const Eigen::SparseMatrix<double, Ei
         if(!lattice.admits(k, Seam_lattice::Int(v))) continue;
         ++admitted;
         double lowest = std::numeric_limits<double>::infinity();
-        if(d > 1e-14 * g_scale && !arcs.empty()) {
+        if(d > 1e-14 * g_scale && !kept.empty()) {
           const double s = (v - yk) / d;
           for(Eigen::Index j = 0; j < q.size(); ++j) if(!held[std::size_t(j)]) lowest = (std::min)(lowest, q[j] + qc[j] * s - min_arc[j]);
         }
@@ -154,7 +159,7 @@ inline bool quantize(Seam_lattice& lattice, const Eigen::SparseMatrix<double, Ei
       if(!lattice.add(fix, message, Seam_lattice::Int(chosen))) return false;
       if(d > 1e-14 * g_scale) update(c, d, (chosen - yk) / d, qc);
       ++counts.rounded;
-      if(!arcs.empty() && !hold_short_arcs()) return false;
+      if(!kept.empty() && !hold_short_arcs()) return false;
     }
   }
   return true;
