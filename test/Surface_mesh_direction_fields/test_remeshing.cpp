@@ -1412,7 +1412,7 @@ void cube_through_intrinsic_triangulation()
 // The T-mesh of a map's seamless stage, read back: traced wherever the seamless map folds no
 // triangle (or says why not, never an arc whose symbolic length disagrees with the traced one),
 // at least one arc per singularity and corner.
-void check_t_mesh(const SMDF::Integer_grid_map_status& st, std::size_t nodes, const std::string& what, std::size_t& traced)
+void check_t_mesh(const SMDF::Integer_grid_map_status& st, std::size_t nodes, long chi, const std::string& what, std::size_t& traced)
 {
   SMDF_CHECK_MSG(st.t_mesh_failure.find("form gives") == std::string::npos, what << ": " << st.t_mesh_failure);
   if(st.seamless_folded_triangles == 0 && st.t_mesh_failure.find("folds back") == std::string::npos)
@@ -1425,6 +1425,13 @@ void check_t_mesh(const SMDF::Integer_grid_map_status& st, std::size_t nodes, co
                  what << ": arcs miscounted");
   // a boundary run between consecutive corners, at least, per corner
   SMDF_CHECK_MSG(st.t_mesh_spans >= st.boundary_corners.size(), what << ": " << st.t_mesh_spans << " spans for " << st.boundary_corners.size() << " corners");
+  // Euler: the rectangles are at most the faces the nodes and arcs leave, all of them on a closed
+  // sphere (no face winds around a handle or along a boundary loop)
+  const long faces = chi - long(st.t_mesh_nodes) + long(st.t_mesh_arcs);
+  SMDF_CHECK_MSG(long(st.t_mesh_faces) <= faces && (chi != 2 || st.t_mesh_arcs == 0 || long(st.t_mesh_faces) == faces) &&
+                     st.collapsed_faces <= st.t_mesh_faces,
+                 what << ": " << st.t_mesh_faces << " rectangles, " << faces << " faces by Euler's formula (" << st.t_mesh_nodes << " nodes, "
+                      << st.t_mesh_arcs << " arcs)");
 }
 
 std::string t_mesh_summary(const SMDF::Integer_grid_map_status& st)
@@ -1432,7 +1439,8 @@ std::string t_mesh_summary(const SMDF::Integer_grid_map_status& st)
   if(!st.t_mesh_failure.empty()) return "no T-mesh (" + st.t_mesh_failure + ")";
   return std::to_string(st.t_mesh_arcs) + " T-mesh arcs (" + std::to_string(st.held_arcs) + " held, " + std::to_string(st.collapsed_arcs) +
          " collapsed, " + std::to_string(st.negative_arcs) + " negative, " + std::to_string(st.rounded_apart) + " values rounded apart, " +
-         std::to_string(st.short_spans) + " of " + std::to_string(st.t_mesh_spans) + " spans short" +
+         std::to_string(st.short_spans) + " of " + std::to_string(st.t_mesh_spans) + " spans short, " + std::to_string(st.collapsed_faces) +
+         " of " + std::to_string(st.t_mesh_faces) + " faces collapsed" +
          (st.arcs_kept ? "; kept" : "") + ")";
 }
 
@@ -1486,6 +1494,9 @@ void staircase_t_mesh()
     SMDF_CHECK_MSG(st.t_mesh_failure.empty() && st.t_mesh_arcs == 16, what << ": " << st.t_mesh_arcs << " T-mesh arcs, 16 expected " << st.t_mesh_failure);
     // spans: the 8 boundary runs, and the 3 separatrices that end on the boundary
     SMDF_CHECK_MSG(st.t_mesh_spans == 11 && st.short_spans == 0, what << ": " << st.t_mesh_spans << " spans, 11 expected, " << st.short_spans << " short");
+    // 5 rectangles: 8 corners and 4 ends make 12 nodes, 16 arcs, 1 - 12 + 16 faces
+    SMDF_CHECK_MSG(st.t_mesh_faces == 5 && st.t_mesh_nodes == 12 && st.collapsed_faces == 0,
+                   what << ": " << st.t_mesh_faces << " rectangles and " << st.t_mesh_nodes << " nodes, 5 and 12 expected");
     SMDF_CHECK_MSG(st.success && st.boundary_corners.size() == 8 && st.negative_arcs == 0, what << ": " << st.message);
   }
 }
@@ -1553,7 +1564,7 @@ void integer_grid_maps(const std::string& dir)
               << t_mesh_summary(st) << ", "
               << st.stiffening_rounds << " stiffening rounds, energy " << st.seamless_energy << " -> " << st.integer_energy
               << ", min area ratio " << st.min_area_ratio << std::endl;
-    check_t_mesh(st, st.singularities.size(), what, t_meshes);
+    check_t_mesh(st, st.singularities.size(), 2 - 2 * std::stol(e.genus), what, t_meshes);
     if(st.folded_triangles == 0 && st.winding_faults == 0) SMDF_CHECK_MSG(st.success, what << ": " << st.message);
     if(!st.success && st.folded_triangles == 0 && st.winding_faults == 0) return;
     typedef std::complex<double> C;
@@ -2370,7 +2381,7 @@ void integer_grid_maps_open(const std::string& dir)
                              std::to_string(cs.cones.size()) + " cones and corners)";
     std::cout << what << ": " << (st.success ? "unfolded" : st.message) << ", " << st.arcs << " seams, " << t_mesh_summary(st) << ", " << st.boundary_lines
               << " boundary lines, " << st.boundary_corners.size() << " corners, energy " << st.seamless_energy << " -> " << st.integer_energy << std::endl;
-    check_t_mesh(st, st.singularities.size() + st.boundary_corners.size(), what, t_meshes);
+    check_t_mesh(st, st.singularities.size() + st.boundary_corners.size(), 2 - 2 * std::stol(e.genus) - long(e.boundary_loops), what, t_meshes);
     if(st.folded_triangles == 0 && st.winding_faults == 0) SMDF_CHECK_MSG(st.success, what << ": " << st.message);
     if(!st.success && st.folded_triangles == 0 && st.winding_faults == 0) return;
     auto at = [&](H x) { return C(uv[x][0], uv[x][1]); };   // target(x) in face(x)

@@ -444,6 +444,8 @@ Edge_length_property cross_field_and_map(const std::string& file, Mesh& on, cons
   ig["negative_arcs"] = gs.negative_arcs;
   ig["t_mesh_spans"] = gs.t_mesh_spans;
   ig["short_spans"] = gs.short_spans;
+  ig["t_mesh_faces"] = gs.t_mesh_faces;
+  ig["collapsed_faces"] = gs.collapsed_faces;
   ig["arcs_kept"] = gs.arcs_kept;
   ig["folded_triangles"] = gs.folded_triangles;
   ig["winding_faults"] = gs.winding_faults;

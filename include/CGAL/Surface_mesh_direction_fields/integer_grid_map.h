@@ -19,6 +19,7 @@
 #include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/map_factor.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/motorcycle_graph.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/quantization.h>
+#include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/t_mesh_faces.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/seam_layout.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/seam_lattice.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/winding.h>
@@ -71,9 +72,16 @@ struct Integer_grid_map_status
   std::size_t negative_arcs = 0;   ///< arcs of negative length in the integer map (a fold is then certain)
   /// the T-mesh's spans (boundary runs between corners; separatrices from a singularity or concave
   /// corner that end on the boundary or at a singularity), which both roundings keep at least 1
-  /// long: those of them shorter in the integer map (a fold is then certain)
+  /// long: those of them shorter in the integer map
   std::size_t t_mesh_spans = 0;
   std::size_t short_spans = 0;   ///< see `t_mesh_spans`
+  /// the T-mesh's faces that are rectangles of the seamless map (all of them on a closed genus-0
+  /// map: faces around a handle or along a boundary loop without corners need not be). A face of
+  /// width or height 0 in the integer map (`collapsed_faces`) cannot keep its piece of the surface:
+  /// the map must route a separatrix elsewhere than the seamless map does, or fold there
+  std::size_t t_mesh_faces = 0;
+  std::size_t t_mesh_nodes = 0;      ///< the T-mesh's nodes: singularities, corners and the separatrices' ends
+  std::size_t collapsed_faces = 0;   ///< rectangles of width or height 0 in the integer map
   bool arcs_kept = false;          ///< the map kept is the second rounding's, which kept the arcs' lengths
   int stiffening_rounds = 0;   ///< re-solves with the faces around folded ones weighted more
   /// boundary vertices where the boundary turns (by a multiple of \f$\pi/2\f$ under the metric):
@@ -126,7 +134,7 @@ struct Integer_grid_map_status
 /// nearest integer that still leaves one (a cone of \f$-\pi\f$, whose closing has a
 /// coefficient 2, constrains parities); values the others determine are not rounded again. No
 /// rounding can leave a later value without an admissible integer. Both roundings keep the
-/// T-mesh's spans at least 1 long, as any valid map has them: the boundary runs between corners,
+/// T-mesh's spans at least 1 long, as a map that keeps the seamless map's T-mesh has them: the boundary runs between corners,
 /// and the separatrices that run from a singularity or concave corner to the boundary or to
 /// another singularity (else a cone falls on the boundary, or two corners or cones on one point).
 /// If that map folds, the
@@ -520,6 +528,17 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   if(!internal::trace_separatrix_arcs(m, topo, seams, layout, expected_angle, image, y, arcs, st.t_mesh_failure)) arcs = internal::Separatrix_arcs();
   st.t_mesh_arcs = arcs.forms.size();
   st.t_mesh_spans = arcs.spans.size();
+  std::vector<internal::Linear_form> face_sides;
+  st.t_mesh_faces = internal::t_mesh_face_sides(arcs, y, face_sides);
+  {
+    std::vector<char> seen(arcs.period.size(), 0);
+    for(const auto& stops : arcs.stops) for(const auto& s : stops) seen[std::size_t(s.node)] = 1;
+    st.t_mesh_nodes = std::size_t(std::count(seen.begin(), seen.end(), 1));
+  }
+  // the faces' sides are read back, not kept by the rounding: kept at least 1 by the second
+  // rounding, the casting at 1,000 quads remeshed (it failed) but the holes at 1,000 failed, and
+  // 41 of 58 remeshes at 1,000 and 2,500 quads had min scaled Jacobian > 0 against 38 (greedy
+  // rounding with conditions is order-dependent: faces want an exact integer program)
   // 9. the rounding (quantization.h), the vertex unknowns and local stiffening: first Bommes et
   // al.'s greedy rounding alone; if the map folds, again keeping the T-mesh's arcs (the better
   // map kept). Measured on test_remeshing's maps, the arcs' conditions alone: the casting unfolds
@@ -529,9 +548,9 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   const internal::Seam_lattice lattice0 = lattice;
   const Eigen::MatrixXd Ginv0 = Ginv;
   const Eigen::VectorXd t0 = t;
-  auto round_and_unfold = [&](const std::vector<internal::Linear_form>& kept) -> bool {
+  auto round_and_unfold = [&](const std::vector<internal::Linear_form>& kept, const std::vector<internal::Linear_form>& spans) -> bool {
     internal::Quantization_counts qc;
-    if(!internal::quantize(lattice, Brow, Ginv, t, 2 * (narcs + nlines), kept, arcs.spans, qc, st.message)) return false;
+    if(!internal::quantize(lattice, Brow, Ginv, t, 2 * (narcs + nlines), kept, spans, qc, st.message)) return false;
     st.rounded = qc.rounded;
     st.implied = qc.implied;
     st.rounded_apart = qc.moved;
@@ -549,10 +568,13 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
     }
     st.short_spans = 0;
     for(const internal::Linear_form& span : arcs.spans) st.short_spans += span(y) < 0.5;
+    st.collapsed_faces = 0;
+    for(std::size_t k = 0; k < face_sides.size(); k += 4)
+      st.collapsed_faces += face_sides[k](y) < 0.5 || face_sides[k + 1](y) < 0.5;
     if(!unfold()) { if(st.message.empty()) st.message = "the stiffened system could not be solved"; return false; }
     return true;
   };
-  if(!round_and_unfold({})) return st;
+  if(!round_and_unfold({}, arcs.spans)) return st;
   std::size_t faults = folds();
   if(faults == 0) faults = internal::winding_faults(m, expected_angle, image).size();
   if(faults > 0 && !arcs.forms.empty()) {
@@ -569,7 +591,7 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
       if(!stiffened.empty() && !chol.factor(A, nb, msg)) { st.message = "the map's system could not be factored: " + msg; return st; }
     }
     lattice = lattice0; Ginv = Ginv0; t = t0;
-    const bool done = round_and_unfold(arcs.forms);
+    const bool done = round_and_unfold(arcs.forms, arcs.spans);
     std::size_t faults2 = done ? folds() : faults + 1;
     if(done && faults2 == 0) faults2 = internal::winding_faults(m, expected_angle, image).size();
     st.arcs_kept = faults2 < faults;

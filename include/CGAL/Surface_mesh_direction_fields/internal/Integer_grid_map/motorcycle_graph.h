@@ -22,6 +22,7 @@
 #include <cmath>
 #include <complex>
 #include <functional>
+#include <limits>
 #include <queue>
 #include <string>
 #include <utility>
@@ -83,9 +84,18 @@ struct Separatrix_arcs
 {
   std::vector<Linear_form> forms;
   // the whole length of every boundary run between corners, and of every separatrix that ends on
-  // the boundary or at a singularity: at least 1 in any valid map (two corners, a cone and the
+  // the boundary or at a singularity: at least 1 in a map that keeps this T-mesh (two corners, a cone and the
   // boundary, or two cones would fall on one point)
   std::vector<Linear_form> spans;
+  // the T-mesh as a graph, for its faces (t_mesh_faces.h): per trace its nodes in order along it,
+  // each a node id (a vertex's index, or a junction's from the number of vertices on) and the
+  // trace's direction there in the node's own chart (at a vertex: the angle turned from its first
+  // side in the map); the length of each arc between consecutive nodes; per node id, the period of
+  // those angles (2 pi, a singularity's angle in the map, 0 on the boundary: no wrap)
+  struct Stop { int node; double angle; };
+  std::vector<std::vector<Stop>> stops;
+  std::vector<std::vector<Linear_form>> arc_of;
+  std::vector<double> period;
   std::size_t traces = 0;      // separatrices traced (boundary runs between corners included)
   std::size_t junctions = 0;   // nodes where a separatrix ends on another line or on the boundary
   std::size_t crossings = 0;   // triangles crossed, summed over the separatrices
@@ -108,7 +118,7 @@ bool trace_separatrix_arcs(const Mesh_arrays<TM>& m, const Topology_arrays& topo
   auto axis = [&](Cplx v) { return unit_power(int(std::lround(std::arg(v) / quarter))); };
   struct Forms { Linear_form iso, offset; double offset_value = 0; };   // along in the trace's first chart = Re(P / d) - offset
   struct Segment { int trace, forms, next; Cplx a, b, dir; };
-  struct Node { double along; Linear_form form; };
+  struct Node { double along; Linear_form form; int id = -1; double angle = 0; };   // angle: NaN at a run's last corner
   // p: where the trace enters its face; at a vertex (its start) the line runs `shift` to the left
   // of p (a symbolic perturbation: no line runs along an edge or through a vertex, where two
   // lines would meet unseen, a grid-aligned mesh's common case)
@@ -117,6 +127,7 @@ bool trace_separatrix_arcs(const Mesh_arrays<TM>& m, const Topology_arrays& topo
   std::vector<Segment> segments;
   std::vector<int> head(nf, -1), border_segment(m.number_of_edges(), -1);
   std::vector<Trace> traces;
+  std::vector<double> total(nv, 0.);   // the map's angle at each singularity and corner
   const std::vector<Corner_expression>& corner = layout.corner;
 
   // the big part of e (a boundary vertex's position along its line) divided by d: none across d
@@ -194,6 +205,7 @@ bool trace_separatrix_arcs(const Mesh_arrays<TM>& m, const Topology_arrays& topo
         tr = int(traces.size());
         traces.emplace_back();
         traces.back().nodes.push_back(start_node(es, image(x), d));
+        traces.back().nodes.back().id = m.source(x);
       } else {   // along continues through source(x): offset += Re(e2 / d2) - Re(e1 / d1)
         const Corner_expression& e1 = corner[std::size_t(m.next[std::size_t(xprev)])];
         if(!(std::abs(big_over(e1, dprev).real() - big_over(es, d).real()) < 1e-9)) {
@@ -217,6 +229,8 @@ bool trace_separatrix_arcs(const Mesh_arrays<TM>& m, const Topology_arrays& topo
         Node e = start_node(corner[std::size_t(m.next[std::size_t(x)])], image(m.next[std::size_t(x)]), d);
         e.form.add(fx.offset, -1);
         e.along -= fx.offset_value;
+        e.id = v_end;
+        e.angle = std::numeric_limits<double>::quiet_NaN();   // the run arrives along the corner's last side
         traces[std::size_t(tr)].nodes.push_back(std::move(e));
         traces[std::size_t(tr)].spans = true;
       }
@@ -237,8 +251,10 @@ bool trace_separatrix_arcs(const Mesh_arrays<TM>& m, const Topology_arrays& topo
     const int expected = int(std::lround(expected_angle[v] / quarter)) - (border ? 1 : 0);
     int found = 0;
     const int x0 = m.vertex_out[v];
+    double turned = 0;   // the map's angle from the first side to corner x
     for(int x = x0;;) {
       directions_in_corner(x, dirs);
+      const Cplx side_a = image(m.next[std::size_t(x)]) - image(x);
       for(const auto& dc : dirs) {
         const Cplx d = dc.first;
         Trace t;
@@ -252,15 +268,19 @@ bool trace_separatrix_arcs(const Mesh_arrays<TM>& m, const Topology_arrays& topo
         pool.push_back(std::move(fo));
         t.forms = int(pool.size()) - 1;
         t.nodes.push_back(start_node(corner[std::size_t(x)], t.p, d));
+        t.nodes.back().id = int(v);
+        t.nodes.back().angle = turned + (std::max)(0., std::arg(d / side_a));
         queue.emplace(0., int(traces.size()));
         traces.push_back(std::move(t));
         ++found;
       }
+      turned += std::arg((image(m.prev(x)) - image(x)) / side_a);
       const int yv = m.prev(x);
       if(m.face[std::size_t(yv ^ 1)] < 0) break;
       x = yv ^ 1;
       if(x == x0) break;
     }
+    total[v] = turned;
     if(found != expected) {
       message = "the seamless map is not locally injective around vertex " + std::to_string(v) + " (" + std::to_string(found) +
                 " grid directions leave it, " + std::to_string(expected) + " expected)";
@@ -268,6 +288,7 @@ bool trace_separatrix_arcs(const Mesh_arrays<TM>& m, const Topology_arrays& topo
     }
   }
   out.traces = traces.size();
+  int next_id = int(nv);   // junctions' node ids
   // 3. the motorcycle graph: the shortest trace advances by one triangle at a time
   const std::size_t max_crossings = std::size_t(crossings_per_face * double(nf)) + 1000;
   auto junction = [&](int hit_trace, int hit_forms, Cplx dh, Trace& t, Cplx x) {   // t ends at x on a line of direction dh
@@ -278,14 +299,19 @@ bool trace_separatrix_arcs(const Mesh_arrays<TM>& m, const Topology_arrays& topo
     e.form.add(fh.iso, -s);
     e.form.add(ft.offset, -1);
     e.along = (x / t.d).real() - ft.offset_value;
+    e.id = next_id;
+    e.angle = std::arg(t.d);
     t.nodes.push_back(std::move(e));
     if(hit_trace >= 0) {
       Node j;
       j.form.add(ft.iso, s);
       j.form.add(fh.offset, -1);
       j.along = (x / dh).real() - fh.offset_value;
+      j.id = next_id;
+      j.angle = std::arg(dh);
       traces[std::size_t(hit_trace)].nodes.push_back(std::move(j));
     }
+    ++next_id;
     ++out.junctions;
   };
   while(!queue.empty()) {
@@ -345,6 +371,8 @@ bool trace_separatrix_arcs(const Mesh_arrays<TM>& m, const Topology_arrays& topo
         Node e = start_node(corner[std::size_t(xw)], P[vertex_corner], t.d);
         e.form.add(pool[std::size_t(t.forms)].offset, -1);
         e.along -= pool[std::size_t(t.forms)].offset_value;
+        e.id = next_id++;   // its direction into the singularity is not followed: no face closes here
+        e.angle = std::arg(t.d);
         t.nodes.push_back(std::move(e));
         t.spans = true;
         ++out.junctions;
@@ -406,10 +434,20 @@ bool trace_separatrix_arcs(const Mesh_arrays<TM>& m, const Topology_arrays& topo
     if(!l.terms.empty()) into.push_back(std::move(l));
     return true;
   };
+  out.period.assign(std::size_t(next_id), 2 * CGAL_PI);
+  for(std::size_t v = 0; v < nv; ++v) out.period[v] = m.is_boundary_vertex(int(v)) ? 0. : total[v];
   for(Trace& t : traces) {
     std::sort(t.nodes.begin(), t.nodes.end(), [](const Node& p, const Node& q) { return p.along < q.along; });
-    for(std::size_t i = 0; i + 1 < t.nodes.size(); ++i)
-      if(!length_form(t.nodes[i], t.nodes[i + 1], out.forms)) return false;
+    out.stops.emplace_back();
+    out.arc_of.emplace_back();
+    for(const Node& n : t.nodes)   // a run's last corner: the way back along its last side, at its whole angle
+      out.stops.back().push_back({n.id, std::isnan(n.angle) ? total[std::size_t(n.id)] - CGAL_PI : n.angle});
+    for(std::size_t i = 0; i + 1 < t.nodes.size(); ++i) {
+      std::vector<Linear_form> one;
+      if(!length_form(t.nodes[i], t.nodes[i + 1], one)) return false;
+      out.arc_of.back().push_back(one.empty() ? Linear_form() : one.front());
+      if(!one.empty()) out.forms.push_back(std::move(one.front()));
+    }
     if(t.spans && t.nodes.size() >= 2 && !length_form(t.nodes.front(), t.nodes.back(), out.spans)) return false;
   }
   return true;

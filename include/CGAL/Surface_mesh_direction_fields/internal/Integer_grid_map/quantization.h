@@ -14,7 +14,7 @@
 // length once t is re-solved is taken; an arc that still falls short is held at its least length
 // (0: its ends aligned), a further condition on the lattice and on t. The T-mesh's spans (a
 // boundary run between corners, a separatrix from a cone or corner to the boundary or to another
-// cone) keep a length of at least 1 in both roundings: any valid map has them so.
+// cone) keep a length of at least 1 in both roundings: a map that keeps the T-mesh has them so.
 
 #include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/motorcycle_graph.h>
 #include <CGAL/Surface_mesh_direction_fields/internal/Integer_grid_map/seam_lattice.h>
