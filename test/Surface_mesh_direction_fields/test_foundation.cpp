@@ -18,6 +18,8 @@
 
 #include <Eigen/SparseCore>
 #include <Eigen/SparseCholesky>
+#include <cstdio>
+#include <fstream>
 #include <functional>
 #include <numeric>
 
@@ -438,6 +440,52 @@ void test_triangle_angles()
   SMDF_CHECK(SMDF::corner_angle(3., 1., 1.) == CGAL_PI && SMDF::corner_angle(1., 3., 1.) == 0.);
 }
 
+// read_triangle_mesh() with triangulate_polygons: a cube of 6 quads becomes 12 triangles, the
+// same 8 vertices, closed, genus 0 (rejected without the option); the shared meshes of quads and
+// of polygons keep their vertices and their Euler characteristic, every face a triangle.
+template <typename Mesh>
+void test_triangulated_polygons(const std::string& dir, const std::string& name)
+{
+  const std::string cube = "smdf_test_cube_quads_" + name + ".obj";
+  {
+    std::ofstream out(cube);
+    out << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+           "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
+  }
+  Mesh m;
+  int kind = -1;
+  try { SMDF::read_triangle_mesh(cube, m); } catch(const SMDF::Input_error& e) { kind = e.kind(); }
+  SMDF_CHECK_MSG(kind == SMDF::Input_error::NOT_TRIANGLE_MESH, name << ": quads rejected without triangulate_polygons");
+  const SMDF::Polygon_soup_report r = SMDF::read_triangle_mesh(cube, m, SMDF::parameters::triangulate_polygons(true));
+  const auto topo = SMDF::mesh_topology(m);
+  SMDF_CHECK_MSG(r.triangulated_polygons == 6 && num_faces(m) == 12 && num_vertices(m) == 8 && CGAL::is_triangle_mesh(m) &&
+                     topo.components.size() == 1 && topo.components[0].genus == 0 && topo.is_closed(),
+                 name << ": the cube of quads, " << num_faces(m) << " triangles");
+  std::remove(cube.c_str());
+  if(dir.empty()) return;
+  for(const char* file : {"horse_quad_igltut.obj", "wallhole_trimesh.obj"}) {
+    std::vector<K::Point_3> points;
+    std::vector<std::vector<std::size_t>> polygons;
+    SMDF::internal::read_obj(dir + "/meshes/" + file, points, polygons);
+    std::set<std::pair<std::size_t, std::size_t>> soup_edges;
+    std::size_t polys = 0;
+    for(const auto& p : polygons) {
+      polys += p.size() > 3;
+      for(std::size_t i = 0; i < p.size(); ++i)
+        soup_edges.insert(std::minmax(p[i], p[(i + 1) % p.size()]));
+    }
+    const long chi = long(points.size()) - long(soup_edges.size()) + long(polygons.size());
+    Mesh t;
+    const SMDF::Polygon_soup_report rt = SMDF::read_triangle_mesh(dir + "/meshes/" + file, t, SMDF::parameters::triangulate_polygons(true));
+    const long chi_t = long(num_vertices(t)) - long(num_edges(t)) + long(num_faces(t));
+    SMDF_CHECK_MSG(rt.triangulated_polygons == polys && polys > 0 && CGAL::is_triangle_mesh(t) && num_vertices(t) == points.size() && chi_t == chi,
+                   name << ", " << file << ": " << rt.triangulated_polygons << " of " << polys << " polygons triangulated, Euler characteristic "
+                        << chi_t << " against the file's " << chi);
+    std::cout << name << ", " << file << ": " << polys << " polygons triangulated into " << num_faces(t) << " triangles, Euler characteristic "
+              << chi << std::endl;
+  }
+}
+
 int main()
 {
   test_triangle_angles();
@@ -447,6 +495,8 @@ int main()
   ts.run_generated();
   tp.run_generated();
   const std::string dir = smdf_test::shared_data_dir();
+  test_triangulated_polygons<Surface_mesh>(dir, "Surface_mesh");
+  test_triangulated_polygons<Polyhedron>(dir, "Polyhedron_3");
   if(dir.empty()) {
     std::cout << "../shared/data not found: shared-mesh checks skipped" << std::endl;
   } else {

@@ -112,7 +112,8 @@ Json run_remesh(const Args& args)
   (void)svg_check;
 
   Mesh mesh;
-  load_mesh(file, mesh);
+  // a remesher replaces the faces anyway: quads and polygons are split into triangles first
+  const SMDF::Polygon_soup_report soup = load_mesh(file, mesh, true);
   const bool place = args.has("place-cones") || (may_place && !embedding_fits_quads(mesh));
   if(args.has("uv-out") && !place)
     throw Error(file + ": --uv-out writes the integer-grid map of automatic cones, but this mesh's curvatures are all multiples of pi/2: "
@@ -144,6 +145,7 @@ Json run_remesh(const Args& args)
                   " and " + std::to_string(topo.boundary_loops.size()) + " boundary loop(s) [invalid_input]");
   }
   Json out = Json::object();
+  if(soup.triangulated_polygons > 0) out["triangulated_polygons"] = soup.triangulated_polygons;
   const Input_faces_tree input_tree(mesh);   // for the read-backs of every attempt
   // Every route's untangling (every other check passed): the inverted faces (the tessellation's
   // count, `inverted`), the faces flipped against the input's normal nearest their centroid (a

@@ -96,6 +96,8 @@ Command remesh_command()
           "side_deviation}]}: the mixed grid's Theorem 3.5 test on the metric built, every face of P\n"
           "developed again from the edge lengths must be a square or triangle of whole grid edges\n"
           "and every other vertex flat. --grid must agree with a FILE's faces (quad, triangle or mixed).\n"
+          "An input with faces of more than 3 vertices (quads, polygons) is triangulated first\n"
+          "(triangulated_polygons: how many); vertex indices stay those of the file.\n"
           "Exit code 3 (JSON printed) when the metric is\n"
           "incompatible with the grid, the edge length does not fit its lattice, or the read-back\n"
           "fails (valences, inverted faces, the polyhedron test); the remesh is still written when its\n"

@@ -129,11 +129,11 @@ std::string format_real(double d)
 
 // ---- Meshes -------------------------------------------------------------------------------
 
-SMDF::Polygon_soup_report load_mesh(const std::string& file, Mesh& mesh)
+SMDF::Polygon_soup_report load_mesh(const std::string& file, Mesh& mesh, bool triangulate)
 {
   return on_file(file, [&] {
     Silence_cerr quiet;
-    return SMDF::read_triangle_mesh(file, mesh);
+    return SMDF::read_triangle_mesh(file, mesh, SMDF::parameters::triangulate_polygons(triangulate));
   });
 }
 

@@ -116,7 +116,8 @@ private:
 inline std::size_t index(vertex_descriptor v) { return std::size_t(v); }
 
 // Reads and validates a mesh; errors name the file.
-SMDF::Polygon_soup_report load_mesh(const std::string& file, Mesh& mesh);
+// `triangulate`: faces of more than 3 vertices are split into triangles instead of rejected
+SMDF::Polygon_soup_report load_mesh(const std::string& file, Mesh& mesh, bool triangulate = false);
 
 // "handle" or "boundary".
 const char* kind_name(SMDF::Generator_kind k);

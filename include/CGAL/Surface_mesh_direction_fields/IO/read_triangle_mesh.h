@@ -5,9 +5,11 @@
 #define CGAL_SURFACE_MESH_DIRECTION_FIELDS_IO_READ_TRIANGLE_MESH_H
 
 #include <CGAL/Surface_mesh_direction_fields/errors.h>
+#include <CGAL/Surface_mesh_direction_fields/parameters.h>
 
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/Kernel_traits.h>
 
@@ -16,6 +18,7 @@
 #include <cstdint>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <numeric>
 #include <sstream>
 #include <string>
@@ -32,6 +35,7 @@ struct Polygon_soup_report
   std::size_t polygons = 0;               ///< number of polygons (faces, in file order)
   std::size_t unreferenced_points = 0;    ///< points used by no polygon (kept as isolated vertices)
   std::size_t reoriented_polygons = 0;    ///< polygons whose vertex order was reversed
+  std::size_t triangulated_polygons = 0;  ///< polygons of more than 3 vertices split into triangles (`triangulate_polygons`)
 };
 
 /// \ingroup PkgSurfaceMeshDirectionFieldsIO
@@ -43,12 +47,12 @@ struct Polygon_soup_report
 /// edge shared by more than two polygons, which includes duplicate faces
 /// (`NON_MANIFOLD_EDGE`), a component that cannot be oriented (`NON_ORIENTABLE`), a vertex
 /// whose polygons form more than one fan (`NON_MANIFOLD_VERTEX`), a polygon that is not a
-/// triangle (`NOT_TRIANGLE_MESH`).
+/// triangle (`NOT_TRIANGLE_MESH`; not checked when `triangles_only` is false).
 /// Orientation follows the first polygon of each component; others are flipped to agree.
 /// \tparam PolygonRange a random-access range of random-access ranges of indices (e.g.
 ///         `std::vector<std::vector<std::size_t>>`)
 template <typename PolygonRange>
-Polygon_soup_report validate_polygon_soup(std::size_t number_of_points, PolygonRange& polygons)
+Polygon_soup_report validate_polygon_soup(std::size_t number_of_points, PolygonRange& polygons, bool triangles_only = true)
 {
   Polygon_soup_report report;
   report.points = number_of_points;
@@ -173,7 +177,7 @@ Polygon_soup_report validate_polygon_soup(std::size_t number_of_points, PolygonR
       }
     }
 
-  for(std::size_t p = 0; p < np; ++p)
+  for(std::size_t p = 0; p < np && triangles_only; ++p)
     if(polygons[p].size() != 3) {
       std::ostringstream os;
       os << "face " << p << " has " << polygons[p].size()
@@ -378,10 +382,20 @@ inline void check_ply_header(const std::string& filename)
 /// `CGAL::Surface_mesh` (unreferenced points become isolated vertices). Throws `Input_error`
 /// (`FILE_ERROR` when the file cannot be opened or parsed, `INVALID_GEOMETRY` for non-finite
 /// coordinates, and the errors of validate_polygon_soup()).
+///
+/// With `triangulate_polygons(true)` (default `false`: such a file is rejected), faces of more
+/// than 3 vertices are checked like triangles, then split into triangles
+/// (`CGAL::Polygon_mesh_processing::triangulate_faces()`, which triangulates each face's
+/// projection on its best-fitting plane); the triangles are checked again as a soup. The file's
+/// triangles keep their indices; each polygon's first triangle takes its index, the others come
+/// after the file's faces. Throws `NOT_TRIANGLE_MESH` when a polygon cannot be triangulated, and
+/// the soup's errors when its triangulation is not a manifold (an edge it adds that the mesh
+/// already has).
 /// \tparam TriangleMesh a model of `MutableFaceGraph` with an internal vertex point map
-template <typename TriangleMesh>
-Polygon_soup_report read_triangle_mesh(const std::string& filename, TriangleMesh& tm)
+template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
+Polygon_soup_report read_triangle_mesh(const std::string& filename, TriangleMesh& tm, const NamedParameters& np = parameters::default_values())
 {
+  const bool triangulate = parameters::choose_parameter(parameters::get_parameter(np, internal_np::triangulate_polygons), false);
   typedef typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::type VPM;
   typedef typename boost::property_traits<VPM>::value_type Point;
   std::vector<Point> points;
@@ -418,12 +432,26 @@ Polygon_soup_report read_triangle_mesh(const std::string& filename, TriangleMesh
       throw Input_error(Input_error::INVALID_GEOMETRY,
                         "vertex " + std::to_string(i) + " has a non-finite coordinate");
   }
-  Polygon_soup_report report = validate_polygon_soup(points.size(), polygons);
+  Polygon_soup_report report = validate_polygon_soup(points.size(), polygons, !triangulate);
   clear(tm);
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, tm);
   if(num_faces(tm) != polygons.size())
     throw Input_error(Input_error::FILE_ERROR,
                       "could not build a halfedge mesh from '" + filename + "'");
+  for(const auto& p : polygons) report.triangulated_polygons += p.size() > 3;
+  if(report.triangulated_polygons > 0) {
+    if(!CGAL::Polygon_mesh_processing::triangulate_faces(tm))
+      throw Input_error(Input_error::NOT_TRIANGLE_MESH, "a face of more than 3 vertices of '" + filename + "' could not be triangulated");
+    // the triangles as a soup, checked again: an added diagonal may be an edge the mesh has
+    std::map<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, std::size_t> index;
+    for(auto v : vertices(tm)) index.emplace(v, index.size());
+    std::vector<std::vector<std::size_t>> triangles;
+    for(auto f : faces(tm)) {
+      triangles.emplace_back();
+      for(auto v : CGAL::vertices_around_face(halfedge(f, tm), tm)) triangles.back().push_back(index[v]);
+    }
+    validate_polygon_soup(num_vertices(tm), triangles);
+  }
   return report;
 }
 
