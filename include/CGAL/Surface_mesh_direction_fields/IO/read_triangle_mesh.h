@@ -386,9 +386,9 @@ inline void check_ply_header(const std::string& filename)
 /// With `triangulate_polygons(true)` (default `false`: such a file is rejected), faces of more
 /// than 3 vertices are checked like triangles, then split into triangles
 /// (`CGAL::Polygon_mesh_processing::triangulate_faces()`, which triangulates each face's
-/// projection on its best-fitting plane); the triangles are checked again as a soup. The file's
-/// triangles keep their indices; each polygon's first triangle takes its index, the others come
-/// after the file's faces. Throws `NOT_TRIANGLE_MESH` when a polygon cannot be triangulated, and
+/// projection on its best-fitting plane); the triangles are checked again as a soup and `tm`
+/// is built from them. Vertices keep the file's order; faces do not. Throws `NOT_TRIANGLE_MESH`
+/// when a polygon cannot be triangulated, and
 /// the soup's errors when its triangulation is not a manifold (an edge it adds that the mesh
 /// already has).
 /// \tparam TriangleMesh a model of `MutableFaceGraph` with an internal vertex point map
@@ -451,6 +451,9 @@ Polygon_soup_report read_triangle_mesh(const std::string& filename, TriangleMesh
       for(auto v : CGAL::vertices_around_face(halfedge(f, tm), tm)) triangles.back().push_back(index[v]);
     }
     validate_polygon_soup(num_vertices(tm), triangles);
+    // built again from the triangles: indices without the gaps the split faces may leave
+    clear(tm);
+    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, tm);
   }
   return report;
 }
