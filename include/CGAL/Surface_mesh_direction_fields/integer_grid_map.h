@@ -69,7 +69,7 @@ struct Integer_grid_map_status
   /// aligned) for an arc shorter than half a grid unit in the seamless map, else 1
   std::size_t held_arcs = 0;
   std::size_t collapsed_arcs = 0;  ///< arcs of length 0 in the integer map
-  std::size_t negative_arcs = 0;   ///< arcs of negative length in the integer map (a fold is then certain)
+  std::size_t negative_arcs = 0;   ///< arcs of negative length in the integer map (it must then route a separatrix otherwise, or fold)
   /// the T-mesh's spans (boundary runs between corners; separatrices from a singularity or concave
   /// corner that end on the boundary or at a singularity), which both roundings keep at least 1
   /// long: those of them shorter in the integer map
