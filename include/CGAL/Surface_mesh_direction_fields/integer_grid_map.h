@@ -134,10 +134,10 @@ struct Integer_grid_map_status
 /// nearest integer that still leaves one (a cone of \f$-\pi\f$, whose closing has a
 /// coefficient 2, constrains parities); values the others determine are not rounded again. No
 /// rounding can leave a later value without an admissible integer. Both roundings keep the
-/// T-mesh's spans at least 1 long, as a map that keeps the seamless map's T-mesh has them: the boundary runs between corners,
-/// and the separatrices that run from a singularity or concave corner to the boundary or to
-/// another singularity (else a cone falls on the boundary, or two corners or cones on one point).
-/// If that map folds, the
+/// T-mesh's spans at least 1 long, as a map that keeps the seamless map's T-mesh has them: the
+/// boundary runs between corners, and the separatrices that run from a singularity or concave
+/// corner to the boundary or to another singularity (else a cone falls on the boundary, or two
+/// corners or cones on one point). If that map folds, the
 /// rounding is done again, each value to the nearest admitted integer that keeps every arc of the
 /// T-mesh nonnegative, and at least 1 where it measures half a grid unit or more in the seamless
 /// map (an arc that still falls short is held there); the map with fewer folded triangles is
@@ -530,11 +530,7 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
   st.t_mesh_spans = arcs.spans.size();
   std::vector<internal::Linear_form> face_sides;
   st.t_mesh_faces = internal::t_mesh_face_sides(arcs, y, face_sides);
-  {
-    std::vector<char> seen(arcs.period.size(), 0);
-    for(const auto& stops : arcs.stops) for(const auto& s : stops) seen[std::size_t(s.node)] = 1;
-    st.t_mesh_nodes = std::size_t(std::count(seen.begin(), seen.end(), 1));
-  }
+  st.t_mesh_nodes = internal::t_mesh_nodes(arcs);
   // the faces' sides are read back, not kept by the rounding: kept at least 1 by the second
   // rounding, the casting at 1,000 quads remeshed (it failed) but the holes at 1,000 failed, and
   // 41 of 58 remeshes at 1,000 and 2,500 quads had min scaled Jacobian > 0 against 38 (greedy
@@ -560,17 +556,11 @@ Integer_grid_map_status integer_grid_map(const TriangleMesh& tm, const FaceAngle
       if(!lattice.determined(k)) { st.message = "a seam value was left undetermined by the rounding"; return false; }
       y[k] = double(lattice.offset(k));
     }
-    st.negative_arcs = st.collapsed_arcs = 0;
-    for(const internal::Linear_form& arc : arcs.forms) {
-      const double l = arc(y);
-      st.negative_arcs += l < -0.5;
-      st.collapsed_arcs += std::abs(l) < 0.5;
-    }
-    st.short_spans = 0;
-    for(const internal::Linear_form& span : arcs.spans) st.short_spans += span(y) < 0.5;
-    st.collapsed_faces = 0;
-    for(std::size_t k = 0; k < face_sides.size(); k += 4)
-      st.collapsed_faces += face_sides[k](y) < 0.5 || face_sides[k + 1](y) < 0.5;
+    const internal::T_mesh_lengths tl = internal::t_mesh_lengths(arcs, face_sides, y);
+    st.negative_arcs = tl.negative_arcs;
+    st.collapsed_arcs = tl.collapsed_arcs;
+    st.short_spans = tl.short_spans;
+    st.collapsed_faces = tl.collapsed_faces;
     if(!unfold()) { if(st.message.empty()) st.message = "the stiffened system could not be solved"; return false; }
     return true;
   };

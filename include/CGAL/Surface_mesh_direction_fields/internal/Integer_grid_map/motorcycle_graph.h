@@ -423,16 +423,13 @@ bool trace_separatrix_arcs(const Mesh_arrays<TM>& m, const Topology_arrays& topo
   }
   // 4. the arcs: consecutive nodes along each trace, checked against the seamless map; the spans:
   // first to last node of the traces that end on the boundary or at a singularity
-  auto length_form = [&](const Node& from, const Node& to, std::vector<Linear_form>& into) {
-    Linear_form l = to.form;
+  auto length_form = [&](const Node& from, const Node& to, Linear_form& l) {
+    l = to.form;
     l.add(from.form, -1);
     const double value = to.along - from.along;
-    if(!(std::abs(l(y) - value) <= 1e-6 * (1 + std::abs(value)))) {
-      message = "an arc of the T-mesh measures " + std::to_string(value) + " in the seamless map but its form gives " + std::to_string(l(y));
-      return false;
-    }
-    if(!l.terms.empty()) into.push_back(std::move(l));
-    return true;
+    if(std::abs(l(y) - value) <= 1e-6 * (1 + std::abs(value))) return true;
+    message = "an arc of the T-mesh measures " + std::to_string(value) + " in the seamless map but its form gives " + std::to_string(l(y));
+    return false;
   };
   out.period.assign(std::size_t(next_id), 2 * CGAL_PI);
   for(std::size_t v = 0; v < nv; ++v) out.period[v] = m.is_boundary_vertex(int(v)) ? 0. : total[v];
@@ -442,13 +439,16 @@ bool trace_separatrix_arcs(const Mesh_arrays<TM>& m, const Topology_arrays& topo
     out.arc_of.emplace_back();
     for(const Node& n : t.nodes)   // a run's last corner: the way back along its last side, at its whole angle
       out.stops.back().push_back({n.id, std::isnan(n.angle) ? total[std::size_t(n.id)] - CGAL_PI : n.angle});
+    Linear_form l;
     for(std::size_t i = 0; i + 1 < t.nodes.size(); ++i) {
-      std::vector<Linear_form> one;
-      if(!length_form(t.nodes[i], t.nodes[i + 1], one)) return false;
-      out.arc_of.back().push_back(one.empty() ? Linear_form() : one.front());
-      if(!one.empty()) out.forms.push_back(std::move(one.front()));
+      if(!length_form(t.nodes[i], t.nodes[i + 1], l)) return false;
+      out.arc_of.back().push_back(l);
+      if(!l.terms.empty()) out.forms.push_back(std::move(l));
     }
-    if(t.spans && t.nodes.size() >= 2 && !length_form(t.nodes.front(), t.nodes.back(), out.spans)) return false;
+    if(t.spans && t.nodes.size() >= 2) {
+      if(!length_form(t.nodes.front(), t.nodes.back(), l)) return false;
+      if(!l.terms.empty()) out.spans.push_back(std::move(l));
+    }
   }
   return true;
 }

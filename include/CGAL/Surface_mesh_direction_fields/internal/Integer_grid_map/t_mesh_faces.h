@@ -99,6 +99,31 @@ inline std::size_t t_mesh_face_sides(const Separatrix_arcs& g, const Eigen::Vect
   return rectangles;
 }
 
+// The nodes of the T-mesh (singularities, corners and the separatrices' ends)
+inline std::size_t t_mesh_nodes(const Separatrix_arcs& g)
+{
+  std::vector<char> seen(g.period.size(), 0);
+  for(const auto& stops : g.stops) for(const auto& s : stops) seen[std::size_t(s.node)] = 1;
+  return std::size_t(std::count(seen.begin(), seen.end(), 1));
+}
+
+// The T-mesh's lengths read back at the integer values y: arcs of negative length and of length 0,
+// spans shorter than 1, rectangles (four sides each in `face_sides`) of width or height 0
+struct T_mesh_lengths { std::size_t negative_arcs = 0, collapsed_arcs = 0, short_spans = 0, collapsed_faces = 0; };
+
+inline T_mesh_lengths t_mesh_lengths(const Separatrix_arcs& g, const std::vector<Linear_form>& face_sides, const Eigen::VectorXd& y)
+{
+  T_mesh_lengths r;
+  for(const Linear_form& arc : g.forms) {
+    const double l = arc(y);
+    r.negative_arcs += l < -0.5;
+    r.collapsed_arcs += std::abs(l) < 0.5;
+  }
+  for(const Linear_form& span : g.spans) r.short_spans += span(y) < 0.5;
+  for(std::size_t k = 0; k + 1 < face_sides.size(); k += 4) r.collapsed_faces += face_sides[k](y) < 0.5 || face_sides[k + 1](y) < 0.5;
+  return r;
+}
+
 } // namespace internal
 } // namespace Surface_mesh_direction_fields
 } // namespace CGAL
