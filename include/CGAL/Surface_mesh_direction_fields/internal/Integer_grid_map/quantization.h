@@ -36,9 +36,7 @@ struct Quantization_counts
   std::size_t rounded = 0;         // values rounded
   std::size_t implied = 0;         // values the rounded ones and the held arcs determined
   std::size_t moved = 0;           // values rounded to an integer other than the nearest admitted one, to keep the arcs nonnegative
-  std::size_t held_arcs = 0;       // arcs held at their least length
-  std::size_t negative_arcs = 0;   // arcs of negative length at the end (none unless a hold had no integer solution)
-  std::size_t collapsed_arcs = 0;  // arcs of length 0 at the end
+  std::size_t held_arcs = 0;       // arcs and spans held at their least length
 };
 
 // Rounds y = B t (B given by its rows Brow; Ginv = G^-1, updated in place with t) in two phases:
